@@ -1,0 +1,22 @@
+# All dependencies come from Debian packages (scripts/install-deps.sh).
+# Nothing is downloaded at build time.
+find_package(PkgConfig REQUIRED)
+find_package(Threads REQUIRED)
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(yaml-cpp REQUIRED)
+find_package(fmt REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(PNG REQUIRED)
+find_package(Ceres REQUIRED)
+# CMake's own FindBullet: Debian's BulletConfig.cmake is broken (relative paths).
+find_package(Bullet REQUIRED MODULE)
+pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
+# OSMesa alone: linking libGL before it makes glGetString return NULL.
+pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
+find_package(MPI COMPONENTS C)
+
+find_program(LIGGGHTS_EXECUTABLE liggghts)
+if(NOT LIGGGHTS_EXECUTABLE)
+  message(WARNING "liggghts not found: reference runs will fail until scripts/install-deps.sh installs it")
+endif()
+find_program(REPOSE_PYTHON3 NAMES python3 PATHS /usr/bin NO_DEFAULT_PATH)

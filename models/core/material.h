@@ -1,0 +1,28 @@
+#pragma once
+// Ground material parameters of the heuristic models. These are what the
+// calibration fits, so they are plain values apart from the scene.
+
+#include <string>
+
+namespace repose {
+
+struct Material {
+  std::string name = "sand";
+  // Fraction of the intersected height that is displaced to the contact
+  // border; the rest (1 - alpha) is compressed away. [0, 1]
+  double alpha = 1.0;
+  // Angle of repose: slopes steeper than this erode. (0, pi/2] rad
+  double repose_angle_rad = 0.5235987755982988;  // 30 deg
+  // Fraction of the excess height difference moved per erosion pass. (0, 1]
+  double sigma = 0.2;
+  // Erosion passes per time step (En). >= 1
+  int erosion_iterations = 5;
+
+  bool operator==(const Material&) const = default;
+};
+
+// The presets of the ground paper: sand 30 deg / 1.0, mud 60 deg / 0.8,
+// snow 90 deg / 0.0, sigma 0.2 each. Returns false for an unknown name.
+bool material_preset(const std::string& name, Material* out);
+
+}  // namespace repose

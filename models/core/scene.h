@@ -1,0 +1,105 @@
+#pragma once
+// The scene: an immutable description of what is there, in SI units, loaded
+// from YAML and validated once (scene_loader.h). Nothing here changes during
+// a simulation; each model keeps its own state.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "models/core/grid.h"
+#include "models/core/material.h"
+#include "models/core/triangle_mesh.h"
+
+namespace repose {
+
+// How the ground's initial heights are made.
+struct InitialHeight {
+  enum class Kind { kFlat, kNoise, kFile };
+  Kind kind = Kind::kFlat;
+  double height_m = 0.0;        // flat: the height; noise: the mean; file: an offset added
+  double amplitude_m = 0.0;     // noise: peak deviation from the mean
+  double correlation_m = 0.0;   // noise: smoothing length (0: white noise per cell)
+  std::string path;             // file: .npy (metres) or 16-bit .png, absolute
+  double png_height_scale_m = 1.0;  // file, png: height of the value 65535
+};
+
+// An axis-aligned rectangle of the ground covered by one material.
+struct MaterialRegion {
+  Material material;
+  double x_min_m = 0, x_max_m = 0, y_min_m = 0, y_max_m = 0;
+};
+
+struct GroundSpec {
+  Grid grid;
+  InitialHeight initial;
+  Material material;                     // everywhere no region covers
+  std::vector<MaterialRegion> regions;   // later regions win where they overlap
+};
+
+struct Keyframe {
+  double time_s = 0.0;
+  Pose pose;
+};
+
+struct ObjectSpec {
+  enum class Shape { kSphere, kBox, kCylinder, kCapsule, kMesh };
+  std::string name;
+  Shape shape = Shape::kSphere;
+  double radius_m = 0.0;                               // sphere, cylinder, capsule
+  double half_height_m = 0.0;                          // cylinder, capsule (of the straight part)
+  Eigen::Vector3d half_extents_m = Eigen::Vector3d::Zero();  // box
+  std::string mesh_path;                               // mesh: absolute path of the OBJ/STL
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();     // applied to the body before placing
+  TriangleMesh body;   // the tessellated (or loaded), scaled body in body coordinates
+  bool simple = false; // may be computed on a coarser height field (multi-resolution rule)
+  std::vector<Keyframe> keyframes;  // sorted by time, at least one
+
+  // Pose at time t: position linear, orientation slerp between keyframes;
+  // held constant before the first and after the last.
+  Pose pose_at(double time_s) const;
+};
+
+struct TimeSpec {
+  double step_s = 1.0 / 30.0;
+  double duration_s = 1.0;
+  int step_count() const;  // ceil(duration / step)
+};
+
+// A view for figures. Looks from position_m to target_m.
+struct CameraSpec {
+  Eigen::Vector3d position_m = Eigen::Vector3d(0, -1, 1);
+  Eigen::Vector3d target_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  double fov_y_rad = 0.7853981633974483;  // 45 deg
+  int width_px = 800;
+  int height_px = 600;
+};
+
+// Options of the ground model that are part of the scene (not fitted).
+struct GroundModelSpec {
+  bool sweep = true;             // sweep translating objects between frames
+  int substeps = 1;              // substeps per frame when not sweeping (>= 1)
+  double max_substep_angle_rad = 0.08726646259971647;  // rotation per substep for rotating objects (5 deg)
+  int erosion_memory_steps = 30; // steps an eroded cell keeps eroding
+  int coarse_factor = 2;         // coarsening of the grid for 'simple' or far objects (>= 1)
+  double far_distance_m = 0.0;   // objects farther than this from the camera use the coarse grid (0: never)
+  enum class Collision { kOsmesa, kCpu };
+  Collision collision = Collision::kCpu;
+};
+
+struct Scene {
+  std::string source_path;  // the file it came from (absolute), for messages and the manifest
+  std::string name;
+  std::uint64_t seed = 0;
+  GroundSpec ground;
+  std::vector<ObjectSpec> objects;
+  TimeSpec time;
+  std::optional<CameraSpec> camera;
+  GroundModelSpec ground_model;
+};
+
+}  // namespace repose
