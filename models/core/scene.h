@@ -91,6 +91,28 @@ struct GroundModelSpec {
   Collision collision = Collision::kCpu;
 };
 
+// Grains and contact law of the DEM reference runs (LIGGGHTS), for scenes
+// that are also run as a reference. Young's modulus is softened, as DEM
+// practice does, to allow a practical time step.
+struct DemSpec {
+  double grain_radius_m = 0.002;
+  double radius_spread = 0.1;          // relative half-width of a uniform radius distribution [0, 0.5)
+  double density_kg_m3 = 2500.0;
+  double youngs_modulus_pa = 5.0e6;    // softened
+  double poisson_ratio = 0.3;
+  double restitution = 0.5;            // (0, 1]
+  double friction = 0.5;               // sliding, grain-grain and grain-wall
+  double rolling_friction = 0.1;
+  enum class RollingModel { kCdt, kEpsd2 };
+  RollingModel rolling_model = RollingModel::kCdt;
+  double cohesion_energy_density_j_m3 = 0.0;  // sjkr cohesion; 0: none
+  double time_step_s = 1.0e-5;          // refused above 20 % of the Rayleigh time
+  double bed_depth_m = 0.02;            // depth of the settled bed the ground is made of
+  double settle_kinetic_energy_j = 1.0e-7;  // settling ends below this total kinetic energy
+  double gravity_m_s2 = 9.81;
+  double dump_interval_s = 0.01;
+};
+
 struct Scene {
   std::string source_path;  // the file it came from (absolute), for messages and the manifest
   std::string name;
@@ -100,6 +122,7 @@ struct Scene {
   TimeSpec time;
   std::optional<CameraSpec> camera;
   GroundModelSpec ground_model;
+  std::optional<DemSpec> dem;  // present when the scene can run as a DEM reference
 };
 
 }  // namespace repose
