@@ -9,7 +9,7 @@ packages=(
   libosmesa6-dev libembree-dev
   liggghts libliggghts-dev liggghts-doc mpi-default-dev openmpi-bin
   libyaml-cpp-dev libcli11-dev libfmt-dev libpng-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   python3-matplotlib python3-numpy
 )
 
