@@ -36,7 +36,8 @@ struct DepthImage {
   double z(int i, int j) const { return z_m(j, i); }
 };
 
-// Vertical z range that a depth image resolves; surfaces outside it are clipped.
+// Vertical z range that an OpenGL depth image resolves; the OSMesa path clips
+// surfaces outside it (the CPU path has no range and clips nothing).
 struct DepthRange {
   double z_min_m = -1.0;
   double z_max_m = 1.0;

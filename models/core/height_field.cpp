@@ -36,6 +36,16 @@ double HeightField::sample(double x_m, double y_m) const {
   return (1 - ty) * lower + ty * upper;
 }
 
+double HeightField::min_height_m() const {
+  REPOSE_DEMAND(h_.size() > 0);
+  return h_.minCoeff();
+}
+
+double HeightField::max_height_m() const {
+  REPOSE_DEMAND(h_.size() > 0);
+  return h_.maxCoeff();
+}
+
 double HeightField::volume_m3() const { return h_.sum() * grid_.cell_area_m2(); }
 
 namespace {

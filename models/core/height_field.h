@@ -30,8 +30,8 @@ class HeightField {
   double sample(double x_m, double y_m) const;
   // Total material volume (m^3).
   double volume_m3() const;
-  double min_height_m() const { return h_.minCoeff(); }
-  double max_height_m() const { return h_.maxCoeff(); }
+  double min_height_m() const;  // of a non-empty field
+  double max_height_m() const;
   bool all_finite() const { return h_.allFinite(); }
 
  private:

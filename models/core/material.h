@@ -6,6 +6,9 @@
 
 namespace repose {
 
+// Largest stable erosion sigma; the analysis is in models/ground/ground_params.h.
+inline constexpr double kSigmaMax = 0.25;
+
 struct Material {
   std::string name = "sand";
   // Fraction of the intersected height that is displaced to the contact
@@ -13,7 +16,8 @@ struct Material {
   double alpha = 1.0;
   // Angle of repose: slopes steeper than this erode. (0, pi/2] rad
   double repose_angle_rad = 0.5235987755982988;  // 30 deg
-  // Fraction of the excess height difference moved per erosion pass. (0, 1]
+  // Fraction of the excess height difference moved per erosion pass.
+  // (0, kSigmaMax]: above it erosion diverges (models/ground/ground_params.h).
   double sigma = 0.2;
   // Erosion passes per time step (En). >= 1
   int erosion_iterations = 5;

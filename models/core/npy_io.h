@@ -12,7 +12,9 @@ namespace repose {
 
 enum class NpyType { kFloat32, kFloat64 };
 
-// A 2-D array read from a .npy file, as doubles, ny rows x nx columns.
+// A 2-D array read from a .npy file, as doubles, ny rows x nx columns. A 1-D
+// array of n reads as 1 x n; integer types <i2 <u2 <i4 |u1 convert exactly;
+// bytes after the data are an error.
 // Throws InputError naming the file and what is wrong.
 ArrayXXdR read_npy_2d(const std::string& path);
 // Writes a 2-D array (rows x cols, C order).

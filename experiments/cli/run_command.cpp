@@ -1,0 +1,75 @@
+// repose run SCENE.yaml --out DIR [--force] [--solver NAME]: build the
+// initial state, run a solver, and write the run folder atomically.
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "experiments/cli/commands.h"
+#include "experiments/cli/manifest.h"
+#include "experiments/cli/progress_printer.h"
+#include "experiments/cli/render_height.h"
+#include "experiments/cli/solvers.h"
+#include "models/core/initial_height.h"
+#include "models/core/npy_io.h"
+#include "models/core/output_directory.h"
+#include "models/core/scene_loader.h"
+
+namespace repose::cli {
+namespace {
+
+struct RunOptions {
+  std::string scene_path;
+  std::string out_dir;
+  bool force = false;
+  std::string solver;
+};
+
+void run(const RunOptions& options, int argc, char** argv) {
+  Manifest manifest(argc, argv);
+  manifest.set_solver(options.solver);
+  // The scene is loaded before anything is written: a bad scene writes nothing.
+  Scene scene;
+  manifest.time_stage("load_scene", [&] { scene = load_scene(options.scene_path); });
+  OutputDirectory out = OutputDirectory::open(options.out_dir, options.force);
+  manifest.set_scene(scene);
+
+  HeightField initial;
+  manifest.time_stage("initial_height", [&] { initial = make_initial_height(scene); });
+  manifest.time_stage("write_height_initial_npy", [&] { write_npy_2d(out.path("height_initial.npy"), initial.heights()); });
+  manifest.add_file("height_initial.npy");
+  manifest.time_stage("render_height_initial_png", [&] {
+    render_height_png(out.path("height_initial.png"), initial, &scene, 0.0, CameraOverrides{});
+  });
+  manifest.add_file("height_initial.png");
+
+  ProgressPrinter progress;
+  RunContext context{scene, initial, out, manifest, progress.callback()};
+  manifest.time_stage("solver_" + options.solver, [&] { find_solver(options.solver).run(context); });
+
+  manifest.add_file("manifest.json");
+  manifest.write(out.path("manifest.json"));
+  out.commit();
+  std::printf("wrote %s\n", out.target().string().c_str());
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, int argc, char** argv) {
+  CLI::App* command = app.add_subcommand("run", "Run a scene and write a run folder (manifest.json, data, images)");
+  auto options = std::make_shared<RunOptions>();
+  options->solver = solvers().front().name;
+  command->add_option("scene", options->scene_path, "Scene file (YAML)")->required();
+  command->add_option("--out,-o", options->out_dir, "Run folder to write (refused if not empty, unless --force)")
+      ->required();
+  command->add_flag("--force", options->force, "Replace a non-empty run folder (only once the new run succeeded)");
+  std::string solver_help = "Solver:";
+  for (const auto& solver : solvers()) solver_help += fmt::format(" {} ({});", solver.name, solver.description);
+  command->add_option("--solver", options->solver, solver_help)
+      ->check(CLI::IsMember(solver_names()))
+      ->capture_default_str();
+  command->callback([options, argc, argv] { run(*options, argc, argv); });
+}
+
+}  // namespace repose::cli

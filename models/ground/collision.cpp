@@ -1,0 +1,66 @@
+#include "models/ground/collision.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace repose {
+
+Grid Footprint::sub_grid(const Grid& grid) const {
+  Grid g = grid;
+  g.nx = ni;
+  g.ny = nj;
+  g.origin_x_m = grid.origin_x_m + i0 * grid.cell_size_m;
+  g.origin_y_m = grid.origin_y_m + j0 * grid.cell_size_m;
+  return g;
+}
+
+Footprint footprint_of(const Aabb& box, const Grid& grid) {
+  if (box.empty()) return {};
+  const double h = grid.cell_size_m;
+  // cell centres inside [min, max]; clamped to the grid
+  const double fi0 = std::ceil((box.min.x() - grid.origin_x_m) / h - 0.5);
+  const double fi1 = std::floor((box.max.x() - grid.origin_x_m) / h - 0.5);
+  const double fj0 = std::ceil((box.min.y() - grid.origin_y_m) / h - 0.5);
+  const double fj1 = std::floor((box.max.y() - grid.origin_y_m) / h - 0.5);
+  const int i0 = static_cast<int>(std::clamp(fi0, 0.0, static_cast<double>(grid.nx)));
+  const int i1 = static_cast<int>(std::clamp(fi1, -1.0, static_cast<double>(grid.nx - 1)));
+  const int j0 = static_cast<int>(std::clamp(fj0, 0.0, static_cast<double>(grid.ny)));
+  const int j1 = static_cast<int>(std::clamp(fj1, -1.0, static_cast<double>(grid.ny - 1)));
+  if (i1 < i0 || j1 < j0) return {};
+  return Footprint{i0, j0, i1 - i0 + 1, j1 - j0 + 1};
+}
+
+namespace {
+
+class CpuUndersideRenderer : public UndersideRenderer {
+ public:
+  std::string name() const override { return "cpu"; }
+  DepthImage render_below(const TriangleMesh& mesh, const Grid& sub, double, double) override {
+    return depth_image_cpu({mesh}, sub, ViewFrom::kBelow);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<UndersideRenderer> make_cpu_underside_renderer() { return std::make_unique<CpuUndersideRenderer>(); }
+
+Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, UndersideRenderer& renderer) {
+  const Aabb box = bounding_box(mesh);
+  const Footprint fp = footprint_of(box, ground.grid());
+  if (fp.empty()) return {};
+  // bounding boxes first: the object is above the ground under its footprint
+  const double top = ground.heights().block(fp.j0, fp.i0, fp.nj, fp.ni).maxCoeff();
+  if (box.min.z() >= top) return {};
+  const DepthImage img = renderer.render_below(mesh, fp.sub_grid(ground.grid()), box.min.z(), box.max.z());
+  Underside u;
+  u.footprint = fp;
+  u.z_m = ArrayXXdR::Constant(fp.nj, fp.ni, std::numeric_limits<double>::infinity());
+  for (int j = 0; j < fp.nj; ++j) {
+    for (int i = 0; i < fp.ni; ++i) {
+      if (img.is_covered(i, j)) u.z_m(j, i) = img.z(i, j);
+    }
+  }
+  return u;
+}
+
+}  // namespace repose

@@ -1,0 +1,106 @@
+#include "models/ground/erosion.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "models/ground/ground_model.h"
+#include "models/ground/ground_params.h"
+#include "models/ground/ground_state.h"
+
+namespace repose {
+
+namespace {
+
+constexpr std::array<std::array<int, 2>, 4> kNeighbours = {{{1, 0}, {-1, 0}, {0, 1}, {0, -1}}};
+
+struct Flux {
+  std::int64_t from, to;
+  double amount;
+};
+
+// Per material: the height difference a pair may have, sigma and En.
+struct PairRule {
+  double max_dh_m;
+  double sigma;
+  int passes;
+};
+
+}  // namespace
+
+ErosionResult erode(const GroundModel& model, const GroundParams& params, const Ceiling& ceiling,
+                    GroundState* state) {
+  ErosionResult result;
+  const Grid& g = model.grid;
+  std::vector<PairRule> rules;
+  int passes = 0;
+  for (const Material& m : params.materials) {
+    const double tan_theta = std::tan(m.repose_angle_rad);
+    rules.push_back({g.cell_size_m * tan_theta, m.sigma, m.erosion_iterations});
+    passes = std::max(passes, m.erosion_iterations);
+  }
+  const double tolerance_m = kErosionToleranceFraction * g.cell_size_m;
+  HeightField& hf = state->height;
+  double* h = hf.heights().data();
+  ErosionMemory& memory = state->erosion;
+
+  std::vector<Flux> fluxes;
+  std::unordered_map<std::int64_t, double> capped_inflow;
+  for (int p = 0; p < passes && !memory.empty(); ++p) {
+    fluxes.clear();
+    const std::vector<std::int64_t>& cells = memory.cells();
+    for (const std::int64_t c : cells) {
+      const int i = static_cast<int>(c % g.nx), j = static_cast<int>(c / g.nx);
+      for (const auto& o : kNeighbours) {
+        const int ni = i + o[0], nj = j + o[1];
+        if (!g.contains(ni, nj)) continue;  // closed boundary
+        const std::int64_t n = model.cell(ni, nj);
+        if (n < c && memory.contains(n)) continue;  // each pair once
+        ++result.pair_visits;
+        const bool c_higher = h[c] > h[n];
+        const std::int64_t hi = c_higher ? c : n, lo = c_higher ? n : c;
+        const PairRule& rule = rules[model.material_at(hi)];
+        if (p >= rule.passes) continue;
+        const double excess = (h[hi] - h[lo]) - rule.max_dh_m;
+        if (!(excess > tolerance_m)) continue;
+        fluxes.push_back({hi, lo, rule.sigma * excess});
+      }
+    }
+    if (fluxes.empty()) break;
+    result.passes = p + 1;
+
+    // never above an object: scale the inflow of capped cells to their room
+    capped_inflow.clear();
+    for (const Flux& f : fluxes) {
+      const int i = static_cast<int>(f.to % g.nx), j = static_cast<int>(f.to / g.nx);
+      if (std::isfinite(ceiling.at(i, j))) capped_inflow[f.to] += f.amount;
+    }
+    for (auto& [cell, inflow] : capped_inflow) {
+      const int i = static_cast<int>(cell % g.nx), j = static_cast<int>(cell / g.nx);
+      const double room = std::max(0.0, ceiling.at(i, j) - h[cell]);
+      inflow = inflow > room ? room / inflow : 1.0;  // now the scale factor
+    }
+    for (Flux& f : fluxes) {
+      const auto it = capped_inflow.find(f.to);
+      if (it != capped_inflow.end()) f.amount *= it->second;
+    }
+
+    for (const Flux& f : fluxes) {
+      if (!(f.amount > 0.0)) continue;
+      h[f.from] -= f.amount;
+      h[f.to] += f.amount;
+      ++result.moves;
+    }
+    for (const Flux& f : fluxes) {
+      if (!(f.amount > 0.0)) continue;
+      memory.touch(f.from);
+      memory.touch(f.to);
+    }
+  }
+  return result;
+}
+
+}  // namespace repose

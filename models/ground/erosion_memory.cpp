@@ -1,0 +1,27 @@
+#include "models/ground/erosion_memory.h"
+
+#include "models/core/error.h"
+
+namespace repose {
+
+ErosionMemory::ErosionMemory(std::size_t cell_count, int memory_steps)
+    : remaining_(cell_count, 0), start_(static_cast<std::uint16_t>(memory_steps + 1)) {
+  REPOSE_DEMAND(memory_steps >= 0 && memory_steps <= 65000);
+}
+
+void ErosionMemory::touch(std::int64_t cell) {
+  std::uint16_t& r = remaining_[static_cast<std::size_t>(cell)];
+  if (r == 0) cells_.push_back(cell);
+  r = start_;
+}
+
+void ErosionMemory::end_step() {
+  std::size_t kept = 0;
+  for (const std::int64_t c : cells_) {
+    std::uint16_t& r = remaining_[static_cast<std::size_t>(c)];
+    if (--r > 0) cells_[kept++] = c;
+  }
+  cells_.resize(kept);
+}
+
+}  // namespace repose

@@ -1,0 +1,41 @@
+#pragma once
+// The ground model's fixed description, built once from a Scene (as MuJoCo
+// compiles mjModel): the grid, which material lies on each cell, the objects
+// and how they move, and the model options. Nothing here changes while the
+// model runs; the changing part is GroundState, the fitted part GroundParams.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "models/core/grid.h"
+#include "models/core/material.h"
+#include "models/core/scene.h"
+
+namespace repose {
+
+struct GroundModel {
+  Grid grid;
+  // materials[0] is the ground's material, materials[r + 1] region r's.
+  std::vector<Material> materials;
+  // ny * nx, row-major: index into materials for each cell (later regions win).
+  std::vector<std::uint8_t> material_index;
+  std::vector<ObjectSpec> objects;
+  GroundModelSpec options;
+  TimeSpec time;
+  std::optional<CameraSpec> camera;
+
+  std::int64_t cell(int i, int j) const { return static_cast<std::int64_t>(j) * grid.nx + i; }
+  int material_at(std::int64_t cell_index) const { return material_index[static_cast<std::size_t>(cell_index)]; }
+};
+
+// Throws InputError for options the model cannot run (more than 254
+// regions, substeps < 1, coarse_factor < 1, erosion_memory_steps outside
+// [0, 65000], max_substep_angle_rad <= 0).
+GroundModel build_ground_model(const Scene& scene);
+
+// A model of a grid alone (no objects), all cells of one material: for
+// tests and the coarse patches of the multi-resolution stage.
+GroundModel make_plain_ground_model(const Grid& grid, const Material& material, const GroundModelSpec& options = {});
+
+}  // namespace repose

@@ -1,0 +1,156 @@
+#include "models/ground/ground_step.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "models/ground/coarse_contact.h"
+#include "models/ground/displacement.h"
+#include "models/ground/ground_model.h"
+#include "models/ground/ground_params.h"
+#include "models/ground/ground_state.h"
+#include "models/ground/swept_mesh.h"
+
+namespace repose {
+
+namespace {
+
+// Substeps this step needs: by angle for rotating objects, `substeps` without sweeping.
+int substep_count(const GroundModel& model, const std::vector<Pose>& from, const std::vector<Pose>& to) {
+  int n = model.options.sweep ? 1 : model.options.substeps;
+  for (std::size_t o = 0; o < from.size(); ++o) {
+    const double angle = from[o].orientation.angularDistance(to[o].orientation);
+    n = std::max(n, static_cast<int>(std::ceil(angle / model.options.max_substep_angle_rad - 1e-9)));
+  }
+  return n;
+}
+
+// Translation below this (per substep) is not swept: the body alone is the same.
+bool moved(const Pose& a, const Pose& b, double cell_size_m) {
+  return (b.position_m - a.position_m).norm() > 1e-6 * cell_size_m;
+}
+
+// Objects whose footprints touch or overlap share one contact region (as
+// they share one Z-buffer in the paper), so one object's displaced material
+// is never pushed under another: clusters of touching footprints.
+std::vector<std::vector<std::size_t>> touching_clusters(const std::vector<Underside>& undersides) {
+  const std::size_t n = undersides.size();
+  std::vector<std::size_t> parent(n);
+  for (std::size_t k = 0; k < n; ++k) parent[k] = k;
+  auto root = [&](std::size_t k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  auto touch = [](const Footprint& a, const Footprint& b) {
+    return a.i0 <= b.i0 + b.ni && b.i0 <= a.i0 + a.ni && a.j0 <= b.j0 + b.nj && b.j0 <= a.j0 + a.nj;
+  };
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      if (!undersides[a].empty() && !undersides[b].empty() && touch(undersides[a].footprint, undersides[b].footprint)) {
+        parent[root(b)] = root(a);
+      }
+    }
+  }
+  std::vector<std::vector<std::size_t>> clusters(n);
+  for (std::size_t k = 0; k < n; ++k) clusters[root(k)].push_back(k);
+  std::erase_if(clusters, [](const auto& c) { return c.empty(); });
+  return clusters;
+}
+
+// The lowest underside of several objects over the box around their footprints.
+Underside merged_underside(const std::vector<Underside>& undersides, const std::vector<std::size_t>& members) {
+  Footprint box = undersides[members[0]].footprint;
+  for (const std::size_t m : members) {
+    const Footprint& f = undersides[m].footprint;
+    const int i1 = std::max(box.i0 + box.ni, f.i0 + f.ni), j1 = std::max(box.j0 + box.nj, f.j0 + f.nj);
+    box.i0 = std::min(box.i0, f.i0);
+    box.j0 = std::min(box.j0, f.j0);
+    box.ni = i1 - box.i0;
+    box.nj = j1 - box.j0;
+  }
+  Underside u;
+  u.footprint = box;
+  u.z_m.resize(box.nj, box.ni);
+  for (int j = 0; j < box.nj; ++j) {
+    for (int i = 0; i < box.ni; ++i) {
+      double z = std::numeric_limits<double>::infinity();
+      for (const std::size_t m : members) z = std::min(z, undersides[m].at(box.i0 + i, box.j0 + j));
+      u.z_m(j, i) = z;
+    }
+  }
+  return u;
+}
+
+}  // namespace
+
+bool uses_coarse_grid(const GroundModel& model, int object, const Pose& pose) {
+  if (model.options.coarse_factor <= 1) return false;
+  if (model.objects[static_cast<std::size_t>(object)].simple) return true;
+  return model.options.far_distance_m > 0.0 && model.camera &&
+         (pose.position_m - model.camera->position_m).norm() > model.options.far_distance_m;
+}
+
+StepReport step(const GroundModel& model, const GroundParams& params, UndersideRenderer& renderer,
+                GroundState* state) {
+  StepReport report;
+  const double dt = model.time.step_s;
+  const double t0 = state->step_index * dt;  // not accumulated: no drift over many steps
+  const std::size_t n_objects = model.objects.size();
+  std::vector<Pose> end_poses(n_objects);
+  for (std::size_t o = 0; o < n_objects; ++o) end_poses[o] = model.objects[o].pose_at(t0 + dt);
+  const int substeps = substep_count(model, state->previous_poses, end_poses);
+  report.substeps = substeps;
+
+  std::vector<Pose> poses = state->previous_poses;
+  for (int s = 1; s <= substeps; ++s) {
+    const double t = t0 + dt * s / substeps;
+    Ceiling ceiling;
+    std::vector<TriangleMesh> meshes(n_objects);
+    std::vector<Eigen::Vector3d> motion(n_objects);
+    std::vector<char> coarse(n_objects);
+    for (std::size_t o = 0; o < n_objects; ++o) {
+      const ObjectSpec& object = model.objects[o];
+      const Pose to = s == substeps ? end_poses[o] : object.pose_at(t);
+      motion[o] = to.position_m - poses[o].position_m;
+      if (model.options.sweep && moved(poses[o], to, model.grid.cell_size_m)) {
+        meshes[o] = swept_mesh(object.body, poses[o], to);
+        ++report.swept_objects;
+      } else {
+        meshes[o] = transformed(object.body, to);
+      }
+      coarse[o] = uses_coarse_grid(model, static_cast<int>(o), to);
+      if (!coarse[o]) ceiling.undersides.push_back(find_underside(meshes[o], state->height, renderer));
+      poses[o] = to;
+    }
+    std::vector<Eigen::Vector3d> fine_motion;
+    for (std::size_t o = 0; o < n_objects; ++o) {
+      if (coarse[o]) {
+        report.contact_cells += deform_coarse(model, params, meshes[o], motion[o], renderer, state).contact_cells;
+        ++report.coarse_objects;
+      } else {
+        fine_motion.push_back(motion[o]);
+      }
+    }
+    // a cluster of touching objects is displaced as one region, moving with their mean motion
+    for (const std::vector<std::size_t>& cluster : touching_clusters(ceiling.undersides)) {
+      Eigen::Vector3d mean_motion = Eigen::Vector3d::Zero();
+      for (const std::size_t m : cluster) mean_motion += fine_motion[m] / static_cast<double>(cluster.size());
+      const Underside merged =
+          cluster.size() == 1 ? Underside{} : merged_underside(ceiling.undersides, cluster);
+      const Underside& u = cluster.size() == 1 ? ceiling.undersides[cluster[0]] : merged;
+      report.contact_cells += displace(model, params, u, ceiling, mean_motion, state).contact_cells;
+    }
+    const ErosionResult e = erode(model, params, ceiling, state);
+    report.erosion.passes += e.passes;
+    report.erosion.pair_visits += e.pair_visits;
+    report.erosion.moves += e.moves;
+  }
+  state->erosion.end_step();
+  state->previous_poses = end_poses;
+  ++state->step_index;
+  state->time_s = state->step_index * dt;
+  return report;
+}
+
+}  // namespace repose

@@ -1,0 +1,44 @@
+#pragma once
+// The ground model's driver: builds the model from a scene, runs every time
+// step and returns what the run produced (no file output; the command line
+// writes DIR/height_final.npy and the manifest from this).
+
+#include <string>
+#include <vector>
+
+#include "models/core/height_field.h"
+#include "models/core/progress.h"
+#include "models/core/scene.h"
+#include "models/ground/ground_params.h"
+#include "models/ground/volume_ledger.h"
+
+namespace repose {
+
+struct GroundModel;
+
+struct GroundRun {
+  HeightField initial_height;
+  HeightField final_height;
+  std::vector<double> step_wall_s;  // wall time of each step
+  VolumeLedger ledger;
+  double final_volume_m3 = 0.0;
+  // The stages the scene built, e.g. "collision:cpu", "sweep", "substeps:10",
+  // "rotation-substeps", "erosion", "multires".
+  std::vector<std::string> stages;
+  int steps = 0;
+  long long contact_cells = 0;  // summed over steps
+};
+
+// The scene's initial ground (make_initial_height), then every step.
+// Throws InputError when params are invalid for the scene.
+GroundRun simulate_ground(const Scene& scene, const GroundParams& params, const ProgressFn& progress = {});
+
+// Same from an already built model and initial heights (for calibration:
+// build once, run many parameter sets).
+GroundRun simulate_ground(const GroundModel& model, const GroundParams& params, const HeightField& initial,
+                          const ProgressFn& progress = {});
+
+// The stages a model builds with these params.
+std::vector<std::string> ground_stages(const GroundModel& model, const GroundParams& params);
+
+}  // namespace repose

@@ -1,0 +1,320 @@
+// The `repose` program, run as a subprocess: exit codes, one-line errors,
+// nothing written on bad input, run folders and their manifests.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "models/core/initial_height.h"
+#include "models/core/npy_io.h"
+#include "models/core/png_io.h"
+#include "models/core/scene_loader.h"
+#include "models/core/sha256.h"
+
+namespace repose {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kPython = "/usr/bin/python3";
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "repose_cli_XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+    path = pattern;
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+std::string read_all(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs REPOSE_BINARY with `args` in folder `cwd`; stdout and stderr are
+// captured in files outside cwd, so cwd shows exactly what the program wrote.
+Result run_repose(const std::vector<std::string>& args, const fs::path& cwd) {
+  TempDir capture;
+  const std::string out_path = (capture.path / "out").string();
+  const std::string err_path = (capture.path / "err").string();
+  const pid_t child = ::fork();
+  if (child < 0) throw std::runtime_error("fork failed");
+  if (child == 0) {
+    const int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0 || ::chdir(cwd.c_str()) != 0) ::_exit(126);
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(REPOSE_BINARY));
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(REPOSE_BINARY, argv.data());
+    ::_exit(127);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  Result result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.out = read_all(out_path);
+  result.err = read_all(err_path);
+  return result;
+}
+
+bool is_one_line(const std::string& text) {
+  return !text.empty() && text.back() == '\n' && std::count(text.begin(), text.end(), '\n') == 1;
+}
+
+std::vector<fs::path> files_in(const fs::path& dir) {
+  std::vector<fs::path> files;
+  if (!fs::is_directory(dir)) return files;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.is_regular_file()) files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The scene files of a folder (other files there are meshes and height maps they use).
+std::vector<fs::path> scene_files_in(const fs::path& dir) {
+  std::vector<fs::path> scenes;
+  for (const auto& path : files_in(dir)) {
+    if (path.extension() == ".yaml" || path.extension() == ".yml") scenes.push_back(path);
+  }
+  return scenes;
+}
+
+// A small scene with seeded noise, so that determinism means something.
+const char* const kNoiseScene = R"(name: cli_test
+seed: 7
+time: {step_s: 0.01, duration_s: 0.1}
+ground:
+  extent_m: [0.5, 0.4]
+  cell_size_m: 0.01
+  initial_height: {kind: noise, mean_m: 0.05, amplitude_m: 0.01, correlation_m: 0.02}
+  material: sand
+objects:
+  - name: ball
+    shape: sphere
+    radius_m: 0.05
+    motion:
+      - {time_s: 0, position_m: [0, 0, 0.2], orientation_deg: [0, 0, 0]}
+)";
+
+fs::path write_scene(const fs::path& dir) {
+  const fs::path path = dir / "scene.yaml";
+  std::ofstream(path) << kNoiseScene;
+  return path;
+}
+
+TEST(Cli, VersionAndHelpExitZero) {
+  TempDir cwd;
+  const Result version = run_repose({"--version"}, cwd.path);
+  EXPECT_EQ(version.exit_code, 0) << version.err;
+  EXPECT_NE(version.out.find("repose "), std::string::npos) << version.out;
+  EXPECT_NE(version.out.find("git commit"), std::string::npos) << version.out;
+  EXPECT_NE(version.out.find("Eigen"), std::string::npos) << version.out;
+  const Result help = run_repose({"--help"}, cwd.path);
+  EXPECT_EQ(help.exit_code, 0) << help.err;
+  for (const char* command : {"check", "render", "run"}) {
+    EXPECT_NE(help.out.find(command), std::string::npos) << help.out;
+  }
+  EXPECT_TRUE(fs::is_empty(cwd.path));
+}
+
+TEST(Cli, CommandLineErrorsExitTwoWithOneLine) {
+  TempDir cwd;
+  const fs::path scene = write_scene(cwd.path);
+  const std::vector<std::vector<std::string>> bad = {
+      {"--no-such-option"},
+      {},                                          // no subcommand
+      {"frobnicate"},                              // unknown subcommand
+      {"check"},                                   // missing scene
+      {"run", scene.string()},                     // missing --out
+      {"run", scene.string(), "--out", "x", "--solver", "no-such-solver"},
+      {"run", scene.string(), "--out", "x", "--bogus"},
+      {"render", scene.string(), "-o", "x.png", "--size", "12by3"},
+      {"render", scene.string(), "-o", "x.png", "--camera-position", "1,2"},
+  };
+  for (const auto& args : bad) {
+    const Result r = run_repose(args, cwd.path);
+    std::string joined;
+    for (const auto& a : args) joined += a + " ";
+    EXPECT_EQ(r.exit_code, 2) << joined << r.err;
+    EXPECT_TRUE(is_one_line(r.err)) << joined << "stderr: [" << r.err << "]";
+    EXPECT_EQ(files_in(cwd.path), std::vector<fs::path>{scene}) << joined;  // wrote nothing
+    EXPECT_FALSE(fs::exists(cwd.path / "x")) << joined;
+  }
+}
+
+// Each malformed scene says what it should fail with: `# expect: FRAGMENT` on its first line.
+TEST(Cli, CheckRejectsEveryBadSceneWithOneLocatedLineAndWritesNothing) {
+  const fs::path bad_dir = fs::path(REPOSE_SOURCE_DIR) / "tests/data/scenes/bad";
+  const std::vector<fs::path> scenes = scene_files_in(bad_dir);
+  ASSERT_FALSE(scenes.empty()) << "no malformed scenes in " << bad_dir;
+  const std::regex expect_line("^#\\s*expect:\\s*(.*\\S)\\s*$");
+  for (const fs::path& scene : scenes) {
+    std::ifstream in(scene);
+    std::string first_line;
+    std::getline(in, first_line);
+    std::smatch match;
+    ASSERT_TRUE(std::regex_match(first_line, match, expect_line)) << scene << ": first line is not '# expect: ...'";
+    const std::string fragment = match[1];
+
+    TempDir cwd;
+    const Result r = run_repose({"check", scene.string()}, cwd.path);
+    EXPECT_EQ(r.exit_code, 2) << scene << "\n" << r.err;
+    EXPECT_TRUE(is_one_line(r.err)) << scene << "\nstderr: [" << r.err << "]";
+    // FILE:LINE:COL: ...
+    const std::string prefix = scene.string() + ":";
+    ASSERT_EQ(r.err.compare(0, prefix.size(), prefix), 0) << scene << "\nstderr: " << r.err;
+    EXPECT_TRUE(std::regex_search(r.err.substr(prefix.size()), std::regex("^[0-9]+:[0-9]+: ")))
+        << scene << "\nstderr: " << r.err;
+    EXPECT_NE(r.err.find(fragment), std::string::npos) << scene << "\nexpected: " << fragment << "\nstderr: " << r.err;
+    EXPECT_TRUE(fs::is_empty(cwd.path)) << scene;
+  }
+}
+
+TEST(Cli, CheckAcceptsEveryGoodScene) {
+  const fs::path good_dir = fs::path(REPOSE_SOURCE_DIR) / "tests/data/scenes/good";
+  const std::vector<fs::path> scenes = scene_files_in(good_dir);
+  ASSERT_FALSE(scenes.empty()) << "no scenes in " << good_dir;
+  for (const fs::path& scene : scenes) {
+    TempDir cwd;
+    const Result r = run_repose({"check", scene.string()}, cwd.path);
+    EXPECT_EQ(r.exit_code, 0) << scene << "\n" << r.err;
+    EXPECT_FALSE(r.out.empty()) << scene;
+    EXPECT_TRUE(fs::is_empty(cwd.path)) << scene;
+  }
+}
+
+// The run folder holds a manifest that Python's json module reads, with the
+// scene file's hash and seed, and the initial heights exactly as the library makes them.
+TEST(Cli, RunWritesManifestAndInitialHeights) {
+  TempDir cwd;
+  const fs::path scene_path = write_scene(cwd.path);
+  const Result r = run_repose({"run", scene_path.string(), "--out", "out"}, cwd.path);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const fs::path out = cwd.path / "out";
+  ASSERT_TRUE(fs::exists(out / "manifest.json"));
+  ASSERT_TRUE(fs::exists(out / "height_initial.npy"));
+  EXPECT_TRUE(fs::exists(out / "height_initial.png"));
+
+  const Scene scene = load_scene(scene_path.string());
+  const ArrayXXdR written = read_npy_2d((out / "height_initial.npy").string());
+  const HeightField expected = make_initial_height(scene);
+  ASSERT_EQ(written.rows(), expected.ny());
+  ASSERT_EQ(written.cols(), expected.nx());
+  EXPECT_TRUE((written == expected.heights()).all());
+
+  if (!fs::exists(kPython)) GTEST_SKIP() << "no " << kPython << " to parse the manifest";
+  const fs::path fields = cwd.path / "fields.txt";
+  const std::string script =
+      "import json,sys; m=json.load(open(sys.argv[1], encoding='utf-8')); "
+      "stages=[s['name'] for s in m['stages']]; "
+      "assert all(s['wall_s'] >= 0 for s in m['stages']); "
+      "assert m['start_time_utc'].endswith('Z'); "
+      "assert 'height_initial.npy' in m['files']; "
+      "assert len(m['build']['git_commit']) > 0 and 'Eigen' in m['build']['libraries']; "
+      "assert 'seed: 7' in m['scene']['resolved_yaml']; "
+      "open(sys.argv[2], 'w').write('\\n'.join([m['scene']['sha256'], str(m['scene']['seed']), "
+      "m['command_line'][1], ','.join(stages)]))";
+  const std::string command = std::string(kPython) + " -c \"" + script + "\" " + (out / "manifest.json").string() +
+                              " " + fields.string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_all(out / "manifest.json");
+  std::ifstream lines(fields);
+  std::string sha, seed, subcommand, stages;
+  std::getline(lines, sha);
+  std::getline(lines, seed);
+  std::getline(lines, subcommand);
+  std::getline(lines, stages);
+  EXPECT_EQ(sha, sha256_hex_of_file(scene_path.string()));
+  EXPECT_EQ(seed, "7");
+  EXPECT_EQ(subcommand, "run");
+  EXPECT_NE(stages.find("load_scene"), std::string::npos) << stages;
+  EXPECT_NE(stages.find("initial_height"), std::string::npos) << stages;
+}
+
+TEST(Cli, RunRefusesNonEmptyFolderUnlessForced) {
+  TempDir cwd;
+  const fs::path scene = write_scene(cwd.path);
+  fs::create_directory(cwd.path / "out");
+  std::ofstream(cwd.path / "out" / "old.txt") << "old";
+
+  const Result refused = run_repose({"run", scene.string(), "--out", "out"}, cwd.path);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_TRUE(is_one_line(refused.err)) << refused.err;
+  EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
+  EXPECT_EQ(files_in(cwd.path / "out"), std::vector<fs::path>{cwd.path / "out" / "old.txt"});
+  EXPECT_EQ(read_all(cwd.path / "out" / "old.txt"), "old");
+
+  const Result forced = run_repose({"run", scene.string(), "--out", "out", "--force"}, cwd.path);
+  EXPECT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_FALSE(fs::exists(cwd.path / "out" / "old.txt"));
+  EXPECT_TRUE(fs::exists(cwd.path / "out" / "manifest.json"));
+  // nothing left beside the run folder (temporaries, the old folder)
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(cwd.path)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"out", "scene.yaml"}));
+}
+
+TEST(Cli, RunWithBadSceneWritesNothing) {
+  TempDir cwd;
+  std::ofstream(cwd.path / "bad.yaml") << "name: x\nno_such_key: 1\n";
+  const Result r = run_repose({"run", "bad.yaml", "--out", "out"}, cwd.path);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(is_one_line(r.err)) << r.err;
+  EXPECT_EQ(files_in(cwd.path), std::vector<fs::path>{cwd.path / "bad.yaml"});
+  EXPECT_EQ(std::distance(fs::directory_iterator(cwd.path), fs::directory_iterator()), 1);
+}
+
+TEST(Cli, RunTwiceGivesBitIdenticalInitialHeights) {
+  TempDir cwd;
+  const fs::path scene = write_scene(cwd.path);
+  ASSERT_EQ(run_repose({"run", scene.string(), "--out", "a"}, cwd.path).exit_code, 0);
+  ASSERT_EQ(run_repose({"run", scene.string(), "--out", "b"}, cwd.path).exit_code, 0);
+  const std::string a = read_all(cwd.path / "a" / "height_initial.npy");
+  EXPECT_FALSE(a.empty());
+  EXPECT_EQ(a, read_all(cwd.path / "b" / "height_initial.npy"));
+}
+
+TEST(Cli, RenderWritesAPngOfTheAskedSize) {
+  TempDir cwd;
+  const fs::path scene = write_scene(cwd.path);
+  const Result from_scene = run_repose({"render", scene.string(), "-o", "scene.png", "--size", "64x48"}, cwd.path);
+  ASSERT_EQ(from_scene.exit_code, 0) << from_scene.err;
+  const RgbImage image = read_png_rgb((cwd.path / "scene.png").string());
+  EXPECT_EQ(image.width, 64);
+  EXPECT_EQ(image.height, 48);
+
+  ArrayXXdR field(20, 30);
+  for (int j = 0; j < 20; ++j) {
+    for (int i = 0; i < 30; ++i) field(j, i) = 0.01 * i + 0.02 * j;
+  }
+  write_npy_2d((cwd.path / "field.npy").string(), field);
+  const Result from_npy = run_repose(
+      {"render", "field.npy", "-o", "field.png", "--size", "40x30", "--camera-position", "0,-2,2", "--fov-deg", "50"},
+      cwd.path);
+  ASSERT_EQ(from_npy.exit_code, 0) << from_npy.err;
+  EXPECT_EQ(read_png_rgb((cwd.path / "field.png").string()).width, 40);
+}
+
+}  // namespace
+}  // namespace repose

@@ -1,0 +1,155 @@
+// Safe outputs end to end: a real `repose run` killed (SIGKILL, no chance to
+// clean up) while it is writing its run folder must leave no target folder
+// (or, when replacing with --force, the old result untouched); a later run
+// must succeed, write a complete folder, and remove the killed run's
+// leftovers instead of trusting them.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <fcntl.h>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "models/core/npy_io.h"
+
+namespace repose {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string pattern = (fs::temp_directory_path() / "repose_interrupt_XXXXXX").string();
+    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+    path = pattern;
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+std::string read_all(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Big enough that writing the run folder takes a while (a 4096 x 2048 noise
+// field: 64 MB of .npy plus its picture), small enough for a test.
+const char* const kSlowScene = R"(name: interrupted
+seed: 3
+time: {step_s: 0.1, duration_s: 0.1}
+ground:
+  extent_m: [4.096, 2.048]
+  cell_size_m: 0.001
+  initial_height: {kind: noise, mean_m: 0.05, amplitude_m: 0.01, correlation_m: 0.004}
+)";
+
+pid_t start_repose(const std::vector<std::string>& args, const fs::path& cwd) {
+  const pid_t child = ::fork();
+  if (child < 0) throw std::runtime_error("fork failed");
+  if (child == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null < 0 || ::dup2(null, 1) < 0 || ::dup2(null, 2) < 0 || ::chdir(cwd.c_str()) != 0) ::_exit(126);
+    std::vector<char*> argv;
+    argv.push_back(const_cast<char*>(REPOSE_BINARY));
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(REPOSE_BINARY, argv.data());
+    ::_exit(127);
+  }
+  return child;
+}
+
+int wait_exit_code(pid_t child) {
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// The hidden temporaries next to `target` (.NAME.tmp-PID-XXXXXX).
+std::vector<fs::path> temporaries_of(const fs::path& target) {
+  std::vector<fs::path> found;
+  const std::string prefix = "." + target.filename().string() + ".tmp-";
+  for (const auto& e : fs::directory_iterator(target.parent_path())) {
+    if (e.path().filename().string().starts_with(prefix)) found.push_back(e.path());
+  }
+  return found;
+}
+
+// Starts a run and SIGKILLs it once its temporary folder holds a file, i.e.
+// in the middle of writing. False when the run finished first.
+bool kill_run_midway(const std::vector<std::string>& args, const fs::path& cwd, const fs::path& target) {
+  const pid_t child = start_repose(args, cwd);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (std::chrono::steady_clock::now() < deadline) {
+    for (const fs::path& t : temporaries_of(target)) {
+      std::error_code ec;
+      if (fs::is_directory(t, ec) && !fs::is_empty(t, ec)) {
+        ::kill(child, SIGKILL);
+        return wait_exit_code(child) == 128 + SIGKILL;
+      }
+    }
+    int status = 0;
+    if (::waitpid(child, &status, WNOHANG) == child) return false;  // it finished (or failed) first
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  ::kill(child, SIGKILL);
+  wait_exit_code(child);
+  return false;
+}
+
+void expect_complete_run_folder(const fs::path& out) {
+  ASSERT_TRUE(fs::is_directory(out));
+  EXPECT_TRUE(fs::exists(out / "manifest.json"));
+  const ArrayXXdR h = read_npy_2d((out / "height_initial.npy").string());
+  EXPECT_EQ(h.rows(), 2048);
+  EXPECT_EQ(h.cols(), 4096);
+  EXPECT_TRUE(h.allFinite());
+}
+
+TEST(InterruptedRun, KilledRunLeavesNoFolderAndALaterRunSucceeds) {
+  TempDir cwd;
+  std::ofstream(cwd.path / "scene.yaml") << kSlowScene;
+  const fs::path out = cwd.path / "out";
+  ASSERT_TRUE(kill_run_midway({"run", "scene.yaml", "--out", "out"}, cwd.path, out))
+      << "the run finished before it could be interrupted: make kSlowScene bigger";
+  EXPECT_FALSE(fs::exists(out)) << "a killed run left a target folder";
+  ASSERT_EQ(temporaries_of(out).size(), 1u) << "the killed run's temporary should still be there (SIGKILL)";
+  const fs::path leftover = temporaries_of(out).front();
+
+  EXPECT_EQ(wait_exit_code(start_repose({"run", "scene.yaml", "--out", "out"}, cwd.path)), 0);
+  expect_complete_run_folder(out);
+  EXPECT_FALSE(fs::exists(leftover)) << "the later run did not clean up the killed run's temporary";
+  EXPECT_TRUE(temporaries_of(out).empty());
+}
+
+TEST(InterruptedRun, KilledReplacementKeepsTheOldResult) {
+  TempDir cwd;
+  std::ofstream(cwd.path / "scene.yaml") << kSlowScene;
+  const fs::path out = cwd.path / "out";
+  ASSERT_EQ(wait_exit_code(start_repose({"run", "scene.yaml", "--out", "out"}, cwd.path)), 0);
+  const std::string old_manifest = read_all(out / "manifest.json");
+  ASSERT_FALSE(old_manifest.empty());
+
+  ASSERT_TRUE(kill_run_midway({"run", "scene.yaml", "--out", "out", "--force"}, cwd.path, out))
+      << "the run finished before it could be interrupted: make kSlowScene bigger";
+  EXPECT_EQ(read_all(out / "manifest.json"), old_manifest) << "the old result was changed by a killed run";
+  expect_complete_run_folder(out);
+
+  EXPECT_EQ(wait_exit_code(start_repose({"run", "scene.yaml", "--out", "out", "--force"}, cwd.path)), 0);
+  expect_complete_run_folder(out);
+  EXPECT_TRUE(temporaries_of(out).empty());
+}
+
+}  // namespace
+}  // namespace repose

@@ -1,0 +1,164 @@
+// Erosion: settling to the angle of repose, locality, the memory, stability in sigma.
+#include "models/ground/erosion.h"
+
+#include <gtest/gtest.h>
+
+#include "models/core/error.h"
+#include "tests/models/ground/ground_fixtures.h"
+
+namespace repose {
+namespace {
+
+using namespace repose::testing;
+
+// A column of material on a flat ground, all cells remembered.
+GroundState column(const GroundModel& model, double base_m, double peak_m, int half_width) {
+  GroundState state = make_ground_state(model, HeightField(model.grid, base_m));
+  const int ci = model.grid.nx / 2, cj = model.grid.ny / 2;
+  for (int j = cj - half_width; j < cj + half_width; ++j) {
+    for (int i = ci - half_width; i < ci + half_width; ++i) {
+      state.height.at(i, j) = peak_m;
+      state.erosion.touch(model.cell(i, j));
+    }
+  }
+  state.ledger.initial_m3 = state.height.volume_m3();
+  return state;
+}
+
+void settle(const GroundModel& model, const GroundParams& params, GroundState* state, int max_steps) {
+  for (int s = 0; s < max_steps && !state->erosion.empty(); ++s) {
+    erode(model, params, Ceiling{}, state);
+    state->erosion.end_step();
+  }
+}
+
+TEST(Erosion, TwoCellsSettleExactlyAtTheAngleOfRepose) {
+  Material m = sand();
+  m.sigma = 0.25;
+  const GroundModel model = make_plain_ground_model(centred_grid(2, 1, 0.01), m);
+  GroundState state = make_ground_state(model, HeightField(model.grid, 0.0));
+  state.height.at(0, 0) = 0.1;
+  state.erosion.touch(0);
+  settle(model, GroundParams{{m}}, &state, 1000);
+  // analytic: the pair ends at dh = h tan(theta) and keeps its volume
+  EXPECT_NEAR(state.height.at(0, 0) - state.height.at(1, 0), 0.01 * std::tan(m.repose_angle_rad),
+              kErosionToleranceFraction * 0.01 * 1.01);
+  EXPECT_NEAR(state.height.at(0, 0) + state.height.at(1, 0), 0.1, 1e-15);
+  EXPECT_TRUE(state.erosion.empty());
+}
+
+TEST(Erosion, SettledSlopesDoNotExceedTheAngleOfRepose) {
+  for (const double theta_deg : {0.1, 10.0, 30.0, 60.0, 89.0}) {
+    for (const double sigma : {0.03, 0.1, 0.2, 0.25}) {
+      Material m = sand();
+      m.repose_angle_rad = theta_deg * kDeg;
+      m.sigma = sigma;
+      GroundModelSpec options;
+      options.erosion_memory_steps = 5;
+      const GroundModel model = make_plain_ground_model(centred_grid(40, 40, 0.01), m, options);
+      GroundState state = column(model, 0.02, 0.1, 3);
+      settle(model, GroundParams{{m}}, &state, 200000);
+      ASSERT_TRUE(state.erosion.empty()) << theta_deg << " " << sigma;
+      // stated tolerance: tan(theta) + kErosionToleranceFraction
+      EXPECT_LE(max_slope(state.height), std::tan(m.repose_angle_rad) + kErosionToleranceFraction * 1.01)
+          << theta_deg << " deg, sigma " << sigma;
+      EXPECT_NEAR(state.height.volume_m3(), state.ledger.initial_m3, 1e-14);
+      EXPECT_TRUE(state.height.all_finite());
+    }
+  }
+}
+
+TEST(Erosion, NinetyDegreesNeverErodes) {
+  Material m = sand();
+  m.repose_angle_rad = 90 * kDeg;
+  const GroundModel model = make_plain_ground_model(centred_grid(16, 16, 0.01), m);
+  GroundState state = column(model, 0.0, 1.0, 2);
+  const ArrayXXdR before = state.height.heights();
+  settle(model, GroundParams{{m}}, &state, 10);
+  EXPECT_TRUE((state.height.heights() == before).all());
+}
+
+TEST(Erosion, CostFollowsTheActiveRegion) {
+  const Material m = sand();
+  const GroundModel model = make_plain_ground_model(centred_grid(512, 512, 0.01), m);
+  GroundState state = column(model, 0.0, 0.05, 2);
+  const ErosionResult r = erode(model, GroundParams{{m}}, Ceiling{}, &state);
+  // En = 5 passes, each ring grows by one cell: far fewer pairs than the grid's 2 * 512^2
+  EXPECT_GT(r.moves, 0);
+  EXPECT_LT(r.pair_visits, 5 * 4 * 20 * 20);
+  EXPECT_EQ(state.height.at(0, 0), 0.0);
+}
+
+TEST(Erosion, NeverRisesAboveTheCeiling) {
+  const Material m = sand();
+  const GroundModel model = make_plain_ground_model(centred_grid(16, 16, 0.01), m);
+  GroundState state = column(model, 0.0, 0.1, 2);
+  // a flat plate 1 cm above the ground over the right half
+  Ceiling ceiling;
+  Underside plate;
+  plate.footprint = Footprint{8, 0, 8, 16};
+  plate.z_m = ArrayXXdR::Constant(16, 8, 0.01);
+  ceiling.undersides.push_back(plate);
+  for (int s = 0; s < 50; ++s) erode(model, GroundParams{{m}}, ceiling, &state);
+  for (int j = 0; j < 16; ++j) {
+    for (int i = 10; i < 16; ++i) EXPECT_LE(state.height.at(i, j), 0.01 + 1e-15);
+  }
+  EXPECT_NEAR(state.height.volume_m3(), state.ledger.initial_m3, 1e-15);
+}
+
+TEST(Erosion, MemoryForgetsSettledCells) {
+  const Material m = sand();
+  GroundModelSpec options;
+  options.erosion_memory_steps = 3;
+  const GroundModel model = make_plain_ground_model(centred_grid(8, 8, 0.01), m, options);
+  GroundState state = make_ground_state(model, HeightField(model.grid, 0.0));
+  state.erosion.touch(model.cell(4, 4));  // flat: nothing moves
+  for (int s = 0; s < 4; ++s) {
+    EXPECT_FALSE(state.erosion.empty()) << s;
+    erode(model, GroundParams{{m}}, Ceiling{}, &state);
+    state.erosion.end_step();
+  }
+  EXPECT_TRUE(state.erosion.empty());
+}
+
+// The stability limit, measured: a rough (checkerboard) surface with theta
+// near 0 keeps its roughness bounded for sigma up to 1/4 and blows up above.
+double roughness_growth(double sigma) {
+  Material m = sand();
+  m.repose_angle_rad = 0.1 * kDeg;
+  m.sigma = sigma;
+  m.erosion_iterations = 1;
+  const GroundModel model = make_plain_ground_model(centred_grid(16, 16, 0.01), m);
+  GroundState state = make_ground_state(model, HeightField(model.grid, 0.0));
+  for (int j = 0; j < 16; ++j) {
+    for (int i = 0; i < 16; ++i) {
+      state.height.at(i, j) = ((i + j) % 2 ? 1e-3 : -1e-3) * (1.0 + 0.01 * i);
+      state.erosion.touch(model.cell(i, j));
+    }
+  }
+  const double before = max_slope(state.height);
+  for (int s = 0; s < 200; ++s) erode(model, GroundParams{{m}}, Ceiling{}, &state);
+  EXPECT_TRUE(state.height.all_finite());
+  return max_slope(state.height) / before;
+}
+
+TEST(ErosionStability, BoundedUpToSigmaMaxDivergesAbove) {
+  for (const double sigma : {0.05, 0.125, 0.2, 0.24}) EXPECT_LT(roughness_growth(sigma), 1.0) << sigma;
+  EXPECT_LE(roughness_growth(kSigmaMax), 1.0 + 1e-9);
+  for (const double sigma : {0.3, 0.5}) EXPECT_GT(roughness_growth(sigma), 1e3) << sigma;
+}
+
+TEST(ErosionStability, ValidateRefusesSigmaAboveTheLimit) {
+  Material m = sand();
+  m.sigma = 0.3;
+  const GroundModel model = make_plain_ground_model(centred_grid(4, 4, 0.01), m);
+  try {
+    validate(GroundParams{{m}}, model);
+    FAIL() << "sigma 0.3 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sigma"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace repose

@@ -1,0 +1,51 @@
+#pragma once
+// A scene run as a LIGGGHTS reference, from scene to observables:
+//   1. the settled bed (liggghts_bed.h, cached) the run starts from;
+//   2. the run script (objects as STL meshes, keyframed motion) run in run_dir;
+//   3. observables written to run_dir:
+//        height_initial.npy / .csv   surface of the settled bed (the heuristic's
+//                                    initial height field for a compared run)
+//        height_final.npy / .csv     surface after the run
+//        material_per_area_final.npy grain volume per unit area (m)
+//        forces.csv                  time_s and the force (N) on each object over time
+//        liggghts_manifest.json      LIGGGHTS version, script sha256, grain count,
+//                                    steps, particle-steps per second, wall and CPU times
+//        bed_manifest.json           the settled bed's manifest (its cost)
+// run_dir must exist and should be empty (the caller makes it atomic, e.g.
+// with OutputDirectory); the run's own files (run.in, log.liggghts, dumps/) stay there.
+
+#include <string>
+
+#include "models/core/height_field.h"
+#include "models/core/scene.h"
+#include "validation/liggghts_bed.h"
+#include "validation/liggghts_runner.h"
+#include "validation/liggghts_script.h"
+#include "validation/surface_height.h"
+
+namespace repose {
+
+struct LiggghtsReferenceOptions {
+  BedOptions bed;                // cache directory, bed sizing, the settling run's options
+  RunScriptOptions script;
+  LiggghtsRunOptions run;        // executable, wall-clock limit, progress of the run itself
+  SurfaceHeightOptions surface;
+};
+
+struct LiggghtsReferenceResult {
+  SettledBed bed;
+  LiggghtsRunSummary run;
+  long grain_count = 0;          // grains in the last dump
+  long steps = 0;                // steps of the run (after the bed)
+  double particle_steps_per_s = 0.0;
+  std::string script_sha256;
+  HeightField height_initial;    // surface of the settled bed on the scene's grid
+  HeightField height_final;      // surface after the run
+};
+
+// Throws InputError for a scene that cannot run (no dem section, a time step
+// too large, rotating objects) and LiggghtsRunError when a run fails.
+LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::string& run_dir,
+                                               const LiggghtsReferenceOptions& options = {});
+
+}  // namespace repose

@@ -1,0 +1,65 @@
+#pragma once
+// Observables of a granular state shared by the DEM references and the
+// heuristics, so the two can be compared cell by cell (SI units, radians):
+//   material per unit area on the grid, the mass of grains in a box, the
+//   runout front along a direction, the flank angles of a pile.
+// The surface height field itself is in surface_height.h.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "models/core/grid.h"
+#include "models/core/height_field.h"
+#include "models/core/triangle_mesh.h"
+#include "validation/grain_set.h"
+
+namespace repose {
+
+// Grain volume per unit area (m): the volume of each grain is given to the
+// cell holding its centre, divided by the cell area. Grains outside the grid
+// are left out. Divide by a packing fraction to compare with heights.
+HeightField material_per_area(const GrainSet& grains, const Grid& grid);
+// The same divided by packing_fraction (0, 1]: the height of bulk material
+// holding that much grain volume.
+HeightField equivalent_height(const GrainSet& grains, const Grid& grid, double packing_fraction);
+
+// Mass (kg) of the grains whose centre lies inside the box, all of density density_kg_m3.
+double mass_in_box_kg(const GrainSet& grains, const Aabb& box, double density_kg_m3);
+// Total grain volume (m^3).
+double grain_volume_m3(const GrainSet& grains);
+
+// The runout front: the `quantile` (default 0.99) of the grains' distances
+// along `direction` (normalised here) from `origin_m`. Grains behind the
+// origin count with negative distances. Throws InputError for no grains.
+double front_position_m(const GrainSet& grains, const Eigen::Vector3d& origin_m, const Eigen::Vector3d& direction,
+                        double quantile = 0.99);
+
+struct FlankAngleOptions {
+  int azimuth_count = 16;       // rays from the centre, evenly spaced
+  double lower_fraction = 0.2;  // flank: heights between these fractions of the peak height
+  double upper_fraction = 0.8;
+  int min_samples = 3;          // rays with fewer flank samples are left out
+};
+
+struct FlankAngles {
+  std::vector<double> azimuth_rad;  // of the rays that had a flank
+  std::vector<double> angle_rad;    // atan(-slope) of the line fitted to height against distance
+  double mean_rad = 0.0;
+  double std_rad = 0.0;             // sample standard deviation over the rays (0 for one ray)
+};
+
+// Pile flank angles: along each ray from centre (x, y) the height field is
+// sampled (bilinear) every half cell out to the grid's edge; samples whose
+// height lies between the fractions of the peak (the highest sample of all
+// rays) are fitted by least squares. Throws InputError when no ray has a flank.
+FlankAngles pile_flank_angles(const HeightField& height, const Eigen::Vector2d& centre_m,
+                              const FlankAngleOptions& options = {});
+
+// CSV of a field on its grid: a header "x_m,y_m,value" then one row per cell
+// (row-major, j outer), values printed round-trip exact.
+void write_field_csv(const std::string& path, const HeightField& field, const std::string& value_name);
+void write_flank_angles_csv(const std::string& path, const FlankAngles& angles);
+
+}  // namespace repose
