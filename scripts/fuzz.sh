@@ -23,8 +23,12 @@ for bin in build-fuzz/fuzz/*_fuzzer; do
   work=build-fuzz/corpus/$name
   mkdir -p "$work"
   log=build-fuzz/$name.log
-  "$bin" -seed=1 -max_total_time="$seconds" -artifact_prefix=build-fuzz/artifacts/"$name"- \
-    "$work" "tests/fuzz/corpus/$name" >"$log" 2>&1 || { tail -40 "$log"; echo "fuzz: $name found a crash"; exit 1; }
-  stats=$(grep -E '^Done|stat::number_of_executed_units' "$log" | tail -1)
-  echo "fuzz: $name ok ($stats)"
+  # -timeout: an input taking longer than 10 s is a hang; -rss_limit_mb (and the
+  # malloc limit that follows it): an input that needs more than 2 GB is a finding
+  "$bin" -seed=1 -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    -artifact_prefix=build-fuzz/artifacts/"$name"- "$work" "tests/fuzz/corpus/$name" >"$log" 2>&1 \
+    || { tail -40 "$log"; echo "fuzz: $name found a crash (input in build-fuzz/artifacts/)"; exit 1; }
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
+  echo "fuzz: $name ok: $runs runs in ${seconds} s, $rate exec/s, corpus $(ls "$work" | wc -l) inputs"
 done

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The main job on the default experiment. Results go to runs/default/ (replaced).
+# The main job: calibrate the ground model against the committed canonical
+# LIGGGHTS runs (data/) with the default calibration file. Results go to
+# runs/calibration_default/ (replaced only once the new run succeeded).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-build/bin/repose run experiments/scenes/default_ground.yaml --out runs/default --force
-echo "main job: results in runs/default/ (manifest.json, height fields, images)"
+build/bin/repose calibrate experiments/calibration_default.yaml --out runs/calibration_default --force
+echo "main job: read runs/calibration_default/report.md first (calibration.json, material.yaml, figures beside it)"

@@ -77,6 +77,13 @@ std::vector<std::string> split(const std::string& line) {
   return words;
 }
 
+// The first word of a line that must hold a number; an empty line is an error.
+std::string first_word(DumpReader& r, const std::string& line, const char* item) {
+  const auto words = split(line);
+  if (words.empty()) r.fail(fmt::format("{}: expected an integer, got an empty line", item));
+  return words.front();
+}
+
 void expect_item(DumpReader& r, const std::string& line, const std::string& item) {
   if (line.rfind("ITEM: " + item, 0) != 0) r.fail(fmt::format("expected 'ITEM: {}', got '{}'", item, line));
 }
@@ -84,11 +91,9 @@ void expect_item(DumpReader& r, const std::string& line, const std::string& item
 DumpFrame read_frame(DumpReader& r, const std::string& timestep_line) {
   DumpFrame f;
   expect_item(r, timestep_line, "TIMESTEP");
-  f.timestep = r.integer(split(r.require("the time step")).at(0), "TIMESTEP");
+  f.timestep = r.integer(first_word(r, r.require("the time step"), "TIMESTEP"), "TIMESTEP");
   expect_item(r, r.require("ITEM: NUMBER OF ATOMS"), "NUMBER OF ATOMS");
-  const auto count_words = split(r.require("the number of atoms"));
-  if (count_words.empty()) r.fail("NUMBER OF ATOMS: expected an integer, got an empty line");
-  const long count = r.integer(count_words[0], "NUMBER OF ATOMS");
+  const long count = r.integer(first_word(r, r.require("the number of atoms"), "NUMBER OF ATOMS"), "NUMBER OF ATOMS");
   if (count < 0) r.fail(fmt::format("NUMBER OF ATOMS: expected a non-negative count, got {}", count));
   expect_item(r, r.require("ITEM: BOX BOUNDS"), "BOX BOUNDS");
   for (int a = 0; a < 3; ++a) {

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -43,6 +44,28 @@ void write_forces_csv(const fs::path& path, const ThermoTable& thermo, const Run
   if (!out) throw InputError(fmt::format("{}: write failed", path.string()));
 }
 
+double mean_grain_diameter_m(const DemSpec& dem) { return 2.0 * dem.grain_radius_m; }
+
+// Runout over the dumps and, for a cylinder, the final pile's flank angles.
+void measure_column(LiggghtsReferenceResult& r, const Scene& scene, const std::vector<std::string>& dumps,
+                    const LiggghtsReferenceOptions& options, const fs::path& dir) {
+  std::vector<GrainSet> frames;
+  std::vector<double> times;
+  for (const std::string& path : dumps) {
+    DumpFrame f = read_last_dump_frame(path);
+    times.push_back(static_cast<double>(f.timestep) * scene.dem->time_step_s);
+    frames.push_back(std::move(f.grains));
+  }
+  const ColumnGeometry geometry = column_geometry(scene);
+  r.column = measure_column_collapse(geometry, read_last_dump_frame(r.bed.dump_path).grains, frames, times,
+                                     mean_grain_diameter_m(*scene.dem), options.column);
+  write_runout_csv((dir / "runout.csv").string(), *r.column);
+  if (geometry.shape == DemSpec::ColumnShape::kCylinder) {
+    r.pile = pile_flank_angles(r.height_final, geometry.axis_xy_m, options.flank);
+    write_flank_angles_csv((dir / "pile_flank_angles.csv").string(), *r.pile);
+  }
+}
+
 void write_manifest(const fs::path& path, const LiggghtsReferenceResult& r, const Scene& scene) {
   std::ofstream out(path);
   JsonWriter json(out);
@@ -65,6 +88,7 @@ void write_manifest(const fs::path& path, const LiggghtsReferenceResult& r, cons
   json.key("youngs_modulus_pa").number(scene.dem->youngs_modulus_pa);
   json.key("youngs_modulus_note").string("softened, as DEM practice does, to allow a practical time step");
   json.key("rayleigh_time_s").number(rayleigh_time_s(*scene.dem));
+  write_column_results(json, r);
   json.key("bed").begin_object();
   json.key("cache_key").string(r.bed.key);
   json.key("directory").string(r.bed.directory);
@@ -80,6 +104,32 @@ void write_manifest(const fs::path& path, const LiggghtsReferenceResult& r, cons
 }
 
 }  // namespace
+
+void write_column_results(JsonWriter& json, const LiggghtsReferenceResult& r) {
+  constexpr double deg = 180.0 / std::numbers::pi;
+  if (r.column) {
+    const ColumnCollapse& c = *r.column;
+    json.key("column").begin_object();
+    json.key("shape").string(c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder");
+    json.key("width_m").number(c.geometry.width_m);
+    json.key("slot_gap_m").number(c.geometry.gap_m);
+    json.key("height_initial_m").number(c.height_initial_m);
+    json.key("aspect_ratio").number(c.aspect_ratio);
+    json.key("front_initial_m").number(c.front_initial_m);
+    json.key("front_final_m").number(c.front_final_m);
+    json.key("front_final_spread_m").number(c.front_final_spread_m);
+    json.key("height_final_m").number(c.height_final_m);
+    json.key("runout_normalised").number(c.runout_normalised);
+    json.end_object();
+  }
+  if (r.pile) {
+    json.key("pile").begin_object();
+    json.key("flank_angle_mean_deg").number(r.pile->mean_rad * deg);
+    json.key("flank_angle_std_deg").number(r.pile->std_rad * deg);
+    json.key("azimuth_count").integer(static_cast<long>(r.pile->angle_rad.size()));
+    json.end_object();
+  }
+}
 
 LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::string& run_dir,
                                                const LiggghtsReferenceOptions& options) {
@@ -130,6 +180,7 @@ LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::st
   write_field_csv((dir / "material_per_area_final.csv").string(), material, "grain_volume_per_area_m");
   write_forces_csv(dir / "forces.csv", read_thermo_table((dir / "log.liggghts").string()), script,
                    scene.dem->time_step_s);
+  if (scene.dem->initial == DemSpec::Initial::kColumn) measure_column(r, scene, dumps, options, dir);
   write_manifest(dir / "liggghts_manifest.json", r, scene);
   return r;
 }

@@ -11,16 +11,23 @@
 //        liggghts_manifest.json      LIGGGHTS version, script sha256, grain count,
 //                                    steps, particle-steps per second, wall and CPU times
 //        bed_manifest.json           the settled bed's manifest (its cost)
+//   and for a scene that starts from a column (dem.initial: column):
+//        runout.csv                  time_s, front_m: the deposit front over the dumps
+//        pile_flank_angles.csv       cylinder columns: the final pile's flank angle per azimuth (degrees)
 // run_dir must exist and should be empty (the caller makes it atomic, e.g.
 // with OutputDirectory); the run's own files (run.in, log.liggghts, dumps/) stay there.
 
+#include <optional>
 #include <string>
 
 #include "models/core/height_field.h"
+#include "models/core/json_writer.h"
 #include "models/core/scene.h"
+#include "validation/column_collapse.h"
 #include "validation/liggghts_bed.h"
 #include "validation/liggghts_runner.h"
 #include "validation/liggghts_script.h"
+#include "validation/observables.h"
 #include "validation/surface_height.h"
 
 namespace repose {
@@ -30,6 +37,8 @@ struct LiggghtsReferenceOptions {
   RunScriptOptions script;
   LiggghtsRunOptions run;        // executable, wall-clock limit, progress of the run itself
   SurfaceHeightOptions surface;
+  ColumnCollapseOptions column;
+  FlankAngleOptions flank;
 };
 
 struct LiggghtsReferenceResult {
@@ -41,11 +50,17 @@ struct LiggghtsReferenceResult {
   std::string script_sha256;
   HeightField height_initial;    // surface of the settled bed on the scene's grid
   HeightField height_final;      // surface after the run
+  std::optional<ColumnCollapse> column;  // a column scene: its runout
+  std::optional<FlankAngles> pile;       // a cylinder column: the final pile's flank angles
 };
 
 // Throws InputError for a scene that cannot run (no dem section, a time step
 // too large, rotating objects) and LiggghtsRunError when a run fails.
 LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::string& run_dir,
                                                const LiggghtsReferenceOptions& options = {});
+
+// The column and pile results (when present) as members "column" and "pile"
+// of the JSON object being written (degrees for angles, as in files).
+void write_column_results(JsonWriter& json, const LiggghtsReferenceResult& r);
 
 }  // namespace repose

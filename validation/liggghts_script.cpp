@@ -68,21 +68,43 @@ std::string box_block(const DemDomain& d) {
 
 // Everything both scripts set after the box exists: contact law, materials,
 // time step, gravity, the floor and side walls, integration.
+// Atom types: 1 the grains (and every wall), 2 a rough floor. Per-type
+// properties list the grains' values for both; pair tables differ only in
+// the grain-floor rolling friction.
+bool rough_floor(const DemSpec& dem) { return dem.floor == DemSpec::Floor::kRough; }
+int atom_type_count(const DemSpec& dem) { return rough_floor(dem) ? 2 : 1; }
+
+std::string per_type(const DemSpec& dem, double v) {
+  return rough_floor(dem) ? liggghts_number(v) + " " + liggghts_number(v) : liggghts_number(v);
+}
+
+// A type-pair table: `grains` between grains, `floor` between a grain and the floor.
+std::string per_type_pair(const DemSpec& dem, double grains, double floor) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  if (!rough_floor(dem)) return "1 " + n(grains);
+  return "2 " + n(grains) + " " + n(floor) + " " + n(floor) + " " + n(floor);
+}
+
+// Everything both scripts set after the box exists: contact law, materials,
+// time step, gravity, the floor and side walls, integration.
 void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d) {
   const auto n = [](double v) { return liggghts_number(v); };
   s << "neighbor " << n(dem.grain_radius_m * (1.0 + dem.radius_spread)) << " bin\n"
     << "neigh_modify delay 0\n\n"
-    << "# materials (Young's modulus softened, as DEM practice does)\n"
-    << "fix m1 all property/global youngsModulus peratomtype " << n(dem.youngs_modulus_pa) << "\n"
-    << "fix m2 all property/global poissonsRatio peratomtype " << n(dem.poisson_ratio) << "\n"
-    << "fix m3 all property/global coefficientRestitution peratomtypepair 1 " << n(dem.restitution) << "\n"
-    << "fix m4 all property/global coefficientFriction peratomtypepair 1 " << n(dem.friction) << "\n"
-    << "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 " << n(dem.rolling_friction)
-    << "\n";
+    << "# materials (Young's modulus softened, as DEM practice does)"
+    << (rough_floor(dem) ? "; type 2: the rough floor" : "") << "\n"
+    << "fix m1 all property/global youngsModulus peratomtype " << per_type(dem, dem.youngs_modulus_pa) << "\n"
+    << "fix m2 all property/global poissonsRatio peratomtype " << per_type(dem, dem.poisson_ratio) << "\n"
+    << "fix m3 all property/global coefficientRestitution peratomtypepair "
+    << per_type_pair(dem, dem.restitution, dem.restitution) << "\n"
+    << "fix m4 all property/global coefficientFriction peratomtypepair " << per_type_pair(dem, dem.friction, dem.friction)
+    << "\n"
+    << "fix m5 all property/global coefficientRollingFriction peratomtypepair "
+    << per_type_pair(dem, dem.rolling_friction, dem.floor_rolling_friction) << "\n";
   const bool cohesive = dem.cohesion_energy_density_j_m3 > 0.0;
   if (cohesive) {
-    s << "fix m6 all property/global cohesionEnergyDensity peratomtypepair 1 "
-      << n(dem.cohesion_energy_density_j_m3) << "\n";
+    s << "fix m6 all property/global cohesionEnergyDensity peratomtypepair "
+      << per_type_pair(dem, dem.cohesion_energy_density_j_m3, 0.0) << "\n";
   }
   s << "\n# Hertz-Mindlin with tangential history and rolling friction\n"
     << "pair_style gran model hertz tangential history rolling_friction " << rolling_model_name(dem)
@@ -92,7 +114,8 @@ void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d
     << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector 0 0 -1\n\n"
     << "# floor and side walls on the ground grid's edges\n";
   const std::string wall = "all wall/gran " + wall_model(dem) + " primitive type 1";
-  s << "fix wall_floor " << wall << " zplane " << n(d.z_min_m) << "\n"
+  const std::string floor = "all wall/gran " + wall_model(dem) + " primitive type " + std::to_string(atom_type_count(dem));
+  s << "fix wall_floor " << floor << " zplane " << n(d.z_min_m) << "\n"
     << "fix wall_xmin " << wall << " xplane " << n(d.x_min_m) << "\n"
     << "fix wall_xmax " << wall << " xplane " << n(d.x_max_m) << "\n"
     << "fix wall_ymin " << wall << " yplane " << n(d.y_min_m) << "\n"
@@ -100,8 +123,48 @@ void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d
     << "fix integrate all nve/sphere\n\n";
 }
 
-double fill_height_m(const DemSpec& dem, const BedScriptOptions& o) {
-  return dem.bed_depth_m * o.packing_fraction / o.insert_volume_fraction;
+bool is_column(const DemSpec& dem) { return dem.initial == DemSpec::Initial::kColumn; }
+
+// Height of the insertion region: grains are inserted loosely (at
+// insert_volume_fraction) and fall. In a narrow column the walls keep grain
+// centres a radius away, so the region is made taller by the ratio of the
+// footprint to the area open to centres (a bed's is left as it is).
+double fill_height_m(const Scene& scene, const BedScriptOptions& o) {
+  const DemSpec& dem = *scene.dem;
+  double factor = 1.0;
+  if (is_column(dem)) {
+    const ColumnGeometry c = column_geometry(scene);
+    const double r = dem.grain_radius_m * (1.0 + dem.radius_spread);
+    const double open = c.shape == DemSpec::ColumnShape::kSlot
+                            ? (c.width_m - 2 * r) * (c.gap_m - 2 * r)
+                            : std::numbers::pi * (c.width_m - r) * (c.width_m - r);
+    factor = c.footprint_m2 / open;
+  }
+  return settled_height_m(dem) * o.packing_fraction / o.insert_volume_fraction * factor;
+}
+
+// The region grains are inserted into and, for a column, the gate that holds them.
+void write_insertion_region(std::ostringstream& s, const Scene& scene, const DemDomain& d, double fill_m) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  const DemSpec& dem = *scene.dem;
+  if (!is_column(dem)) {
+    s << "region fill block " << n(d.x_min_m) << " " << n(d.x_max_m) << " " << n(d.y_min_m) << " " << n(d.y_max_m)
+      << " 0 " << n(fill_m) << " units box\n";
+    return;
+  }
+  const ColumnGeometry c = column_geometry(scene);
+  const std::string wall = "all wall/gran " + wall_model(dem) + " primitive type 1";
+  s << "# the column's gate (left out of the run script: removed at t = 0)\n";
+  if (c.shape == DemSpec::ColumnShape::kSlot) {
+    s << "fix gate " << wall << " xplane " << n(c.gate_x_m) << "\n"
+      << "region fill block " << n(c.back_wall_x_m) << " " << n(c.gate_x_m) << " " << n(d.y_min_m) << " "
+      << n(d.y_max_m) << " 0 " << n(fill_m) << " units box\n";
+  } else {
+    s << "fix gate " << wall << " zcylinder " << n(c.width_m) << " " << n(c.axis_xy_m.x()) << " "
+      << n(c.axis_xy_m.y()) << "\n"
+      << "region fill cylinder z " << n(c.axis_xy_m.x()) << " " << n(c.axis_xy_m.y()) << " " << n(c.width_m)
+      << " 0 " << n(fill_m) << " units box\n";
+  }
 }
 
 // Position of an object at time t: linear between keyframes, held outside.
@@ -152,6 +215,46 @@ std::string liggghts_number(double v) {
   return {buf, r.ptr};
 }
 
+double settled_height_m(const DemSpec& dem) {
+  return dem.initial == DemSpec::Initial::kColumn ? dem.column_height_m : dem.bed_depth_m;
+}
+
+ColumnGeometry column_geometry(const Scene& scene) {
+  const DemSpec& dem = require_dem(scene);
+  REPOSE_DEMAND(dem.initial == DemSpec::Initial::kColumn);
+  const Grid& g = scene.ground.grid;
+  ColumnGeometry c;
+  c.shape = dem.column_shape;
+  c.width_m = dem.column_width_m;
+  c.height_m = dem.column_height_m;
+  c.axis_xy_m = Eigen::Vector2d(g.origin_x_m + 0.5 * g.extent_x_m(), g.origin_y_m + 0.5 * g.extent_y_m());
+  c.back_wall_x_m = g.origin_x_m;
+  c.gate_x_m = g.origin_x_m + dem.column_width_m;
+  c.gap_m = g.extent_y_m();
+  const double diameter = 2.0 * dem.grain_radius_m * (1.0 + dem.radius_spread);
+  if (c.shape == DemSpec::ColumnShape::kSlot) {
+    c.footprint_m2 = c.width_m * c.gap_m;
+    if (c.width_m >= g.extent_x_m()) {
+      throw InputError(fmt::format("{}: dem: column_width_m: the slot column ({} m) must be shorter than the grid's x "
+                                   "extent ({} m), which is where it collapses to",
+                                   scene.source_path, c.width_m, g.extent_x_m()));
+    }
+  } else {
+    c.footprint_m2 = std::numbers::pi * c.width_m * c.width_m;
+    if (2.0 * c.width_m >= std::min(g.extent_x_m(), g.extent_y_m())) {
+      throw InputError(fmt::format("{}: dem: column_width_m: the cylinder's radius ({} m) must be less than half the "
+                                   "grid's smaller extent ({} m)",
+                                   scene.source_path, c.width_m, std::min(g.extent_x_m(), g.extent_y_m())));
+    }
+  }
+  if (std::min(c.width_m, c.shape == DemSpec::ColumnShape::kSlot ? c.gap_m : c.width_m) < 2.0 * diameter) {
+    throw InputError(fmt::format("{}: dem: the column ({} m wide, slot gap {} m) must be at least two grain diameters "
+                                 "({} m) across",
+                                 scene.source_path, c.width_m, c.gap_m, 2.0 * diameter));
+  }
+  return c;
+}
+
 double rayleigh_time_s(const DemSpec& dem) {
   const double r = dem.grain_radius_m * (1.0 - dem.radius_spread);
   const double shear_modulus = dem.youngs_modulus_pa / (2.0 * (1.0 + dem.poisson_ratio));
@@ -174,6 +277,7 @@ void check_dem_spec(const DemSpec& dem) {
   require_non_negative(dem.friction, "friction");
   require_non_negative(dem.rolling_friction, "rolling_friction");
   require_non_negative(dem.cohesion_energy_density_j_m3, "cohesion_energy_density_j_m3");
+  require_non_negative(dem.floor_rolling_friction, "floor_rolling_friction");
   require_positive(dem.time_step_s, "time_step_s");
   require_positive(dem.bed_depth_m, "bed_depth_m");
   require_positive(dem.settle_kinetic_energy_j, "settle_kinetic_energy_j");
@@ -221,7 +325,8 @@ double mean_grain_volume_m3(const DemSpec& dem) {
 long bed_grain_count(const Scene& scene, const BedScriptOptions& options) {
   const DemSpec& dem = require_dem(scene);
   const Grid& g = scene.ground.grid;
-  const double volume = g.extent_x_m() * g.extent_y_m() * dem.bed_depth_m * options.packing_fraction;
+  const double footprint = is_column(dem) ? column_geometry(scene).footprint_m2 : g.extent_x_m() * g.extent_y_m();
+  const double volume = footprint * settled_height_m(dem) * options.packing_fraction;
   return std::lround(volume / mean_grain_volume_m3(dem));
 }
 
@@ -234,7 +339,7 @@ DemDomain bed_domain(const Scene& scene, const BedScriptOptions& options) {
   d.y_min_m = g.origin_y_m;
   d.y_max_m = g.origin_y_m + g.extent_y_m();
   d.z_min_m = 0.0;
-  d.z_max_m = fill_height_m(dem, options) + 4.0 * dem.grain_radius_m;
+  d.z_max_m = fill_height_m(scene, options) + 4.0 * dem.grain_radius_m;
   return d;
 }
 
@@ -270,7 +375,7 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
     << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\n"
     << "communicate single vel yes\nunits si\n"
     << "region domain block " << box_block(d) << " units box\n"
-    << "create_box 1 domain\n";
+    << "create_box " << atom_type_count(dem) << " domain\n";
   write_physics(s, dem, d);
   s << "# grains: " << radii.size() << " radii, equal in number\n";
   for (std::size_t k = 0; k < radii.size(); ++k) {
@@ -279,10 +384,9 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
   }
   s << "fix pdd all particledistribution/discrete/numberbased " << seeds[radii.size()] << " " << radii.size();
   for (std::size_t k = 0; k < radii.size(); ++k) s << " pts" << k << " " << n(1.0 / static_cast<double>(radii.size()));
-  s << "\n"
-    << "region fill block " << n(d.x_min_m) << " " << n(d.x_max_m) << " " << n(d.y_min_m) << " " << n(d.y_max_m)
-    << " 0 " << n(fill_height_m(dem, options)) << " units box\n"
-    << "fix ins all insert/pack seed " << seeds[radii.size() + 1]
+  s << "\n";
+  write_insertion_region(s, scene, d, fill_height_m(scene, options));
+  s << "fix ins all insert/pack seed " << seeds[radii.size() + 1]
     << " distributiontemplate pdd maxattempt 200 insert_every once overlapcheck yes all_in yes"
     << " vel constant 0 0 0 region fill particles_in_region " << grains << " ntry_mc 100000\n\n"
     << "thermo_style custom step atoms ke\n"
@@ -324,7 +428,9 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
   d.x_max_m = g.origin_x_m + g.extent_x_m();
   d.y_min_m = g.origin_y_m;
   d.y_max_m = g.origin_y_m + g.extent_y_m();
-  double top = dem.bed_depth_m * 2.0;
+  // a column, once its gate is gone, only falls; a bed may be heaped up by the objects
+  if (is_column(dem)) column_geometry(scene);  // refuses a column that does not fit, before any run
+  double top = is_column(dem) ? 1.25 * dem.column_height_m : dem.bed_depth_m * 2.0;
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     const ObjectSpec& o = scene.objects[k];
     require_translation_only(o, scene);

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "models/core/scene.h"
 #include "models/core/triangle_mesh.h"
 
@@ -44,6 +46,27 @@ struct DemDomain {
   double x_min_m = 0, x_max_m = 0, y_min_m = 0, y_max_m = 0, z_min_m = 0, z_max_m = 0;
 };
 
+// The column of grains a run starts from when dem.initial is column
+// (scene.h): where it stands and where the gate removed at t = 0 was.
+struct ColumnGeometry {
+  DemSpec::ColumnShape shape = DemSpec::ColumnShape::kCylinder;
+  Eigen::Vector2d axis_xy_m = Eigen::Vector2d::Zero();  // cylinder: its axis (the grid's centre)
+  double back_wall_x_m = 0.0;  // slot: the wall the column leans on (the grid's x_min edge)
+  double gate_x_m = 0.0;       // slot: the gate plane, back_wall_x_m + width_m
+  double gap_m = 0.0;          // slot: the distance between the side walls (the grid's y extent)
+  double width_m = 0.0;        // slot: L0 along x; cylinder: radius R0
+  double height_m = 0.0;       // H0, the intended settled height
+  double footprint_m2 = 0.0;   // slot: L0 * gap; cylinder: pi R0^2
+};
+
+// Requires scene.dem with initial == column; throws InputError when the
+// column does not fit the grid (a slot longer than the grid, a cylinder
+// wider than it).
+ColumnGeometry column_geometry(const Scene& scene);
+
+// Height of the settled grains: bed_depth_m for a bed, column_height_m for a column.
+double settled_height_m(const DemSpec& dem);
+
 struct BedScriptOptions {
   double packing_fraction = 0.6;         // settled packing assumed to size the grain count
   double insert_volume_fraction = 0.3;   // grains are inserted this loosely (then fall)
@@ -53,9 +76,13 @@ struct BedScriptOptions {
   long max_grain_count = 100000;         // refuse larger beds (about 0.2 us per grain-step: hours)
 };
 
-// Grain count that fills the grid area up to dem.bed_depth_m at packing_fraction.
+// Grain count that fills the grid area up to dem.bed_depth_m (a column: its
+// footprint up to column_height_m) at packing_fraction.
 long bed_grain_count(const Scene& scene, const BedScriptOptions& options);
-// The settling box: the grid's extent, z from 0 to the insertion height plus a margin.
+// The settling box: the grid's extent, z from 0 to the insertion height plus
+// a margin. A column is inserted inside its gate (slot: a plane x = gate_x_m;
+// cylinder: a zcylinder wall), which the run script leaves out: the gate is
+// removed at t = 0, instantly.
 DemDomain bed_domain(const Scene& scene, const BedScriptOptions& options);
 // Steps of the settling loop at most (for progress).
 long bed_max_steps(const Scene& scene, const BedScriptOptions& options);

@@ -46,7 +46,67 @@ double peak_on_rays(const HeightField& height, const Eigen::Vector2d& centre, co
   return peak;
 }
 
+// (centre distance, radius) pairs -> the deposit front (see deposit_front_m).
+double front_of(std::vector<std::pair<double, double>> d, double max_gap_m) {
+  REPOSE_DEMAND(!d.empty());
+  std::sort(d.begin(), d.end());
+  double front = d.front().first + d.front().second;
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    if (k > 0 && d[k].first - d[k - 1].first > max_gap_m) break;
+    front = std::max(front, d[k].first + d[k].second);
+  }
+  return front;
+}
+
+void require_front_inputs(const GrainSet& grains, double max_gap_m) {
+  if (grains.size() == 0) throw InputError("deposit front: no grains");
+  if (!(std::isfinite(max_gap_m) && max_gap_m > 0.0)) {
+    throw InputError(fmt::format("deposit front: max_gap_m: expected a positive number, got {}", max_gap_m));
+  }
+}
+
 }  // namespace
+
+double deposit_front_m(const GrainSet& grains, const Eigen::Vector3d& origin_m, const Eigen::Vector3d& direction,
+                       double max_gap_m) {
+  require_front_inputs(grains, max_gap_m);
+  REPOSE_DEMAND(direction.norm() > 0.0);
+  const Eigen::Vector3d u = direction.normalized();
+  std::vector<std::pair<double, double>> d;
+  d.reserve(static_cast<std::size_t>(grains.size()));
+  for (Eigen::Index g = 0; g < grains.size(); ++g) {
+    d.emplace_back((grains.position_m.row(g).transpose() - origin_m).dot(u), grains.radius_m[g]);
+  }
+  return front_of(std::move(d), max_gap_m);
+}
+
+RadialFront radial_deposit_front(const GrainSet& grains, const Eigen::Vector2d& axis_xy_m, double max_gap_m,
+                                 int sector_count) {
+  require_front_inputs(grains, max_gap_m);
+  REPOSE_DEMAND(sector_count >= 1);
+  std::vector<std::vector<std::pair<double, double>>> sectors(static_cast<std::size_t>(sector_count));
+  for (Eigen::Index g = 0; g < grains.size(); ++g) {
+    const Eigen::Vector2d v(grains.position_m(g, 0) - axis_xy_m.x(), grains.position_m(g, 1) - axis_xy_m.y());
+    const double azimuth = std::atan2(v.y(), v.x()) + std::numbers::pi;  // [0, 2 pi]
+    const int k = std::min(sector_count - 1, static_cast<int>(azimuth / (2 * std::numbers::pi) * sector_count));
+    sectors[static_cast<std::size_t>(k)].emplace_back(v.norm(), grains.radius_m[g]);
+  }
+  RadialFront out;
+  for (auto& sector : sectors) {
+    if (!sector.empty()) out.sector_front_m.push_back(front_of(std::move(sector), max_gap_m));
+  }
+  const double n = static_cast<double>(out.sector_front_m.size());
+  for (double f : out.sector_front_m) out.mean_m += f / n;
+  double var = 0.0;
+  for (double f : out.sector_front_m) var += (f - out.mean_m) * (f - out.mean_m);
+  out.std_m = n > 1 ? std::sqrt(var / (n - 1)) : 0.0;
+  return out;
+}
+
+double grain_top_m(const GrainSet& grains) {
+  if (grains.size() == 0) throw InputError("grain top: no grains");
+  return (grains.position_m.col(2) + grains.radius_m).maxCoeff();
+}
 
 HeightField material_per_area(const GrainSet& grains, const Grid& grid) {
   HeightField out(grid, 0.0);

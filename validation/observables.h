@@ -36,6 +36,30 @@ double grain_volume_m3(const GrainSet& grains);
 double front_position_m(const GrainSet& grains, const Eigen::Vector3d& origin_m, const Eigen::Vector3d& direction,
                         double quantile = 0.99);
 
+// The front of a deposit, leaving out grains thrown ahead of it: the grains'
+// centre distances along `direction` (normalised here) from origin_m are
+// sorted; walking out from the nearest, the deposit ends at the first gap
+// between consecutive distances larger than max_gap_m; the front is the
+// farthest outer edge (distance + radius) reached before it. Throws
+// InputError for no grains or a non-positive gap.
+double deposit_front_m(const GrainSet& grains, const Eigen::Vector3d& origin_m, const Eigen::Vector3d& direction,
+                       double max_gap_m);
+
+struct RadialFront {
+  std::vector<double> sector_front_m;  // per azimuth sector that holds grains
+  double mean_m = 0.0;
+  double std_m = 0.0;                  // sample standard deviation over the sectors (0 for one)
+};
+
+// The same rule radially, per azimuth sector (sector_count equal sectors
+// around the vertical axis through axis_xy_m): distances in the xy plane
+// from the axis. For the runout of an axisymmetric collapse.
+RadialFront radial_deposit_front(const GrainSet& grains, const Eigen::Vector2d& axis_xy_m, double max_gap_m,
+                                 int sector_count = 16);
+
+// The top of the grains: the largest z + radius (m). InputError for no grains.
+double grain_top_m(const GrainSet& grains);
+
 struct FlankAngleOptions {
   int azimuth_count = 16;       // rays from the centre, evenly spaced
   double lower_fraction = 0.2;  // flank: heights between these fractions of the peak height

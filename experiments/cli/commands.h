@@ -10,5 +10,7 @@ namespace repose::cli {
 void add_check_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_run_command(CLI::App& app, int argc, char** argv);
+void add_calibrate_command(CLI::App& app, int argc, char** argv);
+void add_experiment_command(CLI::App& app, int argc, char** argv);
 
 }  // namespace repose::cli

@@ -9,6 +9,7 @@
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/simulate_ground.h"
+#include "models/ground/streaks.h"
 
 namespace repose::cli {
 namespace {
@@ -34,13 +35,32 @@ void run_ground_solver(RunContext& context) {
                     context.scene.time.duration_s, CameraOverrides{});
   context.manifest.add_file("height_final.png");
 
+  // Streaks along each moving object's path (streaks.h); ridges count above 5 % of a cell.
+  std::vector<std::pair<std::string, StreakStats>> streaks;
+  for (const ObjectSpec& object : context.scene.objects) {
+    const StreakStats s = streaks_along_path(run.final_height, object, context.scene.time,
+                                             0.05 * run.final_height.grid().cell_size_m);
+    if (s.samples > 0) streaks.emplace_back(object.name, s);
+  }
+
   context.manifest.set_stages_built(run.stages);
-  context.manifest.set_results([run](JsonWriter& json) {
+  context.manifest.set_results([run, streaks](JsonWriter& json) {
     json.key("steps").integer(run.steps);
     json.key("step_wall_s_median").number(median(run.step_wall_s));
     double total = 0.0;
     for (double t : run.step_wall_s) total += t;
     json.key("steps_wall_s_total").number(total);
+    json.key("step_wall_s_mean").number(run.steps > 0 ? total / run.steps : 0.0);
+    json.key("streaks").begin_object();
+    for (const auto& [name, s] : streaks) {
+      json.key(name).begin_object();
+      json.key("samples").integer(s.samples);
+      json.key("rms_m").number(s.rms_m);
+      json.key("range_m").number(s.range_m);
+      json.key("ridges").integer(s.ridges);
+      json.end_object();
+    }
+    json.end_object();
     json.key("contact_cells_total").integer(run.contact_cells);
     json.key("volume").begin_object();
     json.key("initial_m3").number(run.ledger.initial_m3);

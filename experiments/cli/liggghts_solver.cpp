@@ -1,7 +1,8 @@
 // `repose run --solver liggghts`: the scene as a LIGGGHTS DEM reference run
 // (validation/liggghts_reference.h). The settled bed's surface replaces the
 // scene's own initial height, so that a heuristic compared with this run
-// starts from the same ground.
+// starts from the same ground. A column scene (dem.initial: column) adds
+// its runout and, for a cylinder, the pile's flank angles to the results.
 #include "experiments/cli/render_height.h"
 #include "experiments/cli/solvers.h"
 #include "validation/liggghts_reference.h"
@@ -20,6 +21,8 @@ void run_liggghts_solver(RunContext& context) {
                            "bed_manifest.json", "run.in", "log.liggghts"}) {
     context.manifest.add_file(name);
   }
+  if (r.column) context.manifest.add_file("runout.csv");
+  if (r.pile) context.manifest.add_file("pile_flank_angles.csv");
   render_height_png(context.out.path("height_initial.png"), r.height_initial, &context.scene, 0.0, CameraOverrides{});
   render_height_png(context.out.path("height_final.png"), r.height_final, &context.scene,
                     context.scene.time.duration_s, CameraOverrides{});
@@ -37,6 +40,11 @@ void run_liggghts_solver(RunContext& context) {
     json.key("run_wall_s").number(r.run.wall_time_s);
     json.key("run_cpu_s").number(r.run.cpu_time_s);
     json.key("bed_wall_s").number(r.bed.wall_time_s);
+    json.key("bed_cpu_s").number(r.bed.cpu_time_s);
+    json.key("particle_steps_per_cpu_s")
+        .number(r.run.cpu_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.cpu_time_s
+                                     : 0.0);
+    write_column_results(json, r);
   });
 }
 

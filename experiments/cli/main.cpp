@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
   repose::cli::add_check_command(app);
   repose::cli::add_render_command(app);
   repose::cli::add_run_command(app, argc, argv);
+  repose::cli::add_calibrate_command(app, argc, argv);
+  repose::cli::add_experiment_command(app, argc, argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

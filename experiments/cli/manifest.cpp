@@ -2,6 +2,7 @@
 
 #include <ctime>
 #include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -28,9 +29,22 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-Manifest::Manifest(int argc, char** argv)
-    : command_line_(argv, argv + argc), start_time_utc_(utc_now_iso8601()), start_(std::chrono::steady_clock::now()) {
+Manifest::Manifest(int argc, char** argv) : Manifest(std::vector<std::string>(argv, argv + argc)) {}
+
+Manifest::Manifest(std::vector<std::string> command_line)
+    : command_line_(std::move(command_line)),
+      start_time_utc_(utc_now_iso8601()),
+      start_(std::chrono::steady_clock::now()) {
   build_ = build_info();
+}
+
+std::string Manifest::results_json() const {
+  std::ostringstream text;
+  JsonWriter json(text);
+  json.begin_object();
+  if (results_) results_(json);
+  json.end_object();
+  return text.str();
 }
 
 void Manifest::set_scene(const Scene& scene) {

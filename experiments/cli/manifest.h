@@ -22,6 +22,7 @@ class Manifest {
  public:
   // Records the start time (UTC) and the command line.
   Manifest(int argc, char** argv);
+  explicit Manifest(std::vector<std::string> command_line);
 
   // The scene: its file's SHA-256 and its resolved form (every default filled).
   void set_scene(const Scene& scene);
@@ -34,6 +35,10 @@ class Manifest {
   void set_stages_built(std::vector<std::string> names) { stages_built_ = std::move(names); }
   // The solver's own results, written as the members of a "results" object.
   void set_results(std::function<void(JsonWriter&)> write_members) { results_ = std::move(write_members); }
+
+  // The results as a JSON object ("{}" when the solver set none), for
+  // experiment summaries.
+  std::string results_json() const;
 
   // Writes the manifest as JSON (with the build information and the total wall time).
   void write(const std::string& path) const;

@@ -9,10 +9,8 @@
 #include "experiments/cli/commands.h"
 #include "experiments/cli/manifest.h"
 #include "experiments/cli/progress_printer.h"
-#include "experiments/cli/render_height.h"
+#include "experiments/cli/run_scene.h"
 #include "experiments/cli/solvers.h"
-#include "models/core/initial_height.h"
-#include "models/core/npy_io.h"
 #include "models/core/output_directory.h"
 #include "models/core/scene_loader.h"
 
@@ -28,28 +26,12 @@ struct RunOptions {
 
 void run(const RunOptions& options, int argc, char** argv) {
   Manifest manifest(argc, argv);
-  manifest.set_solver(options.solver);
   // The scene is loaded before anything is written: a bad scene writes nothing.
   Scene scene;
   manifest.time_stage("load_scene", [&] { scene = load_scene(options.scene_path); });
   OutputDirectory out = OutputDirectory::open(options.out_dir, options.force);
-  manifest.set_scene(scene);
-
-  HeightField initial;
-  manifest.time_stage("initial_height", [&] { initial = make_initial_height(scene); });
-  manifest.time_stage("write_height_initial_npy", [&] { write_npy_2d(out.path("height_initial.npy"), initial.heights()); });
-  manifest.add_file("height_initial.npy");
-  manifest.time_stage("render_height_initial_png", [&] {
-    render_height_png(out.path("height_initial.png"), initial, &scene, 0.0, CameraOverrides{});
-  });
-  manifest.add_file("height_initial.png");
-
   ProgressPrinter progress;
-  RunContext context{scene, initial, out, manifest, progress.callback()};
-  manifest.time_stage("solver_" + options.solver, [&] { find_solver(options.solver).run(context); });
-
-  manifest.add_file("manifest.json");
-  manifest.write(out.path("manifest.json"));
+  run_scene(scene, options.solver, out, manifest, progress.callback());
   out.commit();
   std::printf("wrote %s\n", out.target().string().c_str());
 }

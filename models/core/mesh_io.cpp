@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "models/core/error.h"
+#include "models/core/input_file.h"
 
 namespace repose {
 
@@ -39,9 +40,7 @@ std::string lower(std::string s) {
 }
 
 std::string read_bytes(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) fail(path, "no such file");
-  if (fs::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
+  require_regular_file(path, "mesh");
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot be read (permissions?)");
   std::ostringstream buffer;

@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "models/core/error.h"
+#include "models/core/input_file.h"
 
 namespace repose {
 namespace {
@@ -281,6 +282,7 @@ void write_npy(const std::string& path, const double* values, std::size_t count,
 }  // namespace
 
 ArrayXXdR read_npy_2d(const std::string& path) {
+  require_regular_file(path, ".npy");
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
   const std::uint64_t file_size = static_cast<std::uint64_t>(in.tellg());

@@ -12,6 +12,7 @@
 #include <cstring>
 
 #include "models/core/error.h"
+#include "models/core/input_file.h"
 
 namespace repose {
 namespace {
@@ -108,6 +109,7 @@ const char* colour_type_name(int t) {
 
 // Opens the file, checks the signature and creates libpng's structs.
 void open_png(const std::string& path, PngReader& r) {
+  require_regular_file(path, "PNG");
   r.file = std::fopen(path.c_str(), "rb");
   if (!r.file) throw InputError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
   png_byte signature[8];

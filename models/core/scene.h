@@ -111,6 +111,30 @@ struct DemSpec {
   double settle_kinetic_energy_j = 1.0e-7;  // settling ends below this total kinetic energy
   double gravity_m_s2 = 9.81;
   double dump_interval_s = 0.01;
+
+  // The grains the run starts from. bed: a settled layer of bed_depth_m over
+  // the whole grid. column: a column of grains settled behind a gate that is
+  // removed at t = 0 (column collapse, piles); bed_depth_m is then unused.
+  //   slot: quasi-2-D; the column fills x from the grid's x_min edge to
+  //     x_min + column_width_m across the grid's whole y extent (the grid's
+  //     y extent is the gap between the two side walls); the gate is the
+  //     plane x = x_min + column_width_m.
+  //   cylinder: axisymmetric; a cylinder of radius column_width_m on the
+  //     grid's centre; the gate is the cylinder wall.
+  enum class Initial { kBed, kColumn };
+  Initial initial = Initial::kBed;
+  enum class ColumnShape { kSlot, kCylinder };
+  ColumnShape column_shape = ColumnShape::kCylinder;
+  double column_width_m = 0.02;   // slot: length L0 along x; cylinder: radius R0
+  double column_height_m = 0.04;  // H0, the settled column's intended height
+
+  // The floor (z = 0). smooth: a plane of the grains' own material. rough: a
+  // plane whose rolling friction with the grains is floor_rolling_friction,
+  // standing in for the base of glued grains the column-collapse and pile
+  // experiments use (single grains would otherwise roll far over a smooth plane).
+  enum class Floor { kSmooth, kRough };
+  Floor floor = Floor::kSmooth;
+  double floor_rolling_friction = 1.0;  // rough floor only
 };
 
 struct Scene {

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "models/core/error.h"
+#include "models/core/input_file.h"
 #include "models/core/mesh_io.h"
 #include "models/core/npy_io.h"
 #include "models/core/png_io.h"
@@ -172,6 +173,16 @@ void dem_fields(Visitor& v, DemSpec& d) {
   v.number("settle_kinetic_energy_j", d.settle_kinetic_energy_j, Range::positive());
   v.number("gravity_m_s2", d.gravity_m_s2, Range::positive());
   v.number("dump_interval_s", d.dump_interval_s, Range::positive());
+  using I = DemSpec::Initial;
+  v.choice("initial", d.initial, std::vector<std::pair<std::string, I>>{{"bed", I::kBed}, {"column", I::kColumn}});
+  using C = DemSpec::ColumnShape;
+  v.choice("column_shape", d.column_shape,
+           std::vector<std::pair<std::string, C>>{{"slot", C::kSlot}, {"cylinder", C::kCylinder}});
+  v.number("column_width_m", d.column_width_m, Range::positive());
+  v.number("column_height_m", d.column_height_m, Range::positive());
+  using F = DemSpec::Floor;
+  v.choice("floor", d.floor, std::vector<std::pair<std::string, F>>{{"smooth", F::kSmooth}, {"rough", F::kRough}});
+  v.number("floor_rolling_friction", d.floor_rolling_friction, Range::non_negative());
 }
 
 // The field lists as values, so that one list can be handed to readers and writers.
@@ -676,10 +687,13 @@ Scene load_scene_from_string(const std::string& yaml, const std::string& pretend
   return read_scene(ctx, parse_yaml(yaml, pretend_path));
 }
 
+Scene load_scene_from_node(const YAML::Node& root, const std::string& path) {
+  Context ctx{path, fs::absolute(fs::path(path)).parent_path().lexically_normal()};
+  return read_scene(ctx, YamlValue(path, root, ""));
+}
+
 Scene load_scene(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": no such scene file");
-  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a scene file");
+  require_regular_file(path, "scene");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot be read");
   std::ostringstream text;

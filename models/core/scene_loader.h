@@ -47,6 +47,10 @@ Scene load_scene(const std::string& path);
 // relative paths.
 Scene load_scene_from_string(const std::string& yaml, const std::string& pretend_path);
 
+// The same from a parsed document (e.g. a scene file with an experiment's
+// overrides applied); `path` is the scene file, for messages and relative paths.
+Scene load_scene_from_node(const YAML::Node& root, const std::string& path);
+
 // A short human summary (a few lines) for `repose check`.
 std::string describe_scene(const Scene& scene);
 

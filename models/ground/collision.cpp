@@ -40,18 +40,39 @@ class CpuUndersideRenderer : public UndersideRenderer {
   }
 };
 
+// Seen from below, the lowest point of a closed, outward-oriented mesh over a
+// cell lies on a face turned downwards (where a vertical line enters the
+// body), so only those faces need rendering: about half of them.
+TriangleMesh downward_faces(const TriangleMesh& mesh) {
+  TriangleMesh out;
+  out.V = mesh.V;
+  out.F.resize(mesh.F.rows(), 3);
+  Eigen::Index n = 0;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    if ((b - a).cross(c - a).z() < 0.0) out.F.row(n++) = mesh.F.row(f);
+  }
+  out.F.conservativeResize(n, 3);
+  return out;
+}
+
 }  // namespace
 
 std::unique_ptr<UndersideRenderer> make_cpu_underside_renderer() { return std::make_unique<CpuUndersideRenderer>(); }
 
-Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, UndersideRenderer& renderer) {
+Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, UndersideRenderer& renderer,
+                         int reach_cells) {
   const Aabb box = bounding_box(mesh);
   const Footprint fp = footprint_of(box, ground.grid());
   if (fp.empty()) return {};
-  // bounding boxes first: the object is above the ground under its footprint
-  const double top = ground.heights().block(fp.j0, fp.i0, fp.nj, fp.ni).maxCoeff();
+  // bounding boxes first: the object is above the ground under its footprint (and within reach)
+  const Grid& g = ground.grid();
+  const int i0 = std::max(0, fp.i0 - reach_cells), j0 = std::max(0, fp.j0 - reach_cells);
+  const int i1 = std::min(g.nx, fp.i0 + fp.ni + reach_cells), j1 = std::min(g.ny, fp.j0 + fp.nj + reach_cells);
+  const double top = ground.heights().block(j0, i0, j1 - j0, i1 - i0).maxCoeff();
   if (box.min.z() >= top) return {};
-  const DepthImage img = renderer.render_below(mesh, fp.sub_grid(ground.grid()), box.min.z(), box.max.z());
+  const DepthImage img =
+      renderer.render_below(downward_faces(mesh), fp.sub_grid(ground.grid()), box.min.z(), box.max.z());
   Underside u;
   u.footprint = fp;
   u.z_m = ArrayXXdR::Constant(fp.nj, fp.ni, std::numeric_limits<double>::infinity());

@@ -55,8 +55,11 @@ struct Underside {
 };
 
 // The underside of `mesh` (world coordinates) over the ground; empty when
-// the bounding box misses the grid or lies wholly above the ground under it.
-Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, UndersideRenderer& renderer);
+// the bounding box misses the grid or lies wholly above the ground under it
+// and within `reach_cells` cells around (0: a contact; more: an object that
+// ground could rise under, e.g. by erosion, which moves material one cell per pass).
+Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, UndersideRenderer& renderer,
+                         int reach_cells = 0);
 
 // The undersides of all objects in a step. The lowest one over a cell is
 // how high the ground there may rise (displacement and erosion never push

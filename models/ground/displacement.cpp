@@ -218,6 +218,25 @@ void push_excess_outwards(const GroundModel& model, const Ceiling& ceiling, cons
     }
   }
 
+  // A deposit that only contact cells separate from open ground (a hole that
+  // another object dug below this one's underside) would keep its excess: only
+  // then, the levels go on through the contact cells, which sit at the
+  // ceiling and so pass on whatever they are given.
+  bool enclosed = false;
+  for (const std::int64_t c : deposits) {
+    const int i = static_cast<int>(c % g.nx), j = static_cast<int>(c / g.nx);
+    enclosed = enclosed || (w.contains(i, j) && level[wl(i, j)] == -1 && excess_at(i, j) > 0.0);
+  }
+  for (std::size_t q = 0; enclosed && q < queue.size(); ++q) {
+    const auto [i, j] = queue[q];
+    for (const auto& o : kNeighbours) {
+      const int ni = i + o[0], nj = j + o[1];
+      if (!w.contains(ni, nj) || level[wl(ni, nj)] != -1) continue;
+      level[wl(ni, nj)] = level[wl(i, j)] + 1;
+      queue.emplace_back(ni, nj);
+    }
+  }
+
   int top = 0;
   std::vector<std::vector<std::int64_t>> by_level(1);
   auto enqueue = [&](int i, int j) {

@@ -62,6 +62,7 @@ GroundModel build_ground_model(const Scene& scene) {
     }
   }
   model.objects = scene.objects;
+  for (const ObjectSpec& object : model.objects) model.swept_bodies.push_back(make_swept_body(object.body));
   model.time = scene.time;
   model.camera = scene.camera;
   return model;

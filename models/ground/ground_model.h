@@ -11,6 +11,7 @@
 #include "models/core/grid.h"
 #include "models/core/material.h"
 #include "models/core/scene.h"
+#include "models/ground/swept_mesh.h"
 
 namespace repose {
 
@@ -21,6 +22,9 @@ struct GroundModel {
   // ny * nx, row-major: index into materials for each cell (later regions win).
   std::vector<std::uint8_t> material_index;
   std::vector<ObjectSpec> objects;
+  // Per object: its body's edge adjacency and face normals, so that a swept
+  // mesh costs a copy per step, not a hash map (swept_mesh.h).
+  std::vector<SweptBody> swept_bodies;
   GroundModelSpec options;
   TimeSpec time;
   std::optional<CameraSpec> camera;

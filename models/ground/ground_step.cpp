@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "models/core/error.h"
 #include "models/ground/coarse_contact.h"
 #include "models/ground/displacement.h"
 #include "models/ground/ground_model.h"
@@ -82,6 +83,33 @@ Underside merged_underside(const std::vector<Underside>& undersides, const std::
   return u;
 }
 
+// A fine object that touches nothing still bounds the ground under it:
+// erosion raises a cell at most to the highest ground within max(En) cells
+// (one ring per pass, sigma <= 1/4), and displacement may have deposited
+// material under it. So, after displacement, an object whose lowest point is
+// below the ground within that reach joins the ceiling in place of its empty
+// contact (e.g. one lifted out of its own imprint), and material deposited
+// above its underside is displaced as by any contact.
+int add_hovering_undersides(const GroundModel& model, const GroundParams& params,
+                            const std::vector<TriangleMesh>& meshes, const std::vector<char>& coarse,
+                            const std::vector<Eigen::Vector3d>& motion, UndersideRenderer& renderer,
+                            GroundState* state, Ceiling* ceiling) {
+  int reach_cells = 0;
+  for (const Material& m : params.materials) reach_cells = std::max(reach_cells, m.erosion_iterations);
+  int contact_cells = 0;
+  std::size_t fine = 0;  // ceiling->undersides holds the fine objects in order
+  for (std::size_t o = 0; o < meshes.size(); ++o) {
+    if (coarse[o]) continue;
+    const std::size_t k = fine++;
+    if (!ceiling->undersides[k].empty()) continue;
+    ceiling->undersides[k] = find_underside(meshes[o], state->height, renderer, reach_cells);
+    if (ceiling->undersides[k].empty()) continue;
+    const Underside u = ceiling->undersides[k];  // displace reads the ceiling too
+    contact_cells += displace(model, params, u, *ceiling, motion[o], state).contact_cells;
+  }
+  return contact_cells;
+}
+
 }  // namespace
 
 bool uses_coarse_grid(const GroundModel& model, int object, const Pose& pose) {
@@ -114,7 +142,8 @@ StepReport step(const GroundModel& model, const GroundParams& params, UndersideR
       const Pose to = s == substeps ? end_poses[o] : object.pose_at(t);
       motion[o] = to.position_m - poses[o].position_m;
       if (model.options.sweep && moved(poses[o], to, model.grid.cell_size_m)) {
-        meshes[o] = swept_mesh(object.body, poses[o], to);
+        REPOSE_DEMAND(model.swept_bodies.size() == n_objects);
+        meshes[o] = swept_mesh(object.body, model.swept_bodies[o], poses[o], to);
         ++report.swept_objects;
       } else {
         meshes[o] = transformed(object.body, to);
@@ -141,6 +170,7 @@ StepReport step(const GroundModel& model, const GroundParams& params, UndersideR
       const Underside& u = cluster.size() == 1 ? ceiling.undersides[cluster[0]] : merged;
       report.contact_cells += displace(model, params, u, ceiling, mean_motion, state).contact_cells;
     }
+    report.contact_cells += add_hovering_undersides(model, params, meshes, coarse, motion, renderer, state, &ceiling);
     const ErosionResult e = erode(model, params, ceiling, state);
     report.erosion.passes += e.passes;
     report.erosion.pair_visits += e.pair_visits;

@@ -4,6 +4,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "models/core/error.h"
+
 namespace repose {
 
 namespace {
@@ -14,60 +16,85 @@ std::uint64_t edge_key(int a, int b) {
 
 }  // namespace
 
-TriangleMesh swept_mesh(const TriangleMesh& body, const Pose& from, const Pose& to) {
-  const Eigen::Vector3d d = to.position_m - from.position_m;
-  Pose at_to = to;
-  if (d.squaredNorm() == 0.0) return transformed(body, at_to);
-  Pose at_from = to;
-  at_from.position_m = from.position_m;
-  const TriangleMesh m0 = transformed(body, at_from);
-  const TriangleMesh m1 = transformed(body, at_to);
-  const int nv = static_cast<int>(body.V.rows());
+SweptBody make_swept_body(const TriangleMesh& body) {
   const int nf = static_cast<int>(body.F.rows());
-
-  // front faces (normal . d > 0) go to the later pose
-  std::vector<char> front(nf);
+  SweptBody swept;
   std::unordered_map<std::uint64_t, int> face_of_edge;
-  face_of_edge.reserve(3 * nf);
+  face_of_edge.reserve(3 * static_cast<std::size_t>(nf));
+  swept.face_normal.reserve(static_cast<std::size_t>(nf));
   for (int f = 0; f < nf; ++f) {
-    const Eigen::Vector3d a = m1.V.row(body.F(f, 0)), b = m1.V.row(body.F(f, 1)), c = m1.V.row(body.F(f, 2));
-    front[f] = (b - a).cross(c - a).dot(d) > 0.0;
+    const Eigen::Vector3d a = body.V.row(body.F(f, 0)), b = body.V.row(body.F(f, 1)), c = body.V.row(body.F(f, 2));
+    swept.face_normal.push_back((b - a).cross(c - a));
     for (int k = 0; k < 3; ++k) face_of_edge[edge_key(body.F(f, k), body.F(f, (k + 1) % 3))] = f;
   }
+  swept.twin_face.assign(3 * static_cast<std::size_t>(nf), -1);
+  for (int f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const auto twin = face_of_edge.find(edge_key(body.F(f, (k + 1) % 3), body.F(f, k)));
+      if (twin != face_of_edge.end()) swept.twin_face[3 * static_cast<std::size_t>(f) + k] = twin->second;
+    }
+  }
+  return swept;
+}
 
-  std::vector<Eigen::Vector3i> faces;
-  faces.reserve(2 * nf);
+TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const Pose& from, const Pose& to) {
+  const int nv = static_cast<int>(body.V.rows());
+  const int nf = static_cast<int>(body.F.rows());
+  REPOSE_DEMAND(swept.face_normal.size() == static_cast<std::size_t>(nf));
+  const Eigen::Vector3d d = to.position_m - from.position_m;
+  if (d.squaredNorm() == 0.0) return transformed(body, to);
+
+  // front faces (normal . d > 0) go to the later pose; the test is made in
+  // body coordinates, where the normals are fixed
+  const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
+  std::vector<char> front(static_cast<std::size_t>(nf));
+  for (int f = 0; f < nf; ++f) front[f] = swept.face_normal[f].dot(d_body) > 0.0;
+
+  // faces, then per silhouette or open edge a quad: at most 2 * 3 per face,
+  // counted first so the face array is filled once
+  int quads = 0;
+  for (int f = 0; f < nf; ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const int twin = swept.twin_face[3 * static_cast<std::size_t>(f) + k];
+      quads += twin < 0 || (front[f] && !front[twin]);
+    }
+  }
+  TriangleMesh out;
+  out.V.resize(2 * nv, 3);
+  out.V.bottomRows(nv) = transformed(body, to).V;
+  out.V.topRows(nv) = out.V.bottomRows(nv).rowwise() - d.transpose();
+  out.F.resize(nf + 2 * quads, 3);
+  Eigen::Index row = 0;
+  auto add = [&](int a, int b, int c) { out.F.row(row++) << a, b, c; };
   for (int f = 0; f < nf; ++f) {
     const int offset = front[f] ? nv : 0;
-    faces.emplace_back(body.F(f, 0) + offset, body.F(f, 1) + offset, body.F(f, 2) + offset);
+    add(body.F(f, 0) + offset, body.F(f, 1) + offset, body.F(f, 2) + offset);
   }
   // silhouette and open edges: a quad joining the edge at both poses, wound
   // so that it uses each of its edges opposite to its neighbours
   for (int f = 0; f < nf; ++f) {
     for (int k = 0; k < 3; ++k) {
+      const int twin = swept.twin_face[3 * static_cast<std::size_t>(f) + k];
+      const bool open = twin < 0;
+      if (!open && !(front[f] && !front[twin])) continue;  // each silhouette edge once, from its front face
       const int a = body.F(f, k), b = body.F(f, (k + 1) % 3);
-      const auto twin = face_of_edge.find(edge_key(b, a));
-      const bool open = twin == face_of_edge.end();
-      if (!open && !(front[f] && !front[twin->second])) continue;  // each silhouette edge once, from its front face
       if (open && !front[f]) {
         // open edge of a back face, which uses a0 -> b0: the quad uses b0 -> a0
-        faces.emplace_back(b, a, a + nv);
-        faces.emplace_back(b, a + nv, b + nv);
+        add(b, a, a + nv);
+        add(b, a + nv, b + nv);
         continue;
       }
       // front face uses a1 -> b1, so the quad uses b1 -> a1 and a0 -> b0
-      faces.emplace_back(b + nv, a + nv, a);
-      faces.emplace_back(b + nv, a, b);
+      add(b + nv, a + nv, a);
+      add(b + nv, a, b);
     }
   }
-
-  TriangleMesh out;
-  out.V.resize(2 * nv, 3);
-  out.V.topRows(nv) = m0.V;
-  out.V.bottomRows(nv) = m1.V;
-  out.F.resize(static_cast<Eigen::Index>(faces.size()), 3);
-  for (std::size_t k = 0; k < faces.size(); ++k) out.F.row(static_cast<Eigen::Index>(k)) = faces[k].transpose();
+  REPOSE_DEMAND(row == out.F.rows());
   return out;
+}
+
+TriangleMesh swept_mesh(const TriangleMesh& body, const Pose& from, const Pose& to) {
+  return swept_mesh(body, make_swept_body(body), from, to);
 }
 
 }  // namespace repose

@@ -9,13 +9,33 @@
 //
 // Only translation is swept: both poses use `to.orientation`; rotating
 // objects are substepped by angle instead (ground_step.h).
+//
+// The mesh is built every step, so what depends on the body alone (which
+// face shares each edge, the faces' normals) is computed once per body
+// (SweptBody, kept in GroundModel) and a step only classifies faces and
+// copies vertices.
+
+#include <vector>
 
 #include "models/core/triangle_mesh.h"
 
 namespace repose {
 
-// body: in body coordinates. Returns world coordinates. When the two
-// positions coincide, the body placed at `to`.
+// What the swept mesh needs of a body, computed once.
+struct SweptBody {
+  // For face f and its edge k (F(f, k) -> F(f, (k + 1) % 3)): the face using
+  // that edge reversed, or -1 for an open edge. 3 * face count entries.
+  std::vector<int> twin_face;
+  // Unnormalised outward normal of each face, in body coordinates.
+  std::vector<Eigen::Vector3d> face_normal;
+};
+
+SweptBody make_swept_body(const TriangleMesh& body);
+
+// body: in body coordinates; swept: make_swept_body(body). Returns world
+// coordinates. When the two positions coincide, the body placed at `to`.
+TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const Pose& from, const Pose& to);
+// The same, computing make_swept_body(body) first.
 TriangleMesh swept_mesh(const TriangleMesh& body, const Pose& from, const Pose& to);
 
 }  // namespace repose

@@ -43,13 +43,15 @@ std::string read_all(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// Big enough that writing the run folder takes a while (a 4096 x 2048 noise
-// field: 64 MB of .npy plus its picture), small enough for a test.
+// Big enough that writing the run folder takes a moment (a 1024 x 512 noise
+// field, its .npy and its picture), small enough for a test: the run is
+// killed as soon as its temporary folder holds a file. The `initial` solver:
+// what is under test is the run folder, not a model.
 const char* const kSlowScene = R"(name: interrupted
 seed: 3
 time: {step_s: 0.1, duration_s: 0.1}
 ground:
-  extent_m: [4.096, 2.048]
+  extent_m: [1.024, 0.512]
   cell_size_m: 0.001
   initial_height: {kind: noise, mean_m: 0.05, amplitude_m: 0.01, correlation_m: 0.004}
 )";
@@ -112,8 +114,8 @@ void expect_complete_run_folder(const fs::path& out) {
   ASSERT_TRUE(fs::is_directory(out));
   EXPECT_TRUE(fs::exists(out / "manifest.json"));
   const ArrayXXdR h = read_npy_2d((out / "height_initial.npy").string());
-  EXPECT_EQ(h.rows(), 2048);
-  EXPECT_EQ(h.cols(), 4096);
+  EXPECT_EQ(h.rows(), 512);
+  EXPECT_EQ(h.cols(), 1024);
   EXPECT_TRUE(h.allFinite());
 }
 
@@ -121,13 +123,13 @@ TEST(InterruptedRun, KilledRunLeavesNoFolderAndALaterRunSucceeds) {
   TempDir cwd;
   std::ofstream(cwd.path / "scene.yaml") << kSlowScene;
   const fs::path out = cwd.path / "out";
-  ASSERT_TRUE(kill_run_midway({"run", "scene.yaml", "--out", "out"}, cwd.path, out))
+  ASSERT_TRUE(kill_run_midway({"run", "scene.yaml", "--out", "out", "--solver", "initial"}, cwd.path, out))
       << "the run finished before it could be interrupted: make kSlowScene bigger";
   EXPECT_FALSE(fs::exists(out)) << "a killed run left a target folder";
   ASSERT_EQ(temporaries_of(out).size(), 1u) << "the killed run's temporary should still be there (SIGKILL)";
   const fs::path leftover = temporaries_of(out).front();
 
-  EXPECT_EQ(wait_exit_code(start_repose({"run", "scene.yaml", "--out", "out"}, cwd.path)), 0);
+  EXPECT_EQ(wait_exit_code(start_repose({"run", "scene.yaml", "--out", "out", "--solver", "initial"}, cwd.path)), 0);
   expect_complete_run_folder(out);
   EXPECT_FALSE(fs::exists(leftover)) << "the later run did not clean up the killed run's temporary";
   EXPECT_TRUE(temporaries_of(out).empty());
@@ -137,16 +139,16 @@ TEST(InterruptedRun, KilledReplacementKeepsTheOldResult) {
   TempDir cwd;
   std::ofstream(cwd.path / "scene.yaml") << kSlowScene;
   const fs::path out = cwd.path / "out";
-  ASSERT_EQ(wait_exit_code(start_repose({"run", "scene.yaml", "--out", "out"}, cwd.path)), 0);
+  ASSERT_EQ(wait_exit_code(start_repose({"run", "scene.yaml", "--out", "out", "--solver", "initial"}, cwd.path)), 0);
   const std::string old_manifest = read_all(out / "manifest.json");
   ASSERT_FALSE(old_manifest.empty());
 
-  ASSERT_TRUE(kill_run_midway({"run", "scene.yaml", "--out", "out", "--force"}, cwd.path, out))
+  ASSERT_TRUE(kill_run_midway({"run", "scene.yaml", "--out", "out", "--solver", "initial", "--force"}, cwd.path, out))
       << "the run finished before it could be interrupted: make kSlowScene bigger";
   EXPECT_EQ(read_all(out / "manifest.json"), old_manifest) << "the old result was changed by a killed run";
   expect_complete_run_folder(out);
 
-  EXPECT_EQ(wait_exit_code(start_repose({"run", "scene.yaml", "--out", "out", "--force"}, cwd.path)), 0);
+  EXPECT_EQ(wait_exit_code(start_repose({"run", "scene.yaml", "--out", "out", "--solver", "initial", "--force"}, cwd.path)), 0);
   expect_complete_run_folder(out);
   EXPECT_TRUE(temporaries_of(out).empty());
 }

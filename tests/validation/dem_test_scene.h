@@ -38,3 +38,33 @@ inline Scene small_dem_scene(bool with_indenter) {
 }
 
 }  // namespace repose::testing
+
+namespace repose::testing {
+
+// A column of grains (dem.initial: column) for the column tests: a slot
+// 12 mm wide (the grid's y extent) with a column 16 mm long against x = 0, or
+// a cylinder of radius 12 mm on the centre of a 12 cm x 12 cm floor; grains
+// of radius 2 mm, height `height_m`, on a rough floor.
+inline Scene column_dem_scene(DemSpec::ColumnShape shape, double height_m) {
+  Scene s;
+  s.name = "column_dem";
+  s.source_path = "column_dem.yaml";
+  s.seed = 9;
+  const bool slot = shape == DemSpec::ColumnShape::kSlot;
+  s.ground.grid = slot ? Grid{40, 3, 0.004, 0.0, 0.0} : Grid{30, 30, 0.004, 0.0, 0.0};
+  s.time.duration_s = 0.3;
+  DemSpec dem;
+  dem.grain_radius_m = 0.002;
+  dem.radius_spread = 0.1;
+  dem.time_step_s = 2.0e-5;
+  dem.dump_interval_s = 0.05;
+  dem.initial = DemSpec::Initial::kColumn;
+  dem.column_shape = shape;
+  dem.column_width_m = slot ? 0.016 : 0.012;
+  dem.column_height_m = height_m;
+  dem.floor = DemSpec::Floor::kRough;
+  s.dem = dem;
+  return s;
+}
+
+}  // namespace repose::testing

@@ -263,7 +263,7 @@ TEST_F(NpyIo, BadMagicIsAnInputError) {
 TEST_F(NpyIo, EmptyAndMissingFilesAreInputErrors) {
   write_bytes(path("empty.npy"), "");
   expect_input_error(path("empty.npy"), "truncated");
-  expect_input_error(path("missing.npy"), "cannot open");
+  expect_input_error(path("missing.npy"), "no such file");
 }
 
 TEST_F(NpyIo, TruncatedHeaderIsAnInputError) {

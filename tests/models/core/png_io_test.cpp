@@ -165,7 +165,7 @@ TEST_F(PngIo, CorruptDataIsAnInputError) {
 TEST_F(PngIo, NotAPngOrMissingIsAnInputError) {
   write_bytes(path("text.png"), "hello, this is not an image");
   expect_input_error(path("text.png"), "not a PNG file");
-  expect_input_error(path("missing.png"), "cannot open");
+  expect_input_error(path("missing.png"), "no such file");
 }
 
 TEST_F(PngIo, RgbRoundTripIsExact) {

@@ -57,3 +57,28 @@ TEST(SweptMesh, NoMotionIsTheBodyInPlace) {
 
 }  // namespace
 }  // namespace repose
+
+namespace repose {
+namespace {
+
+// make_swept_body: a closed body has a twin for every edge, and the twin's
+// twin is the face itself; a body with a hole has open edges.
+TEST(SweptBody, EdgeTwinsOfClosedAndOpenBodies) {
+  const TriangleMesh ball = make_sphere(0.1, 12);
+  const SweptBody swept = make_swept_body(ball);
+  ASSERT_EQ(swept.twin_face.size(), 3 * static_cast<std::size_t>(ball.F.rows()));
+  for (std::size_t e = 0; e < swept.twin_face.size(); ++e) {
+    const int twin = swept.twin_face[e];
+    ASSERT_GE(twin, 0) << e;
+    bool back = false;
+    for (int k = 0; k < 3; ++k) back |= swept.twin_face[3 * static_cast<std::size_t>(twin) + k] == static_cast<int>(e / 3);
+    EXPECT_TRUE(back) << e;
+  }
+  TriangleMesh open = ball;
+  open.F.conservativeResize(open.F.rows() - 1, 3);
+  const SweptBody open_swept = make_swept_body(open);
+  EXPECT_EQ(std::count(open_swept.twin_face.begin(), open_swept.twin_face.end(), -1), 3);
+}
+
+}  // namespace
+}  // namespace repose

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Regenerates the canonical LIGGGHTS reference runs in data/ (see
+# data/README.md): each scene below is run with
+#   repose run SCENE --solver liggghts --out RUNS/NAME
+# one after the other (LIGGGHTS is serial and niced by the runner), and only
+# the small files (manifests, observables as .npy/.csv, the input script and
+# the log) are copied into data/NAME/; dumps, restart files and meshes stay
+# in RUNS. Settled beds are cached (REPOSE_CACHE, default REPO/cache), so a
+# second call only re-runs the scenes.
+#
+# usage: scripts/make-canonical-data.sh [NAME ...]     (default: every canonical run)
+# environment: REPOSE  the repose program (default: REPO/build-dem/bin/repose,
+#                      else REPO/build/bin/repose)
+#              RUNS    where full run folders go (default: REPO/runs/canonical)
+set -euo pipefail
+
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+runs="${RUNS:-$repo/runs/canonical}"
+repose="${REPOSE:-}"
+if [[ -z "$repose" ]]; then
+  for candidate in "$repo/build-dem/bin/repose" "$repo/build/bin/repose"; do
+    if [[ -x "$candidate" ]]; then repose="$candidate"; break; fi
+  done
+fi
+if [[ -z "$repose" || ! -x "$repose" ]]; then
+  echo "make-canonical-data: no repose program; build it (cmake --build BUILD --target repose) or set REPOSE" >&2
+  exit 2
+fi
+
+# name -> scene (relative to the repository)
+declare -A scenes=(
+  [dem_indent]=experiments/scenes/dem_indent.yaml
+  [dem_indent_r3mm]=experiments/scenes/dem_indent_r3mm.yaml
+  [dem_drag]=experiments/scenes/dem_drag.yaml
+  [dem_drag_box]=experiments/scenes/dem_drag_box.yaml
+  [dem_pile]=experiments/scenes/dem_pile.yaml
+)
+order=(dem_indent dem_indent_r3mm dem_drag dem_drag_box dem_pile)
+if [[ $# -gt 0 ]]; then order=("$@"); fi
+
+# the files kept in data/NAME (the rest of the run folder is large or regenerable)
+keep=(manifest.json liggghts_manifest.json bed_manifest.json run.in log.liggghts)
+
+for name in "${order[@]}"; do
+  scene="${scenes[$name]:-}"
+  if [[ -z "$scene" ]]; then
+    echo "make-canonical-data: unknown run '$name' (known: ${!scenes[*]})" >&2
+    exit 2
+  fi
+  echo "== $name: $scene"
+  mkdir -p "$runs"
+  "$repose" run "$repo/$scene" --solver liggghts --out "$runs/$name" --force
+  target="$repo/data/$name"
+  rm -rf "$target.tmp"
+  mkdir -p "$target.tmp"
+  for f in "${keep[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done
+  cp "$runs/$name"/*.npy "$runs/$name"/*.csv "$target.tmp/"
+  rm -rf "$target"
+  mv "$target.tmp" "$target"
+  du -sh "$target"
+done
+du -sh "$repo/data"

@@ -1,0 +1,13 @@
+// libFuzzer target: read_npy_2d on arbitrary .npy bytes.
+#include "models/core/npy_io.h"
+#include "models/core/error.h"
+#include "tests/fuzz/fuzz_input_file.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string& path = repose::fuzz::write_input(data, size, ".npy");
+  try {
+    (void)repose::read_npy_2d(path);
+  } catch (const repose::InputError&) {
+  }
+  return 0;
+}
