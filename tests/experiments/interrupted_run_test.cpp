@@ -19,29 +19,20 @@
 #include <vector>
 
 #include "models/core/npy_io.h"
+#include "tests/support/run_repose.h"
 
 namespace repose {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "repose_interrupt_XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-    path = pattern;
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-};
+using test_support::read_all;
+using test_support::start_repose;
+using test_support::wait_exit_code;
 
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+struct TempDir : test_support::TempDir {
+  TempDir() : test_support::TempDir("repose_interrupt") {}
+};
 
 // Big enough that writing the run folder takes a moment (a 1024 x 512 noise
 // field, its .npy and its picture), small enough for a test: the run is
@@ -56,32 +47,12 @@ ground:
   initial_height: {kind: noise, mean_m: 0.05, amplitude_m: 0.01, correlation_m: 0.004}
 )";
 
-pid_t start_repose(const std::vector<std::string>& args, const fs::path& cwd) {
-  const pid_t child = ::fork();
-  if (child < 0) throw std::runtime_error("fork failed");
-  if (child == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    if (null < 0 || ::dup2(null, 1) < 0 || ::dup2(null, 2) < 0 || ::chdir(cwd.c_str()) != 0) ::_exit(126);
-    std::vector<char*> argv;
-    argv.push_back(const_cast<char*>(REPOSE_BINARY));
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(REPOSE_BINARY, argv.data());
-    ::_exit(127);
-  }
-  return child;
-}
-
-int wait_exit_code(pid_t child) {
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 // The hidden temporaries next to `target` (.NAME.tmp-PID-XXXXXX).
 std::vector<fs::path> temporaries_of(const fs::path& target) {
   std::vector<fs::path> found;
-  const std::string prefix = "." + target.filename().string() + ".tmp-";
+  std::string prefix = ".";  // built in steps: GCC 12 warns falsely (-Wrestrict) on a + b + c here
+  prefix += target.filename().string();
+  prefix += ".tmp-";
   for (const auto& e : fs::directory_iterator(target.parent_path())) {
     if (e.path().filename().string().starts_with(prefix)) found.push_back(e.path());
   }

@@ -13,26 +13,18 @@
 #include <vector>
 
 #include "models/core/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string pattern = (fs::temp_directory_path() / "repose_outdir_XXXXXX").string();
-    if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-    path = pattern;
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
+using test_support::read_all;
 
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+struct TempDir : test_support::TempDir {
+  TempDir() : test_support::TempDir("repose_outdir") {}
+};
 
 std::vector<std::string> names_in(const fs::path& dir) {
   std::vector<std::string> names;
