@@ -89,6 +89,7 @@ void write_manifest(const fs::path& path, const LiggghtsReferenceResult& r, cons
   json.key("youngs_modulus_note").string("softened, as DEM practice does, to allow a practical time step");
   json.key("rayleigh_time_s").number(rayleigh_time_s(*scene.dem));
   write_column_results(json, r);
+  write_mass_held_results(json, r);
   json.key("bed").begin_object();
   json.key("cache_key").string(r.bed.key);
   json.key("directory").string(r.bed.directory);
@@ -129,6 +130,13 @@ void write_column_results(JsonWriter& json, const LiggghtsReferenceResult& r) {
     json.key("azimuth_count").integer(static_cast<long>(r.pile->angle_rad.size()));
     json.end_object();
   }
+}
+
+void write_mass_held_results(JsonWriter& json, const LiggghtsReferenceResult& r) {
+  if (r.mass_held_kg.empty()) return;
+  json.key("mass_held_kg").begin_object();
+  for (const auto& [name, kg] : r.mass_held_kg) json.key(name).number(kg);
+  json.end_object();
 }
 
 LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::string& run_dir,
@@ -181,6 +189,12 @@ LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::st
   write_forces_csv(dir / "forces.csv", read_thermo_table((dir / "log.liggghts").string()), script,
                    scene.dem->time_step_s);
   if (scene.dem->initial == DemSpec::Initial::kColumn) measure_column(r, scene, dumps, options, dir);
+  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    const ObjectSpec& o = scene.objects[k];
+    const TriangleMesh world = transformed(o.body, o.pose_at(scene.time.duration_s));
+    r.mass_held_kg.emplace_back(o.name.empty() ? fmt::format("object_{}", k) : o.name,
+                                mass_held_by_object_kg(last.grains, world, scene.dem->density_kg_m3));
+  }
   write_manifest(dir / "liggghts_manifest.json", r, scene);
   return r;
 }

@@ -11,6 +11,7 @@
 //        liggghts_manifest.json      LIGGGHTS version, script sha256, grain count,
 //                                    steps, particle-steps per second, wall and CPU times
 //        bed_manifest.json           the settled bed's manifest (its cost)
+//   the manifest also holds mass_held_kg: the mass of grains each object holds at the end
 //   and for a scene that starts from a column (dem.initial: column):
 //        runout.csv                  time_s, front_m: the deposit front over the dumps
 //        pile_flank_angles.csv       cylinder columns: the final pile's flank angle per azimuth (degrees)
@@ -19,6 +20,8 @@
 
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "models/core/height_field.h"
 #include "models/core/json_writer.h"
@@ -52,15 +55,22 @@ struct LiggghtsReferenceResult {
   HeightField height_final;      // surface after the run
   std::optional<ColumnCollapse> column;  // a column scene: its runout
   std::optional<FlankAngles> pile;       // a cylinder column: the final pile's flank angles
+  // Per object (scene order): its name and the mass (kg) of the grains it
+  // holds at the end of the run (mass_held_by_object_kg, observables.h), the
+  // object at ObjectSpec::pose_at(scene duration), grains of the scene's density.
+  std::vector<std::pair<std::string, double>> mass_held_kg;
 };
 
 // Throws InputError for a scene that cannot run (no dem section, a time step
-// too large, rotating objects) and LiggghtsRunError when a run fails.
+// too large) and LiggghtsRunError when a run fails.
 LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::string& run_dir,
                                                const LiggghtsReferenceOptions& options = {});
 
 // The column and pile results (when present) as members "column" and "pile"
 // of the JSON object being written (degrees for angles, as in files).
 void write_column_results(JsonWriter& json, const LiggghtsReferenceResult& r);
+// The mass held by each object as a member "mass_held_kg": {"<object name>": kg, ...}
+// (left out for a scene without objects), so a measure reads mass_held_kg.<object name>.
+void write_mass_held_results(JsonWriter& json, const LiggghtsReferenceResult& r);
 
 }  // namespace repose

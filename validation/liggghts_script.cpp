@@ -183,15 +183,31 @@ Eigen::Vector3d position_at(const ObjectSpec& object, double t) {
   return k.back().pose.position_m;
 }
 
-void require_translation_only(const ObjectSpec& object, const Scene& scene) {
+// Does any keyframe turn the object away from its first orientation?
+bool rotates(const ObjectSpec& object) {
   const Eigen::Quaterniond q0 = object.keyframes.front().pose.orientation.normalized();
   for (const Keyframe& k : object.keyframes) {
-    if (std::abs(std::abs(q0.dot(k.pose.orientation.normalized())) - 1.0) > 1e-12) {
-      throw InputError(fmt::format(
-          "{}: objects: {}: keyframe at t = {} s rotates the object; the LIGGGHTS run supports translation only",
-          scene.source_path, object.name, k.time_s));
-    }
+    if (std::abs(std::abs(q0.dot(k.pose.orientation.normalized())) - 1.0) > 1e-12) return true;
   }
+  return false;
+}
+
+// The constant-rate rotation carrying orientation a to b along the slerp
+// (the shortest way): angle in [0, pi] about a unit world axis; angle 0 when they agree.
+struct Turn {
+  double angle_rad = 0.0;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+};
+
+Turn turn_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+  Eigen::Quaterniond d = b.normalized() * a.normalized().conjugate();
+  if (d.w() < 0.0) d.coeffs() = -d.coeffs();
+  const double s = d.vec().norm();
+  Turn t;
+  if (s <= 1e-15) return t;
+  t.angle_rad = 2.0 * std::atan2(s, d.w());
+  t.axis = d.vec() / s;
+  return t;
 }
 
 // The times at which any object's velocity may change, within [0, duration].
@@ -433,7 +449,14 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
   double top = is_column(dem) ? 1.25 * dem.column_height_m : dem.bed_depth_m * 2.0;
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     const ObjectSpec& o = scene.objects[k];
-    require_translation_only(o, scene);
+    if (rotates(o)) {
+      // any orientation in between: the body's farthest vertex from its origin bounds its top
+      double reach = 0.0;
+      for (Eigen::Index v = 0; v < o.body.V.rows(); ++v) reach = std::max(reach, o.body.V.row(v).norm());
+      for (const Keyframe& key : o.keyframes) top = std::max(top, key.pose.position_m.z() + reach);
+      out.meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, o.pose_at(0.0))});
+      continue;
+    }
     const Aabb body = bounding_box(transformed(o.body, Pose{Eigen::Vector3d::Zero(), o.keyframes.front().pose.orientation}));
     for (const Keyframe& key : o.keyframes) top = std::max(top, key.pose.position_m.z() + body.max.z());
     Pose start = o.keyframes.front().pose;
@@ -475,7 +498,14 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
     << "/dump.*.txt id type x y z radius\n"
     << "dump_modify grains sort id\n\n";
 
-  // keyframed motion: one linear velocity per object and segment
+  // keyframed motion: per object and segment a linear velocity and, for a
+  // rotating object, a constant-rate rotation (the slerp between keyframes)
+  // about the body origin. LIGGGHTS superposes move/mesh fixes on one mesh,
+  // each later one in the frame carried by the earlier ones: linear first,
+  // then rotate with its origin at the body origin's segment-start position
+  // (so the centre of rotation travels with the object); superposed fixes
+  // must be unfixed in reverse order. Checked against a real run in
+  // tests/validation/rotating_mesh_test.cpp.
   const std::vector<double> times = segment_times(scene);
   for (std::size_t seg = 0; seg + 1 < times.size(); ++seg) {
     const long first = steps_for(times[seg], dem.time_step_s);
@@ -485,13 +515,29 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
     std::vector<std::string> fixes;
     s << "# segment " << seg << ": t = " << n(times[seg]) << " .. " << n(times[seg + 1]) << " s\n";
     for (std::size_t k = 0; k < scene.objects.size(); ++k) {
-      const Eigen::Vector3d v =
-          (position_at(scene.objects[k], times[seg + 1]) - position_at(scene.objects[k], times[seg])) / span_s;
-      if (v.isZero(0.0)) continue;
-      const std::string id = fmt::format("move{}_{}", k, seg);
-      s << "fix " << id << " all move/mesh mesh " << out.meshes[k].fix_id << " linear " << n(v.x()) << " "
-        << n(v.y()) << " " << n(v.z()) << "\n";
-      fixes.push_back(id);
+      const ObjectSpec& o = scene.objects[k];
+      const bool turning = rotates(o);
+      const Pose a = turning ? o.pose_at(times[seg]) : Pose{position_at(o, times[seg]), Eigen::Quaterniond::Identity()};
+      const Pose b =
+          turning ? o.pose_at(times[seg + 1]) : Pose{position_at(o, times[seg + 1]), Eigen::Quaterniond::Identity()};
+      const Eigen::Vector3d v = (b.position_m - a.position_m) / span_s;
+      std::vector<std::string> object_fixes;
+      if (!v.isZero(0.0)) {
+        const std::string id = fmt::format("move{}_{}", k, seg);
+        s << "fix " << id << " all move/mesh mesh " << out.meshes[k].fix_id << " linear " << n(v.x()) << " "
+          << n(v.y()) << " " << n(v.z()) << "\n";
+        object_fixes.push_back(id);
+      }
+      const Turn turn = turning ? turn_between(a.orientation, b.orientation) : Turn{};
+      if (turn.angle_rad > 0.0) {
+        const std::string id = fmt::format("turn{}_{}", k, seg);
+        const Eigen::Vector3d& p = a.position_m;
+        s << "fix " << id << " all move/mesh mesh " << out.meshes[k].fix_id << " rotate origin " << n(p.x()) << " "
+          << n(p.y()) << " " << n(p.z()) << " axis " << n(turn.axis.x()) << " " << n(turn.axis.y()) << " "
+          << n(turn.axis.z()) << " period " << n(2.0 * std::numbers::pi * span_s / turn.angle_rad) << "\n";
+        object_fixes.push_back(id);
+      }
+      fixes.insert(fixes.end(), object_fixes.rbegin(), object_fixes.rend());
     }
     s << "run " << (last - first) << "\n";
     for (const std::string& id : fixes) s << "unfix " << id << "\n";

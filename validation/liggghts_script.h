@@ -121,10 +121,12 @@ struct RunScript {
   long dump_interval_steps = 0;
 };
 
-// Requires scene.dem; objects may translate between keyframes (one
-// `fix move/mesh linear` per segment between consecutive keyframe times of
-// any object); a change of orientation between keyframes is refused with an
-// InputError (not supported yet). Reads kBedRestartFile from the run directory.
+// Requires scene.dem. Objects move as ObjectSpec::pose_at says, per segment
+// between consecutive keyframe times of any object: a `fix move/mesh linear`
+// (the body origin's velocity) and, where the orientation changes, a
+// `fix move/mesh rotate` superposed on it (constant rate about the slerp's
+// axis through the body origin), so the mesh ends each segment at the
+// keyframed pose. Reads kBedRestartFile from the run directory.
 RunScript run_script(const Scene& scene, const RunScriptOptions& options = {});
 
 // Round-trip exact, locale-independent number text ("%.17g" trimmed by std::to_chars).

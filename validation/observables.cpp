@@ -145,6 +145,60 @@ double mass_in_box_kg(const GrainSet& grains, const Aabb& box, double density_kg
   return v * density_kg_m3;
 }
 
+namespace {
+
+// Solid angle of triangle (a, b, c) seen from the origin (Van Oosterom & Strackee), signed.
+double solid_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const double la = a.norm(), lb = b.norm(), lc = c.norm();
+  const double numerator = a.dot(b.cross(c));
+  const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+  return 2.0 * std::atan2(numerator, denominator);
+}
+
+double winding_number(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
+  double w = 0.0;
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    w += solid_angle(mesh.V.row(mesh.F(f, 0)).transpose() - p, mesh.V.row(mesh.F(f, 1)).transpose() - p,
+                     mesh.V.row(mesh.F(f, 2)).transpose() - p);
+  }
+  return w / (4.0 * std::numbers::pi);
+}
+
+// Does the downward vertical ray from p meet an upward-facing face at or below p.z?
+bool above_upward_face(const TriangleMesh& mesh, const Eigen::Vector3d& p) {
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)).transpose();
+    const Eigen::Vector3d b = mesh.V.row(mesh.F(f, 1)).transpose();
+    const Eigen::Vector3d c = mesh.V.row(mesh.F(f, 2)).transpose();
+    const Eigen::Vector3d normal = (b - a).cross(c - a);  // outward, |normal| = 2 area
+    if (!(normal.z() > 0.0)) continue;
+    // barycentric coordinates of p's projection in the projected triangle (positive orientation: normal.z > 0)
+    const double wa = (b.x() - p.x()) * (c.y() - p.y()) - (c.x() - p.x()) * (b.y() - p.y());
+    const double wb = (c.x() - p.x()) * (a.y() - p.y()) - (a.x() - p.x()) * (c.y() - p.y());
+    const double wc = (a.x() - p.x()) * (b.y() - p.y()) - (b.x() - p.x()) * (a.y() - p.y());
+    if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
+    const double z = (wa * a.z() + wb * b.z() + wc * c.z()) / normal.z();
+    if (z <= p.z()) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+double mass_held_by_object_kg(const GrainSet& grains, const TriangleMesh& object_world, double density_kg_m3) {
+  if (object_world.empty()) return 0.0;
+  const Aabb box = bounding_box(object_world);
+  double v = 0.0;
+  for (Eigen::Index g = 0; g < grains.size(); ++g) {
+    const Eigen::Vector3d p = grains.position_m.row(g).transpose();
+    if (p.z() > box.max.z() || p.z() < box.min.z()) continue;  // neither inside nor below the rim and above a floor
+    const bool inside_xy = p.x() >= box.min.x() && p.x() <= box.max.x() && p.y() >= box.min.y() && p.y() <= box.max.y();
+    if (!inside_xy) continue;
+    if (above_upward_face(object_world, p) || winding_number(object_world, p) > 0.5) v += sphere_volume(grains.radius_m[g]);
+  }
+  return v * density_kg_m3;
+}
+
 double front_position_m(const GrainSet& grains, const Eigen::Vector3d& origin_m, const Eigen::Vector3d& direction,
                         double quantile) {
   if (grains.size() == 0) throw InputError("front position: no grains");

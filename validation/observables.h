@@ -1,8 +1,8 @@
 #pragma once
 // Observables of a granular state shared by the DEM references and the
 // heuristics, so the two can be compared cell by cell (SI units, radians):
-//   material per unit area on the grid, the mass of grains in a box, the
-//   runout front along a direction, the flank angles of a pile.
+//   material per unit area on the grid, the mass of grains in a box or held
+//   by an object, the runout front along a direction, the flank angles of a pile.
 // The surface height field itself is in surface_height.h.
 
 #include <string>
@@ -29,6 +29,24 @@ HeightField equivalent_height(const GrainSet& grains, const Grid& grid, double p
 double mass_in_box_kg(const GrainSet& grains, const Aabb& box, double density_kg_m3);
 // Total grain volume (m^3).
 double grain_volume_m3(const GrainSet& grains);
+
+// Mass (kg) of the grains held by an object, all of density density_kg_m3.
+// object_world is the object's triangle mesh in world coordinates (faces
+// counter-clockwise seen from outside; it may be a union of overlapping
+// closed parts, e.g. a bucket `merged` from a floor box and four wall boxes).
+// A grain is held when its centre c
+//   (a) lies inside the mesh: the generalised winding number of the mesh
+//       about c exceeds 1/2 (for overlapping closed parts it counts the
+//       parts holding c), or
+//   (b) lies in the object's open-top hull: c.z is at most the top of the
+//       mesh (its bounding box's max z) and the vertical ray from c
+//       downwards meets an upward-facing face (outward normal with z > 0)
+//       at or below c.z: the grain is above the object's floor and below its rim.
+// So grains inside a bucket are held, grains beside it, under it or above
+// its rim are not. Grains resting on a flat plate or on top of a closed body
+// lie above its top and are not held (the rule is for containers). Grains
+// are counted by centre; an empty mesh holds nothing.
+double mass_held_by_object_kg(const GrainSet& grains, const TriangleMesh& object_world, double density_kg_m3);
 
 // The runout front: the `quantile` (default 0.99) of the grains' distances
 // along `direction` (normalised here) from `origin_m`. Grains behind the

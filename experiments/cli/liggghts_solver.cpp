@@ -2,7 +2,8 @@
 // (validation/liggghts_reference.h). The settled bed's surface replaces the
 // scene's own initial height, so that a heuristic compared with this run
 // starts from the same ground. A column scene (dem.initial: column) adds
-// its runout and, for a cylinder, the pile's flank angles to the results.
+// its runout and, for a cylinder, the pile's flank angles to the results;
+// every object adds the mass of grains it holds at the end (mass_held_kg).
 #include "experiments/cli/render_height.h"
 #include "experiments/cli/solvers.h"
 #include "validation/liggghts_reference.h"
@@ -45,6 +46,7 @@ void run_liggghts_solver(RunContext& context) {
         .number(r.run.cpu_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.cpu_time_s
                                      : 0.0);
     write_column_results(json, r);
+    write_mass_held_results(json, r);  // mass_held_kg.<object name>
   });
 }
 

@@ -173,15 +173,50 @@ TEST(LiggghtsScript, RunScriptMovesObjectsThroughTheirKeyframes) {
   EXPECT_NEAR(z_after_runs[1], 0.023, 1e-12);
 }
 
-TEST(LiggghtsScript, RefusesRotatingObjects) {
+// A rotating object: per segment a linear fix, then a rotate fix about the
+// body origin whose angle over the segment is the slerp's; unfixed in reverse.
+TEST(LiggghtsScript, RunScriptRotatesObjectsBetweenKeyframes) {
   Scene scene = testing::small_dem_scene(true);
   scene.objects[0].keyframes[1].pose.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()));
-  try {
-    run_script(scene);
-    FAIL() << "a rotating object was accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("ball"), std::string::npos) << e.what();
+  const RunScript r = run_script(scene);
+  EXPECT_EQ(r.text, run_script(scene).text);
+  const std::regex rotate(
+      R"(fix turn0_(\d) all move/mesh mesh obj0 rotate origin (\S+) (\S+) (\S+) axis (\S+) (\S+) (\S+) period (\S+))");
+  std::vector<std::smatch> turns;
+  for (auto it = std::sregex_iterator(r.text.begin(), r.text.end(), rotate); it != std::sregex_iterator(); ++it) {
+    turns.push_back(*it);
   }
+  ASSERT_EQ(turns.size(), 2u);
+  const double span_s = 10000 * scene.dem->time_step_s;  // each segment: 0.1 s
+  for (std::size_t k = 0; k < 2; ++k) {
+    const std::smatch& m = turns[k];
+    // about x through the body origin at the segment's start (the top keyframe, then the bottom one)
+    EXPECT_NEAR(std::stod(m[2]), 0.02, 1e-12);
+    EXPECT_NEAR(std::stod(m[3]), 0.02, 1e-12);
+    EXPECT_NEAR(std::stod(m[4]), k == 0 ? 0.023 : 0.014, 1e-12);
+    const Eigen::Vector3d axis(std::stod(m[5]), std::stod(m[6]), std::stod(m[7]));
+    EXPECT_NEAR(axis.dot(Eigen::Vector3d::UnitX()), k == 0 ? 1.0 : -1.0, 1e-12);  // there and back
+    EXPECT_NEAR(2 * std::numbers::pi * span_s / std::stod(m[8]), 0.3, 1e-12);
+  }
+  // linear before rotate on the same mesh, unfixed in reverse order of creation
+  const std::size_t linear = r.text.find("fix move0_0 all move/mesh mesh obj0 linear");
+  const std::size_t turn = r.text.find("fix turn0_0 ");
+  ASSERT_NE(linear, std::string::npos);
+  ASSERT_NE(turn, std::string::npos);
+  EXPECT_LT(linear, turn);
+  EXPECT_NE(r.text.find("unfix turn0_0\nunfix move0_0\n"), std::string::npos);
+  // the top of the box holds the body in any orientation
+  EXPECT_GT(r.domain.z_max_m, 0.023 + 0.008);
+  // an object that only turns gets no linear fix
+  Scene spin = testing::small_dem_scene(true);
+  for (Keyframe& k : spin.objects[0].keyframes) k.pose.position_m = Eigen::Vector3d(0.02, 0.02, 0.03);
+  spin.objects[0].keyframes[2].pose.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()));
+  const RunScript only_turn = run_script(spin);
+  EXPECT_EQ(only_turn.text.find(" linear "), std::string::npos);
+  EXPECT_EQ(only_turn.text.find("fix turn0_0"), std::string::npos);  // first segment: no change
+  EXPECT_NE(only_turn.text.find("fix turn0_1 all move/mesh mesh obj0 rotate origin 0.02 0.02 0.03 axis 0 0 1 period"),
+            std::string::npos)
+      << only_turn.text;
 }
 
 }  // namespace

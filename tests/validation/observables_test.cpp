@@ -49,6 +49,71 @@ TEST(Observables, MassInBoxCountsGrainsByCentre) {
   EXPECT_NEAR(mass_in_box_kg(g, box, 2500.0), 2 * one, 1e-15);
 }
 
+// A bucket 0.1 m wide inside, 0.1 m tall: a floor box and four wall boxes, merged (overlapping at the corners).
+TriangleMesh bucket() {
+  const auto box = [](const Eigen::Vector3d& half, const Eigen::Vector3d& centre) {
+    return transformed(make_box(half), Pose{centre, Eigen::Quaterniond::Identity()});
+  };
+  TriangleMesh m = box({0.06, 0.06, 0.005}, {0, 0, 0.005});   // floor: z 0 .. 0.01
+  m = merged(m, box({0.005, 0.06, 0.05}, {0.055, 0, 0.05}));   // walls: z 0 .. 0.1
+  m = merged(m, box({0.005, 0.06, 0.05}, {-0.055, 0, 0.05}));
+  m = merged(m, box({0.06, 0.005, 0.05}, {0, 0.055, 0.05}));
+  m = merged(m, box({0.06, 0.005, 0.05}, {0, -0.055, 0.05}));
+  return m;
+}
+
+GrainSet grains_at(const std::vector<Eigen::Vector3d>& centres, double radius) {
+  GrainSet g;
+  g.position_m.resize(static_cast<Eigen::Index>(centres.size()), 3);
+  for (std::size_t k = 0; k < centres.size(); ++k) g.position_m.row(static_cast<Eigen::Index>(k)) = centres[k].transpose();
+  g.radius_m = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(centres.size()), radius);
+  return g;
+}
+
+TEST(Observables, MassHeldByABucketCountsGrainsInsideItBelowTheRim) {
+  const double r = 0.002, density = 2500.0;
+  const double one = density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  const Eigen::Vector3d offset(0.3, -0.2, 0.05);  // the bucket placed away from the origin
+  const TriangleMesh b = transformed(bucket(), Pose{offset, Eigen::Quaterniond::Identity()});
+  const auto held = [&](const Eigen::Vector3d& c) { return mass_held_by_object_kg(grains_at({offset + c}, r), b, density); };
+  // inside: resting on the floor, in a corner, just below the rim, inside a wall
+  for (const Eigen::Vector3d& c : {Eigen::Vector3d(0, 0, 0.012), Eigen::Vector3d(0.048, 0.048, 0.03),
+                                  Eigen::Vector3d(-0.02, 0.01, 0.099), Eigen::Vector3d(0.055, 0.0, 0.05),
+                                  Eigen::Vector3d(0.0, 0.0, 0.005)}) {
+    EXPECT_NEAR(held(c), one, 1e-12 * one) << c.transpose();
+  }
+  // not held: beside it, under it, above the rim (also right over a wall)
+  for (const Eigen::Vector3d& c : {Eigen::Vector3d(0.08, 0, 0.05), Eigen::Vector3d(0, -0.2, 0.02),
+                                  Eigen::Vector3d(0, 0, -0.01), Eigen::Vector3d(0, 0, 0.102),
+                                  Eigen::Vector3d(0.055, 0, 0.12), Eigen::Vector3d(0.0, 0.0, 0.5)}) {
+    EXPECT_EQ(held(c), 0.0) << c.transpose();
+  }
+  // many grains at once: two of the three are held
+  const GrainSet g = grains_at({offset + Eigen::Vector3d(0, 0, 0.05), offset + Eigen::Vector3d(0.2, 0, 0.05),
+                                offset + Eigen::Vector3d(0.01, 0.01, 0.02)},
+                               r);
+  EXPECT_NEAR(mass_held_by_object_kg(g, b, density), 2 * one, 1e-12 * one);
+  EXPECT_EQ(mass_held_by_object_kg(g, TriangleMesh{}, density), 0.0);
+}
+
+TEST(Observables, AnUpsideDownBucketAndAClosedBodyHoldOnlyWhatIsInside) {
+  const double r = 0.002, density = 1000.0;
+  const double one = density * 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  // upside down: the cavity opens downwards, so grains in it are not held
+  const TriangleMesh flipped =
+      transformed(bucket(), Pose{Eigen::Vector3d(0, 0, 0.1), Eigen::Quaterniond(Eigen::AngleAxisd(std::numbers::pi,
+                                                                                                 Eigen::Vector3d::UnitX()))});
+  EXPECT_EQ(mass_held_by_object_kg(grains_at({Eigen::Vector3d(0, 0, 0.05)}, r), flipped, density), 0.0);
+  EXPECT_NEAR(mass_held_by_object_kg(grains_at({Eigen::Vector3d(0.055, 0, 0.05)}, r), flipped, density), one,
+              1e-12 * one);  // inside a wall
+  // a sphere: inside held, on top (above its top) not
+  const TriangleMesh ball = make_sphere(0.05, 24);
+  EXPECT_NEAR(mass_held_by_object_kg(grains_at({Eigen::Vector3d(0.01, -0.02, 0.03)}, r), ball, density), one,
+              1e-12 * one);
+  EXPECT_EQ(mass_held_by_object_kg(grains_at({Eigen::Vector3d(0, 0, 0.052)}, r), ball, density), 0.0);
+  EXPECT_EQ(mass_held_by_object_kg(grains_at({Eigen::Vector3d(0.06, 0, 0)}, r), ball, density), 0.0);
+}
+
 TEST(Observables, FrontPositionIsTheQuantileAlongTheDirection) {
   GrainSet g;
   const int n = 101;
