@@ -47,7 +47,8 @@ std::vector<bool> determined_columns(const Eigen::MatrixXd& scaled, const std::v
     if (cols.empty()) return keep;
     Eigen::MatrixXd sub(scaled.rows(), static_cast<Eigen::Index>(cols.size()));
     for (std::size_t k = 0; k < cols.size(); ++k) sub.col(static_cast<Eigen::Index>(k)) = scaled.col(cols[k]);
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(sub, Eigen::ComputeThinV);
+    // full V: with fewer residuals than parameters the null-space directions are not in the thin V
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(sub, Eigen::ComputeFullV);
     const Eigen::VectorXd& s = svd.singularValues();
     const double largest = s.size() > 0 ? s(0) : 0.0;
     const Eigen::Index last = static_cast<Eigen::Index>(cols.size()) - 1;
