@@ -29,6 +29,19 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+void write_build_json(JsonWriter& json, const BuildInfo& build) {
+  json.begin_object();
+  json.key("repose_version").string(REPOSE_VERSION);
+  json.key("git_commit").string(build.git_commit);
+  json.key("git_dirty").boolean(build.git_dirty);
+  json.key("compiler").string(build.compiler);
+  json.key("build_type").string(build.build_type);
+  json.key("libraries").begin_object();
+  for (const auto& library : build.libraries) json.key(library.name).string(library.version);
+  json.end_object();
+  json.end_object();
+}
+
 Manifest::Manifest(int argc, char** argv) : Manifest(std::vector<std::string>(argv, argv + argc)) {}
 
 Manifest::Manifest(std::vector<std::string> command_line)
@@ -82,16 +95,8 @@ void Manifest::write(const std::string& path) const {
   json.key("resolved_yaml").string(scene_yaml_);
   json.end_object();
 
-  json.key("build").begin_object();
-  json.key("repose_version").string(REPOSE_VERSION);
-  json.key("git_commit").string(build_.git_commit);
-  json.key("git_dirty").boolean(build_.git_dirty);
-  json.key("compiler").string(build_.compiler);
-  json.key("build_type").string(build_.build_type);
-  json.key("libraries").begin_object();
-  for (const auto& library : build_.libraries) json.key(library.name).string(library.version);
-  json.end_object();
-  json.end_object();
+  json.key("build");
+  write_build_json(json, build_);
 
   json.key("stages").begin_array();
   for (const auto& stage : stages_) {

@@ -18,6 +18,9 @@ struct StageTime {
   double wall_s = 0.0;
 };
 
+// The build as a JSON object: repose version, git commit, compiler, library versions.
+void write_build_json(JsonWriter& json, const BuildInfo& build);
+
 class Manifest {
  public:
   // Records the start time (UTC) and the command line.

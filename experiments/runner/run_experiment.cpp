@@ -201,16 +201,8 @@ void write_experiment_manifest(const std::string& path, const Experiment& experi
   json.key("repeat").integer(experiment.repeat);
   json.key("resolved_yaml").string(experiment_to_yaml(experiment));
   json.end_object();
-  json.key("build").begin_object();
-  json.key("repose_version").string(REPOSE_VERSION);
-  json.key("git_commit").string(build.git_commit);
-  json.key("git_dirty").boolean(build.git_dirty);
-  json.key("compiler").string(build.compiler);
-  json.key("build_type").string(build.build_type);
-  json.key("libraries").begin_object();
-  for (const auto& library : build.libraries) json.key(library.name).string(library.version);
-  json.end_object();
-  json.end_object();
+  json.key("build");
+  cli::write_build_json(json, build);
   json.key("runs").begin_array();
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const ExperimentRun& run = experiment.runs[k];
