@@ -2,6 +2,7 @@
 // A fresh folder under the system temp directory, removed (with whatever a
 // test left in it, even without write permission) when it goes out of scope.
 
+#include <gtest/gtest.h>
 #include <stdlib.h>
 
 #include <filesystem>
@@ -32,5 +33,17 @@ inline std::string read_all(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
+
+inline void write_all(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+// A GoogleTest fixture with a fresh folder per test: path("x.npy") names a file in it.
+class TempDirTest : public ::testing::Test {
+ protected:
+  std::string path(const std::string& name) const { return (dir_.path / name).string(); }
+  TempDir dir_;
+};
 
 }  // namespace repose::test_support

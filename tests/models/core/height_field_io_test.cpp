@@ -19,28 +19,17 @@
 #include "models/core/error.h"
 #include "models/core/npy_io.h"
 
+#include "tests/support/temp_dir.h"
+
 namespace repose {
 namespace {
 
 namespace fs = std::filesystem;
 
-class HeightFieldIo : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("repose_hfio_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+class HeightFieldIo : public test_support::TempDirTest {};
 
-  fs::path dir_;
-};
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
+using test_support::read_all;
+using test_support::write_all;
 
 // A wavy field with negative heights, on a grid not at the origin.
 HeightField wavy_field(int nx, int ny) {
@@ -60,7 +49,7 @@ struct Mesh {
 
 Mesh parse_obj(const std::string& path) {
   Mesh m;
-  std::istringstream in(read_bytes(path));
+  std::istringstream in(read_all(path));
   std::string line;
   while (std::getline(in, line)) {
     std::istringstream ls(line);
@@ -85,7 +74,7 @@ Mesh parse_obj(const std::string& path) {
 }
 
 Mesh parse_ply(const std::string& path) {
-  const std::string bytes = read_bytes(path);
+  const std::string bytes = read_all(path);
   const std::size_t end = bytes.find("end_header\n");
   EXPECT_NE(end, std::string::npos);
   std::istringstream header(bytes.substr(0, end));
@@ -302,7 +291,7 @@ TEST_F(HeightFieldIo, VtiIsAnImageWithOriginAtTheFirstCellCentre) {
   for (int j = 0; j < 5; ++j)
     for (int i = 0; i < 7; ++i) material(j, i) = i < 3 ? 0 : 2;
   write_height_field_vti(path("h.vti"), f, {{"material_id", material}});
-  const std::string xml = read_bytes(path("h.vti"));
+  const std::string xml = read_all(path("h.vti"));
   EXPECT_EQ(attribute(xml, "VTKFile", "type"), "ImageData");
   EXPECT_EQ(attribute(xml, "ImageData", "WholeExtent"), "0 6 0 4 0 0");
   EXPECT_EQ(attribute(xml, "Piece", "Extent"), "0 6 0 4 0 0");

@@ -16,33 +16,17 @@
 
 #include "models/core/error.h"
 
+#include "tests/support/temp_dir.h"
+
 namespace repose {
 namespace {
 
 namespace fs = std::filesystem;
 
-class NpyIo : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("repose_npy_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+class NpyIo : public test_support::TempDirTest {};
 
-  fs::path dir_;
-};
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
+using test_support::read_all;
+using test_support::write_all;
 
 void append_le(std::string& out, std::uint64_t v, int bytes) {
   for (int k = 0; k < bytes; ++k) out.push_back(static_cast<char>((v >> (8 * k)) & 0xff));
@@ -155,13 +139,13 @@ TEST_F(NpyIo, OneDimensionalArrayReadsAsOneRow) {
   ASSERT_EQ(a.rows(), 1);
   ASSERT_EQ(a.cols(), 4);
   for (int k = 0; k < 4; ++k) EXPECT_EQ(a(0, k), v[k]);
-  EXPECT_NE(read_bytes(path("v.npy")).find("'shape': (4,)"), std::string::npos);
+  EXPECT_NE(read_all(path("v.npy")).find("'shape': (4,)"), std::string::npos);
 }
 
 TEST_F(NpyIo, WrittenHeaderIsVersion1PaddedTo64Bytes) {
   for (auto [rows, cols] : {std::pair{1, 1}, {7, 13}, {123456, 0}}) {
     write_npy_2d(path("a.npy"), ArrayXXdR::Zero(rows, cols));
-    const std::string bytes = read_bytes(path("a.npy"));
+    const std::string bytes = read_all(path("a.npy"));
     ASSERT_GE(bytes.size(), 10u);
     EXPECT_EQ(bytes.substr(0, 8), std::string("\x93NUMPY\x01\x00", 8));
     const std::size_t header_len = static_cast<unsigned char>(bytes[8]) | (static_cast<unsigned char>(bytes[9]) << 8);
@@ -174,7 +158,7 @@ TEST_F(NpyIo, WrittenHeaderIsVersion1PaddedTo64Bytes) {
 
 TEST_F(NpyIo, ReadsFortranOrder) {
   // the 2 x 3 matrix [[1 2 3] [4 5 6]] stored column by column
-  write_bytes(path("f.npy"), npy_file("{'descr': '<f8', 'fortran_order': True, 'shape': (2, 3), }") +
+  write_all(path("f.npy"), npy_file("{'descr': '<f8', 'fortran_order': True, 'shape': (2, 3), }") +
                                  f8_data({1, 4, 2, 5, 3, 6}));
   const ArrayXXdR a = read_npy_2d(path("f.npy"));
   ASSERT_EQ(a.rows(), 2);
@@ -186,7 +170,7 @@ TEST_F(NpyIo, ReadsFortranOrder) {
 TEST_F(NpyIo, ReadsVersions2And3AndDoubleQuotes) {
   for (int major : {2, 3}) {
     const std::string dict = "{\"descr\": \"<f8\", \"fortran_order\": False, \"shape\": (1, 2)}";
-    write_bytes(path("v.npy"), npy_file(dict, major) + f8_data({-1, 2}));
+    write_all(path("v.npy"), npy_file(dict, major) + f8_data({-1, 2}));
     const ArrayXXdR a = read_npy_2d(path("v.npy"));
     ASSERT_EQ(a.size(), 2);
     EXPECT_EQ(a(0, 0), -1.0);
@@ -197,14 +181,14 @@ TEST_F(NpyIo, ReadsVersions2And3AndDoubleQuotes) {
 TEST_F(NpyIo, ReadsSmallIntegerDtypesExactly) {
   std::string data;
   for (int v : {-32768, -1, 0, 32767}) append_le(data, static_cast<std::uint16_t>(v), 2);
-  write_bytes(path("i2.npy"), npy_file("{'descr': '<i2', 'fortran_order': False, 'shape': (2, 2), }") + data);
+  write_all(path("i2.npy"), npy_file("{'descr': '<i2', 'fortran_order': False, 'shape': (2, 2), }") + data);
   const ArrayXXdR a = read_npy_2d(path("i2.npy"));
   EXPECT_EQ(a(0, 0), -32768);
   EXPECT_EQ(a(0, 1), -1);
   EXPECT_EQ(a(1, 1), 32767);
   data.clear();
   for (int v : {0, 1, 65535}) append_le(data, static_cast<std::uint16_t>(v), 2);
-  write_bytes(path("u2.npy"), npy_file("{'descr': '<u2', 'fortran_order': False, 'shape': (3,), }") + data);
+  write_all(path("u2.npy"), npy_file("{'descr': '<u2', 'fortran_order': False, 'shape': (3,), }") + data);
   EXPECT_EQ(read_npy_2d(path("u2.npy"))(0, 2), 65535);
 }
 
@@ -215,7 +199,7 @@ TEST_F(NpyIo, ReadsFilesWrittenByNumPy) {
   // value(r, c) = (r - 2.5) * 10^(c - 3) + c / 7, computed in both languages
   const std::string script =
       "import numpy as np\n"
-      "d = '" + dir_.string() + "'\n"
+      "d = '" + dir_.path.string() + "'\n"
       "r, c = np.meshgrid(np.arange(5), np.arange(9), indexing='ij')\n"
       "a = (r - 2.5) * 10.0 ** (c - 3) + c / 7\n"
       "np.save(d + '/c64.npy', a)\n"
@@ -224,7 +208,7 @@ TEST_F(NpyIo, ReadsFilesWrittenByNumPy) {
       "np.save(d + '/one_d.npy', a[3])\n"
       "with open(d + '/v2.npy', 'wb') as f: np.lib.format.write_array(f, a, version=(2, 0))\n"
       "np.save(d + '/big_endian.npy', a.astype('>f8'))\n";
-  write_bytes(path("make.py"), script);
+  write_all(path("make.py"), script);
   ASSERT_EQ(std::system(("/usr/bin/python3 " + path("make.py")).c_str()), 0);
 
   ArrayXXdR expected(5, 9);
@@ -251,72 +235,72 @@ TEST_F(NpyIo, ReadsFilesWrittenByNumPy) {
   const std::string check = "import numpy as np\na = np.load('" + path("ours.npy") +
                             "')\nassert a.dtype == np.float32 and a.shape == (5, 9), (a.dtype, a.shape)\n"
                             "assert a[4, 8] == np.float32(1.5 * 10.0 ** 5 + 8 / 7)\n";
-  write_bytes(path("check.py"), check);
+  write_all(path("check.py"), check);
   EXPECT_EQ(std::system(("/usr/bin/python3 " + path("check.py")).c_str()), 0);
 }
 
 TEST_F(NpyIo, BadMagicIsAnInputError) {
-  write_bytes(path("bad.npy"), "PK\x03\x04 this is a zip file, not an array");
+  write_all(path("bad.npy"), "PK\x03\x04 this is a zip file, not an array");
   expect_input_error(path("bad.npy"), "not a .npy file (bad magic)");
 }
 
 TEST_F(NpyIo, EmptyAndMissingFilesAreInputErrors) {
-  write_bytes(path("empty.npy"), "");
+  write_all(path("empty.npy"), "");
   expect_input_error(path("empty.npy"), "truncated");
   expect_input_error(path("missing.npy"), "no such file");
 }
 
 TEST_F(NpyIo, TruncatedHeaderIsAnInputError) {
   const std::string full = npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }");
-  write_bytes(path("h.npy"), full.substr(0, 30));
+  write_all(path("h.npy"), full.substr(0, 30));
   expect_input_error(path("h.npy"), "truncated header");
 }
 
 TEST_F(NpyIo, TruncatedDataNamesShapeAndSizes) {
-  write_bytes(path("d.npy"),
+  write_all(path("d.npy"),
               npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }") + std::string(40, '\0'));
   expect_input_error(path("d.npy"), "truncated: shape (3, 4) needs 96 bytes of data, file has 40");
 }
 
 TEST_F(NpyIo, TrailingBytesAreAnInputError) {
-  write_bytes(path("d.npy"),
+  write_all(path("d.npy"),
               npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (1, 1), }") + std::string(16, '\0'));
   expect_input_error(path("d.npy"), "unexpected bytes");
 }
 
 TEST_F(NpyIo, UnsupportedDtypesAreInputErrors) {
   for (const char* descr : {"<c16", "<U4", "|b1", "<f2", "O"}) {
-    write_bytes(path("t.npy"), npy_file(std::string("{'descr': '") + descr +
+    write_all(path("t.npy"), npy_file(std::string("{'descr': '") + descr +
                                         "', 'fortran_order': False, 'shape': (1, 1), }") +
                                    std::string(16, '\0'));
     expect_input_error(path("t.npy"), "dtype");
   }
-  write_bytes(path("s.npy"),
+  write_all(path("s.npy"),
               npy_file("{'descr': [('a', '<f8')], 'fortran_order': False, 'shape': (1,), }") + std::string(8, '\0'));
   expect_input_error(path("s.npy"), "structured");
-  write_bytes(path("b.npy"), npy_file("{'descr': '>f8', 'fortran_order': False, 'shape': (1,), }") + f8_data({1}));
+  write_all(path("b.npy"), npy_file("{'descr': '>f8', 'fortran_order': False, 'shape': (1,), }") + f8_data({1}));
   expect_input_error(path("b.npy"), "big-endian");
 }
 
 TEST_F(NpyIo, ThreeDimensionalShapeIsAnInputError) {
-  write_bytes(path("3d.npy"),
+  write_all(path("3d.npy"),
               npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2, 2), }") + std::string(64, '\0'));
   expect_input_error(path("3d.npy"), "got 3-D shape (2, 2, 2)");
-  write_bytes(path("0d.npy"), npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (), }") + f8_data({1}));
+  write_all(path("0d.npy"), npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (), }") + f8_data({1}));
   expect_input_error(path("0d.npy"), "0-D");
 }
 
 TEST_F(NpyIo, HugeShapeIsRejectedBeforeAllocating) {
   // would need exabytes: must fail on the shape, not on an allocation
-  write_bytes(path("huge.npy"),
+  write_all(path("huge.npy"),
               npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (4000000000, 4000000000), }") +
                   f8_data({1}));
   expect_input_error(path("huge.npy"), "too large");
-  write_bytes(path("overflow.npy"),
+  write_all(path("overflow.npy"),
               npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (99999999999999999999999, 1), }"));
   expect_input_error(path("overflow.npy"), "shape");
   // within the element limit but far more than the file holds
-  write_bytes(path("big.npy"),
+  write_all(path("big.npy"),
               npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (60000, 60000), }") + f8_data({1}));
   expect_input_error(path("big.npy"), "truncated: shape (60000, 60000) needs 28800000000 bytes of data, file has 8");
 }
@@ -326,12 +310,12 @@ TEST_F(NpyIo, MalformedHeadersAreInputErrors) {
                            "{'descr': '<f8', 'fortran_order': maybe, 'shape': (1, 1), }",
                            "{'descr': '<f8', 'fortran_order': False, 'shape': (1, -1), }",
                            "{'descr': '<f8', 'fortran_order': False, 'shape': (1, 1), 'extra': 1}", "not a dict"}) {
-    write_bytes(path("m.npy"), npy_file(dict) + f8_data({1}));
+    write_all(path("m.npy"), npy_file(dict) + f8_data({1}));
     expect_input_error(path("m.npy"), "bad .npy header");
   }
   std::string bad_version = npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (1,), }") + f8_data({1});
   bad_version[6] = 4;
-  write_bytes(path("v.npy"), bad_version);
+  write_all(path("v.npy"), bad_version);
   expect_input_error(path("v.npy"), "version 4.0");
 }
 

@@ -12,33 +12,17 @@
 
 #include "models/core/error.h"
 
+#include "tests/support/temp_dir.h"
+
 namespace repose {
 namespace {
 
 namespace fs = std::filesystem;
 
-class PngIo : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("repose_png_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+class PngIo : public test_support::TempDirTest {};
 
-  fs::path dir_;
-};
-
-std::string read_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-void write_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
+using test_support::read_all;
+using test_support::write_all;
 
 // Writes a grey or colour PNG with libpng's simplified API, independently of
 // the writer under test. `pixels` holds rows top to bottom.
@@ -145,25 +129,25 @@ TEST_F(PngIo, ColourImagesAreRejectedWithTheirType) {
 
 TEST_F(PngIo, TruncatedPngIsAnInputError) {
   write_png16(path("full.png"), ramp16(40, 50));
-  const std::string bytes = read_bytes(path("full.png"));
+  const std::string bytes = read_all(path("full.png"));
   for (std::size_t keep : {std::size_t{8}, std::size_t{20}, std::size_t{60}, bytes.size() / 2, bytes.size() - 13}) {
-    write_bytes(path("cut.png"), bytes.substr(0, keep));
+    write_all(path("cut.png"), bytes.substr(0, keep));
     expect_input_error(path("cut.png"), "truncated PNG");
   }
-  write_bytes(path("short.png"), bytes.substr(0, 5));
+  write_all(path("short.png"), bytes.substr(0, 5));
   expect_input_error(path("short.png"), "not a PNG file");
 }
 
 TEST_F(PngIo, CorruptDataIsAnInputError) {
   write_png16(path("full.png"), ramp16(40, 50));
-  std::string bytes = read_bytes(path("full.png"));
+  std::string bytes = read_all(path("full.png"));
   for (std::size_t k = bytes.size() / 2; k < bytes.size() / 2 + 16; ++k) bytes[k] = static_cast<char>(bytes[k] ^ 0x5a);
-  write_bytes(path("bad.png"), bytes);
+  write_all(path("bad.png"), bytes);
   expect_input_error(path("bad.png"), "PNG");
 }
 
 TEST_F(PngIo, NotAPngOrMissingIsAnInputError) {
-  write_bytes(path("text.png"), "hello, this is not an image");
+  write_all(path("text.png"), "hello, this is not an image");
   expect_input_error(path("text.png"), "not a PNG file");
   expect_input_error(path("missing.png"), "no such file");
 }
