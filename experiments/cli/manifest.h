@@ -18,6 +18,9 @@ struct StageTime {
   double wall_s = 0.0;
 };
 
+// Now, as 2026-11-21T07:30:00Z.
+std::string utc_now_iso8601();
+
 // The build as a JSON object: repose version, git commit, compiler, library versions.
 void write_build_json(JsonWriter& json, const BuildInfo& build);
 

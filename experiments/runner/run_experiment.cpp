@@ -41,15 +41,6 @@ double median(std::vector<double> values) {
   return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-std::string utc_now_iso8601() {
-  const std::time_t now = std::time(nullptr);
-  std::tm utc{};
-  ::gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
-
 void log_line(const ExperimentOptions& options, const std::string& line) {
   if (options.log == nullptr) return;
   std::fprintf(options.log, "%s\n", line.c_str());
@@ -263,7 +254,7 @@ std::optional<double> json_number_at(const std::string& json_object, const std::
 }
 
 ExperimentOutcome run_experiment(const Experiment& experiment, const ExperimentOptions& options) {
-  ManifestInputs inputs{utc_now_iso8601(), Clock::now(), {}};
+  ManifestInputs inputs{cli::utc_now_iso8601(), Clock::now(), {}};
   OutputDirectory out = OutputDirectory::open(options.out_dir, options.force);
   log_line(options, fmt::format("experiment {}: {} run(s){}", experiment.name, experiment.runs.size(),
                                 experiment.repeat > 1 ? fmt::format(", each {} times", experiment.repeat) : ""));

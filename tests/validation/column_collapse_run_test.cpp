@@ -18,25 +18,15 @@
 #include "validation/liggghts_dump.h"
 #include "validation/liggghts_reference.h"
 
+#include "tests/support/liggghts_test.h"
+
 namespace repose {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ColumnCollapseRun : public ::testing::Test {
+class ColumnCollapseRun : public test_support::LiggghtsTest {
  protected:
-  void SetUp() override {
-    try {
-      resolve_liggghts_executable({});
-    } catch (const InputError&) {
-      GTEST_SKIP() << "liggghts is not installed";
-    }
-    char pattern[] = "/tmp/repose-column-test-XXXXXX";
-    dir_ = ::mkdtemp(pattern);
-  }
-  void TearDown() override {
-    if (!dir_.empty()) fs::remove_all(dir_);
-  }
   LiggghtsReferenceResult run(const Scene& scene) {
     LiggghtsReferenceOptions options;
     options.bed.cache_dir = (dir_ / "cache").string();
@@ -45,7 +35,6 @@ class ColumnCollapseRun : public ::testing::Test {
     fs::create_directories(dir_ / "run");
     return run_liggghts_reference(scene, (dir_ / "run").string(), options);
   }
-  fs::path dir_;
 };
 
 TEST_F(ColumnCollapseRun, CylinderColumnSlumpsIntoAPile) {

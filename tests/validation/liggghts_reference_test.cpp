@@ -17,27 +17,14 @@
 #include "validation/liggghts_dump.h"
 #include "validation/liggghts_thermo.h"
 
+#include "tests/support/liggghts_test.h"
+
 namespace repose {
 namespace {
 
 namespace fs = std::filesystem;
 
-class LiggghtsReference : public ::testing::Test {
- protected:
-  void SetUp() override {
-    try {
-      resolve_liggghts_executable({});
-    } catch (const InputError&) {
-      GTEST_SKIP() << "liggghts is not installed";
-    }
-    char pattern[] = "/tmp/repose-liggghts-test-XXXXXX";
-    dir_ = ::mkdtemp(pattern);
-  }
-  void TearDown() override {
-    if (!dir_.empty()) fs::remove_all(dir_);
-  }
-  fs::path dir_;
-};
+class LiggghtsReference : public test_support::LiggghtsTest {};
 
 TEST_F(LiggghtsReference, SmallBedAndIndenterFromSceneToObservables) {
   const Scene scene = testing::small_dem_scene(true);

@@ -26,6 +26,8 @@
 #include "validation/liggghts_runner.h"
 #include "validation/liggghts_script.h"
 
+#include "tests/support/liggghts_test.h"
+
 namespace repose {
 namespace {
 
@@ -58,22 +60,7 @@ double set_distance(const std::vector<Eigen::Vector3d>& a, const std::vector<Eig
   return std::max(one_way(a, b), one_way(b, a));
 }
 
-class RotatingMesh : public ::testing::Test {
- protected:
-  void SetUp() override {
-    try {
-      resolve_liggghts_executable({});
-    } catch (const InputError&) {
-      GTEST_SKIP() << "liggghts is not installed";
-    }
-    char pattern[] = "/tmp/repose-rotating-mesh-XXXXXX";
-    dir_ = ::mkdtemp(pattern);
-  }
-  void TearDown() override {
-    if (!dir_.empty()) fs::remove_all(dir_);
-  }
-  fs::path dir_;
-};
+class RotatingMesh : public test_support::LiggghtsTest {};
 
 TEST_F(RotatingMesh, MeshEndsEachSegmentAtTheKeyframedPose) {
   Scene scene = testing::small_dem_scene(false);
