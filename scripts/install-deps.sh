@@ -8,7 +8,7 @@ packages=(
   libbullet-dev libode-dev libeigen3-dev libceres-dev libcgal-dev
   libosmesa6-dev libembree-dev
   liggghts libliggghts-dev liggghts-doc mpi-default-dev openmpi-bin
-  libyaml-cpp-dev libcli11-dev libfmt-dev libpng-dev
+  libyaml-cpp-dev libcli11-dev libfmt-dev libpng-dev nlohmann-json3-dev ccache
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
   python3-matplotlib python3-numpy
 )
