@@ -10,9 +10,9 @@
 
 #include <vector>
 
-#include "models/core/depth_image.h"
-#include "models/core/osmesa_depth_renderer.h"
-#include "models/core/triangle_mesh.h"
+#include "models/core/geometry/depth_image.h"
+#include "models/core/gl/osmesa_depth_renderer.h"
+#include "models/core/geometry/triangle_mesh.h"
 
 namespace repose {
 namespace {

@@ -12,7 +12,7 @@
 
 #include <memory>
 
-#include "models/core/scene.h"
+#include "models/core/config/scene.h"
 #include "models/ground/erosion.h"
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"

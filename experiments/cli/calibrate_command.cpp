@@ -10,16 +10,16 @@
 #include <fmt/format.h>
 
 #include "experiments/cli/commands.h"
-#include "experiments/cli/manifest.h"
-#include "experiments/cli/progress_printer.h"
-#include "models/core/build_info.h"
-#include "models/core/output_directory.h"
-#include "validation/calibration_figures.h"
-#include "validation/calibration_fit.h"
-#include "validation/calibration_ladder.h"
-#include "validation/calibration_loader.h"
-#include "validation/calibration_problem.h"
-#include "validation/calibration_report.h"
+#include "experiments/runner/manifest.h"
+#include "experiments/runner/progress_printer.h"
+#include "models/core/run/build_info.h"
+#include "models/core/run/output_directory.h"
+#include "validation/calibration/calibration_figures.h"
+#include "validation/calibration/calibration_fit.h"
+#include "validation/calibration/calibration_ladder.h"
+#include "validation/calibration/calibration_loader.h"
+#include "validation/calibration/calibration_problem.h"
+#include "validation/calibration/calibration_report.h"
 
 namespace repose::cli {
 namespace {

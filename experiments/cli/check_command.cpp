@@ -4,7 +4,7 @@
 #include <string>
 
 #include "experiments/cli/commands.h"
-#include "models/core/scene_loader.h"
+#include "models/core/config/scene_loader.h"
 
 namespace repose::cli {
 

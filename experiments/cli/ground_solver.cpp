@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "experiments/cli/render_height.h"
+#include "experiments/figures/render_height.h"
 #include "experiments/cli/solvers.h"
-#include "models/core/height_field_io.h"
+#include "models/core/io/height_field_io.h"
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/simulate_ground.h"

@@ -1,12 +1,12 @@
 // `repose run --solver liggghts`: the scene as a LIGGGHTS DEM reference run
-// (validation/liggghts_reference.h). The settled bed's surface replaces the
+// (validation/liggghts/liggghts_reference.h). The settled bed's surface replaces the
 // scene's own initial height, so that a heuristic compared with this run
 // starts from the same ground. A column scene (dem.initial: column) adds
 // its runout and, for a cylinder, the pile's flank angles to the results;
 // every object adds the mass of grains it holds at the end (mass_held_kg).
-#include "experiments/cli/render_height.h"
+#include "experiments/figures/render_height.h"
 #include "experiments/cli/solvers.h"
-#include "validation/liggghts_reference.h"
+#include "validation/liggghts/liggghts_reference.h"
 
 namespace repose::cli {
 

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "experiments/cli/commands.h"
-#include "models/core/build_info.h"
-#include "models/core/error.h"
+#include "models/core/run/build_info.h"
+#include "models/core/base/error.h"
 
 namespace {
 

@@ -11,11 +11,11 @@
 #include <fmt/format.h>
 
 #include "experiments/cli/commands.h"
-#include "experiments/cli/render_height.h"
-#include "models/core/error.h"
-#include "models/core/initial_height.h"
-#include "models/core/npy_io.h"
-#include "models/core/scene_loader.h"
+#include "experiments/figures/render_height.h"
+#include "models/core/base/error.h"
+#include "models/core/config/initial_height.h"
+#include "models/core/io/npy_io.h"
+#include "models/core/config/scene_loader.h"
 
 namespace repose::cli {
 namespace {

@@ -7,12 +7,12 @@
 #include <fmt/format.h>
 
 #include "experiments/cli/commands.h"
-#include "experiments/cli/manifest.h"
-#include "experiments/cli/progress_printer.h"
-#include "experiments/cli/run_scene.h"
+#include "experiments/runner/manifest.h"
+#include "experiments/runner/progress_printer.h"
+#include "experiments/runner/run_scene.h"
 #include "experiments/cli/solvers.h"
-#include "models/core/output_directory.h"
-#include "models/core/scene_loader.h"
+#include "models/core/run/output_directory.h"
+#include "models/core/config/scene_loader.h"
 
 namespace repose::cli {
 namespace {

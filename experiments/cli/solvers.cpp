@@ -1,6 +1,6 @@
 #include "experiments/cli/solvers.h"
 
-#include "models/core/error.h"
+#include "models/core/base/error.h"
 
 namespace repose::cli {
 

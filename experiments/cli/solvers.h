@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "experiments/cli/manifest.h"
-#include "models/core/height_field.h"
-#include "models/core/output_directory.h"
-#include "models/core/progress.h"
-#include "models/core/scene.h"
+#include "experiments/runner/manifest.h"
+#include "models/core/geometry/height_field.h"
+#include "models/core/run/output_directory.h"
+#include "models/core/base/progress.h"
+#include "models/core/config/scene.h"
 
 namespace repose::cli {
 
@@ -38,7 +38,7 @@ struct Solver {
 // models/ground, with the scene's own materials as parameters (ground_solver.cpp).
 void run_ground_solver(RunContext& context);
 
-// validation/liggghts_reference.h (liggghts_solver.cpp).
+// validation/liggghts/liggghts_reference.h (liggghts_solver.cpp).
 void run_liggghts_solver(RunContext& context);
 
 // Every solver, by name; the first is the default.

@@ -12,8 +12,8 @@
 
 #include <Eigen/Geometry>
 
-#include "models/core/error.h"
-#include "models/core/osmesa_context.h"
+#include "models/core/base/error.h"
+#include "models/core/gl/osmesa_context.h"
 
 namespace repose {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Figures: a shaded height field with the scene's objects, seen through a
-// perspective camera (CameraSpec, models/core/scene.h), rendered off-screen
+// perspective camera (CameraSpec, models/core/config/scene.h), rendered off-screen
 // with OSMesa into an RGB image (write it with write_png_rgb).
 //
 // Shading is computed per vertex on the CPU (Lambert with a directional light
@@ -15,10 +15,10 @@
 
 #include <Eigen/Core>
 
-#include "models/core/height_field.h"
-#include "models/core/png_io.h"
-#include "models/core/scene.h"
-#include "models/core/triangle_mesh.h"
+#include "models/core/geometry/height_field.h"
+#include "models/core/io/png_io.h"
+#include "models/core/config/scene.h"
+#include "models/core/geometry/triangle_mesh.h"
 
 namespace repose {
 

@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "models/core/error.h"
-#include "models/core/yaml_reader.h"
+#include "models/core/base/error.h"
+#include "models/core/config/yaml_reader.h"
 
 namespace repose {
 namespace {

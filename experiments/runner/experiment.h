@@ -29,7 +29,7 @@
 #include <vector>
 
 #include "experiments/runner/scene_override.h"
-#include "models/core/scene.h"
+#include "models/core/config/scene.h"
 
 namespace repose {
 

@@ -15,14 +15,14 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "experiments/cli/manifest.h"
-#include "experiments/cli/progress_printer.h"
-#include "experiments/cli/run_scene.h"
-#include "models/core/build_info.h"
-#include "models/core/error.h"
-#include "models/core/json_writer.h"
-#include "models/core/output_directory.h"
-#include "models/core/sha256.h"
+#include "experiments/runner/manifest.h"
+#include "experiments/runner/progress_printer.h"
+#include "experiments/runner/run_scene.h"
+#include "models/core/run/build_info.h"
+#include "models/core/base/error.h"
+#include "models/core/io/json_writer.h"
+#include "models/core/run/output_directory.h"
+#include "models/core/base/sha256.h"
 
 extern char** environ;
 

@@ -7,10 +7,10 @@
 
 #include <fmt/format.h>
 
-#include "models/core/error.h"
-#include "models/core/scene.h"
-#include "models/core/scene_loader.h"
-#include "models/core/yaml_reader.h"
+#include "models/core/base/error.h"
+#include "models/core/config/scene.h"
+#include "models/core/config/scene_loader.h"
+#include "models/core/config/yaml_reader.h"
 
 namespace repose {
 namespace {

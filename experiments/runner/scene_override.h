@@ -15,7 +15,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "models/core/scene.h"
+#include "models/core/config/scene.h"
 
 namespace repose {
 

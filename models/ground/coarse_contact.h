@@ -22,7 +22,7 @@
 
 #include <Eigen/Core>
 
-#include "models/core/triangle_mesh.h"
+#include "models/core/geometry/triangle_mesh.h"
 #include "models/ground/collision.h"
 
 namespace repose {

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "models/core/depth_image.h"
-#include "models/core/grid.h"
-#include "models/core/height_field.h"
-#include "models/core/triangle_mesh.h"
+#include "models/core/geometry/depth_image.h"
+#include "models/core/geometry/grid.h"
+#include "models/core/geometry/height_field.h"
+#include "models/core/geometry/triangle_mesh.h"
 
 namespace repose {
 

@@ -7,7 +7,7 @@
 #include <numeric>
 #include <vector>
 
-#include "models/core/error.h"
+#include "models/core/base/error.h"
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"

@@ -1,6 +1,6 @@
 #include "models/ground/erosion_memory.h"
 
-#include "models/core/error.h"
+#include "models/core/base/error.h"
 
 namespace repose {
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "models/core/grid.h"
-#include "models/core/material.h"
-#include "models/core/scene.h"
+#include "models/core/geometry/grid.h"
+#include "models/core/config/material.h"
+#include "models/core/config/scene.h"
 #include "models/ground/swept_mesh.h"
 
 namespace repose {

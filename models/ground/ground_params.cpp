@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "models/core/error.h"
+#include "models/core/base/error.h"
 #include "models/ground/ground_model.h"
 
 namespace repose {

@@ -1,6 +1,6 @@
 #include "models/ground/ground_state.h"
 
-#include "models/core/error.h"
+#include "models/core/base/error.h"
 #include "models/ground/ground_model.h"
 
 namespace repose {

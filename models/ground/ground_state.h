@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "models/core/height_field.h"
-#include "models/core/triangle_mesh.h"
+#include "models/core/geometry/height_field.h"
+#include "models/core/geometry/triangle_mesh.h"
 #include "models/ground/erosion_memory.h"
 #include "models/ground/volume_ledger.h"
 

@@ -5,7 +5,7 @@
 #include <limits>
 #include <vector>
 
-#include "models/core/error.h"
+#include "models/core/base/error.h"
 #include "models/ground/coarse_contact.h"
 #include "models/ground/displacement.h"
 #include "models/ground/ground_model.h"

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "models/core/error.h"
-#include "models/core/osmesa_depth_renderer.h"
+#include "models/core/base/error.h"
+#include "models/core/gl/osmesa_depth_renderer.h"
 #include "models/ground/collision.h"
 
 namespace repose {

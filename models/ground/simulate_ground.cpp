@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "models/core/initial_height.h"
+#include "models/core/config/initial_height.h"
 #include "models/ground/collision.h"
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_state.h"

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "models/core/height_field.h"
-#include "models/core/progress.h"
-#include "models/core/scene.h"
+#include "models/core/geometry/height_field.h"
+#include "models/core/base/progress.h"
+#include "models/core/config/scene.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/volume_ledger.h"
 

@@ -12,8 +12,8 @@
 // more than `min_prominence_m` above the lowest point on either side before
 // a higher one).
 
-#include "models/core/height_field.h"
-#include "models/core/scene.h"
+#include "models/core/geometry/height_field.h"
+#include "models/core/config/scene.h"
 
 namespace repose {
 

@@ -4,7 +4,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "models/core/error.h"
+#include "models/core/base/error.h"
 
 namespace repose {
 

@@ -17,7 +17,7 @@
 
 #include <vector>
 
-#include "models/core/triangle_mesh.h"
+#include "models/core/geometry/triangle_mesh.h"
 
 namespace repose {
 

@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "models/core/initial_height.h"
-#include "models/core/npy_io.h"
-#include "models/core/png_io.h"
-#include "models/core/scene_loader.h"
-#include "models/core/sha256.h"
+#include "models/core/config/initial_height.h"
+#include "models/core/io/npy_io.h"
+#include "models/core/io/png_io.h"
+#include "models/core/config/scene_loader.h"
+#include "models/core/base/sha256.h"
 #include "tests/support/run_repose.h"
 
 namespace repose {

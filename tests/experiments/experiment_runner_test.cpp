@@ -21,9 +21,9 @@
 #include "experiments/runner/experiment.h"
 #include "experiments/runner/run_experiment.h"
 #include "experiments/runner/scene_override.h"
-#include "models/core/error.h"
-#include "models/core/npy_io.h"
-#include "models/core/sha256.h"
+#include "models/core/base/error.h"
+#include "models/core/io/npy_io.h"
+#include "models/core/base/sha256.h"
 
 namespace repose {
 namespace {

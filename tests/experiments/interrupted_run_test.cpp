@@ -18,7 +18,7 @@
 #include <thread>
 #include <vector>
 
-#include "models/core/npy_io.h"
+#include "models/core/io/npy_io.h"
 #include "tests/support/run_repose.h"
 
 namespace repose {

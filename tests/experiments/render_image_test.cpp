@@ -10,8 +10,8 @@
 #include <set>
 #include <tuple>
 
-#include "models/core/error.h"
-#include "models/core/osmesa_depth_renderer.h"
+#include "models/core/base/error.h"
+#include "models/core/gl/osmesa_depth_renderer.h"
 
 namespace repose {
 namespace {

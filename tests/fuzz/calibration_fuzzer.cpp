@@ -2,8 +2,8 @@
 #include <cstdint>
 #include <string>
 
-#include "models/core/error.h"
-#include "validation/calibration_loader.h"
+#include "models/core/base/error.h"
+#include "validation/calibration/calibration_loader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

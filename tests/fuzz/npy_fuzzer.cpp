@@ -1,6 +1,6 @@
 // libFuzzer target: read_npy_2d on arbitrary .npy bytes.
-#include "models/core/npy_io.h"
-#include "models/core/error.h"
+#include "models/core/io/npy_io.h"
+#include "models/core/base/error.h"
 #include "tests/fuzz/fuzz_input_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

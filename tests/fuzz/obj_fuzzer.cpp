@@ -1,6 +1,6 @@
 // libFuzzer target: read_mesh on arbitrary .obj bytes.
-#include "models/core/mesh_io.h"
-#include "models/core/error.h"
+#include "models/core/io/mesh_io.h"
+#include "models/core/base/error.h"
 #include "tests/fuzz/fuzz_input_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,6 +1,6 @@
 // libFuzzer target: read_png16 on arbitrary .png bytes.
-#include "models/core/png_io.h"
-#include "models/core/error.h"
+#include "models/core/io/png_io.h"
+#include "models/core/base/error.h"
 #include "tests/fuzz/fuzz_input_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -11,10 +11,10 @@
 #include <fstream>
 #include <string>
 
-#include "models/core/error.h"
-#include "models/core/npy_io.h"
-#include "models/core/png_io.h"
-#include "models/core/scene_loader.h"
+#include "models/core/base/error.h"
+#include "models/core/io/npy_io.h"
+#include "models/core/io/png_io.h"
+#include "models/core/config/scene_loader.h"
 
 namespace {
 

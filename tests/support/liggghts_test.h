@@ -7,8 +7,8 @@
 
 #include <filesystem>
 
-#include "models/core/error.h"
-#include "validation/liggghts_runner.h"
+#include "models/core/base/error.h"
+#include "validation/liggghts/liggghts_runner.h"
 
 namespace repose::test_support {
 

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "models/core/error.h"
+#include "models/core/base/error.h"
 #include "tests/models/ground/ground_fixtures.h"
 
 namespace repose {

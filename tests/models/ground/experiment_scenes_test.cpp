@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "models/core/scene_loader.h"
+#include "models/core/config/scene_loader.h"
 #include "models/ground/simulate_ground.h"
 #include "tests/models/ground/ground_fixtures.h"
 

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "models/core/scene.h"
-#include "models/core/triangle_mesh.h"
+#include "models/core/config/scene.h"
+#include "models/core/geometry/triangle_mesh.h"
 #include "models/ground/collision.h"
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"

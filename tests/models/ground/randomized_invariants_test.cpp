@@ -24,9 +24,9 @@
 #include <string>
 #include <vector>
 
-#include "models/core/depth_image.h"
-#include "models/core/scene.h"
-#include "models/core/triangle_mesh.h"
+#include "models/core/geometry/depth_image.h"
+#include "models/core/config/scene.h"
+#include "models/core/geometry/triangle_mesh.h"
 #include "models/ground/collision.h"
 #include "models/ground/erosion.h"
 #include "models/ground/ground_model.h"

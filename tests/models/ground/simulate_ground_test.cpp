@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "models/core/error.h"
-#include "models/core/scene_loader.h"
+#include "models/core/base/error.h"
+#include "models/core/config/scene_loader.h"
 #include "tests/models/ground/ground_fixtures.h"
 
 namespace repose {

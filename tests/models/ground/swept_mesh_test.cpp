@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "models/core/depth_image.h"
+#include "models/core/geometry/depth_image.h"
 #include "tests/models/ground/ground_fixtures.h"
 
 namespace repose {

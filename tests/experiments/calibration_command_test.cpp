@@ -1,0 +1,73 @@
+// `repose calibrate` end to end on the synthetic calibration (fast): the run
+// folder holds calibration.json, a material.yaml that a scene accepts as its
+// ground.material, the report and figure data; a malformed file writes nothing.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "models/core/config/scene_loader.h"
+
+namespace repose {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kDir = std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration";
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+int run(const std::string& arguments) {
+  const std::string command = std::string(REPOSE_BINARY) + " " + arguments + " >/dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("repose_calibration_command_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  return dir;
+}
+
+TEST(CalibrationCommand, WritesTheRunFolder) {
+  const fs::path out = fresh_dir("ok");
+  ASSERT_EQ(run("calibrate " + kDir + "/synthetic.yaml --out " + out.string()), 0);
+  for (const char* name : {"calibration.json", "material.yaml", "report.md", "manifest.json",
+                           "data/calib_indent_reference.npy", "data/calib_indent_heuristic_fitted.npy"}) {
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+  }
+  const std::string json = read(out / "calibration.json");
+  for (const char* key : {"\"standard_error\"", "\"correlation\"", "\"initial_cost\"", "\"final_cost\"",
+                          "\"rmse_initial_m\"", "\"rmse_fitted_m\"", "\"iterations\"", "\"termination\"", "\"wall_time_s\""}) {
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+  }
+  // material.yaml is a ground.material map as it stands
+  std::string material;
+  std::istringstream lines(read(out / "material.yaml"));
+  for (std::string line; std::getline(lines, line);) material += "    " + line + "\n";
+  const Scene scene = load_scene_from_string(
+      "time: {step_s: 0.1, duration_s: 0.1}\n"
+      "ground:\n  extent_m: [0.1, 0.1]\n  cell_size_m: 0.01\n  initial_height: {kind: flat, height_m: 0.01}\n"
+      "  material:\n" + material,
+      (out / "scene.yaml").string());
+  EXPECT_NEAR(scene.ground.material.alpha, 0.7, 0.02);
+  EXPECT_NEAR(scene.ground.material.sigma, 0.15, 0.02);
+  fs::remove_all(out);
+}
+
+TEST(CalibrationCommand, MalformedFileWritesNothingAndExitsTwo) {
+  const fs::path out = fresh_dir("bad");
+  EXPECT_EQ(run("calibrate " + kDir + "/bad/bad_loss.yaml --out " + out.string()), 2);
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
+}  // namespace repose

@@ -1,0 +1,98 @@
+#include "validation/calibration/calibration_loader.h"
+
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "models/core/base/error.h"
+
+namespace repose {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kDir = std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration";
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::string first_line(const fs::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+TEST(CalibrationLoader, ReadsTheSyntheticCalibration) {
+  const CalibrationSpec spec = load_calibration(kDir + "/synthetic.yaml");
+  EXPECT_EQ(spec.name, "synthetic");
+  ASSERT_EQ(spec.scenes.size(), 3u);
+  EXPECT_EQ(spec.scenes[0].reference.kind, ReferenceSpec::Kind::kHeuristic);
+  EXPECT_DOUBLE_EQ(*spec.scenes[0].reference.repose_angle_rad, 35.0 * kDeg);
+  EXPECT_EQ(spec.scenes[2].observables[1].kind, ObservableSpec::Kind::kFurrowArea);
+  EXPECT_EQ(spec.scenes[2].observables[1].samples, 25);
+  ASSERT_EQ(spec.parameters.size(), 3u);
+  // degrees in the file, radians inside
+  EXPECT_DOUBLE_EQ(spec.parameters[1].initial, 28.0 * kDeg);
+  EXPECT_DOUBLE_EQ(spec.parameters[1].lower, 15.0 * kDeg);
+  EXPECT_DOUBLE_EQ(spec.parameters[1].step, 2.0 * kDeg);
+  EXPECT_EQ(spec.parameters[1].label(), "sand.repose_angle_deg");
+  EXPECT_EQ(spec.solver.seed, 3u);
+  EXPECT_EQ(spec.solver.starts, 1);
+  EXPECT_FALSE(spec.ladder.has_value());
+}
+
+TEST(CalibrationLoader, DefaultsFillBoundsAndSteps) {
+  const CalibrationSpec spec = load_calibration_from_string(
+      "scenes: [{scene: scenes/indent.yaml, reference: {heuristic: {alpha: 0.7}}, observables: [{kind: height_field}]}]\n"
+      "parameters: [{name: sigma, initial: 0.1}]\n",
+      kDir + "/inline.yaml");
+  const ParameterSpec& p = spec.parameters[0];
+  EXPECT_EQ(p.material, "sand");
+  EXPECT_GT(p.lower, 0.0);
+  EXPECT_DOUBLE_EQ(p.upper, kSigmaMax);
+  EXPECT_GT(p.step, 0.0);
+  EXPECT_EQ(spec.scenes[0].role, CalibrationScene::Role::kFit);
+  EXPECT_EQ(spec.solver.loss, CalibrationSolverSpec::Loss::kNone);
+}
+
+TEST(CalibrationLoader, ReadsTheDefaultCalibration) {
+  const CalibrationSpec spec = load_calibration(std::string(REPOSE_SOURCE_DIR) + "/experiments/calibration_default.yaml");
+  ASSERT_TRUE(spec.ladder.has_value());
+  EXPECT_GE(spec.ladder->heuristic_cell_sizes_m.size(), 3u);
+  EXPECT_GE(spec.ladder->liggghts.size(), 1u);
+  EXPECT_EQ(spec.scenes[0].reference.kind, ReferenceSpec::Kind::kData);
+}
+
+// Every file in bad/ starts with "# expect: TEXT": loading it must fail with
+// one line that names the file and contains TEXT.
+TEST(CalibrationLoader, MalformedFilesGiveClearErrors) {
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(kDir + "/bad")) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++files;
+    const std::string header = first_line(entry.path());
+    const std::string prefix = "# expect: ";
+    ASSERT_EQ(header.rfind(prefix, 0), 0u) << entry.path() << " lacks an '# expect:' first line";
+    const std::string expected = header.substr(prefix.size());
+    try {
+      load_calibration(entry.path().string());
+      ADD_FAILURE() << entry.path() << " loaded without an error";
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(expected), std::string::npos) << entry.path() << "\n  got: " << message;
+      EXPECT_EQ(message.rfind(entry.path().string(), 0), 0u) << "the message does not start with the file: " << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+  EXPECT_GE(files, 10);
+}
+
+TEST(CalibrationLoader, MissingFileIsAnInputError) {
+  EXPECT_THROW(load_calibration(kDir + "/no_such_file.yaml"), InputError);
+  EXPECT_THROW(load_calibration(kDir), InputError);
+}
+
+}  // namespace
+}  // namespace repose

@@ -1,0 +1,42 @@
+#pragma once
+// The Ceres cost of a calibration: all residuals of the fit scenes as one
+// residual block over the free parameters, one parameter block of size 1
+// each (so that ceres::Covariance can hold undetermined ones constant).
+//
+// The heuristic is not smooth in its parameters (erosion thresholds, integer
+// passes, cells that do or do not touch an object), so derivatives are
+// central differences with a wide, absolute step per parameter (the
+// calibration file's `step`), evaluated at x - h and x + h, cut at the bounds
+// (one-sided there). All the points one Evaluate needs are run together, in
+// parallel (CalibrationProblem::fit_residuals). Residual vectors of points
+// already run are remembered, since Ceres evaluates a point's residuals and
+// later its Jacobian; results are bit-identical either way.
+
+#include <map>
+#include <mutex>
+#include <vector>
+
+#include <ceres/cost_function.h>
+
+#include "validation/calibration/calibration_problem.h"
+
+namespace repose {
+
+class CalibrationCost : public ceres::CostFunction {
+ public:
+  // problem must outlive the cost.
+  explicit CalibrationCost(const CalibrationProblem& problem);
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
+
+  // Residuals at free parameter values, through the memory.
+  std::vector<std::vector<double>> residuals_at(const std::vector<std::vector<double>>& points) const;
+
+ private:
+  const CalibrationProblem& problem_;
+  std::vector<double> lower_, upper_, step_;
+  mutable std::mutex mutex_;
+  mutable std::map<std::vector<double>, std::vector<double>> memory_;
+};
+
+}  // namespace repose

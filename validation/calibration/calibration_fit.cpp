@@ -1,0 +1,166 @@
+#include "validation/calibration/calibration_fit.h"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include <ceres/ceres.h>
+#include <fmt/format.h>
+
+#include "models/core/base/error.h"
+#include "validation/calibration/calibration_cost.h"
+#include "validation/observables/calibration_observables.h"
+#include "validation/calibration/halton.h"
+
+namespace repose {
+
+namespace {
+
+// Reports each iteration as progress through the starts.
+class ProgressCallback : public ceres::IterationCallback {
+ public:
+  ProgressCallback(const ProgressFn& progress, std::size_t start, std::size_t starts, int max_iterations)
+      : progress_(progress), start_(start), starts_(starts), max_iterations_(max_iterations) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    const double fraction = (static_cast<double>(start_) + std::min(1.0, static_cast<double>(s.iteration) / max_iterations_)) /
+                            static_cast<double>(starts_);
+    report(progress_, fraction, fmt::format("fit: start {}/{}, iteration {}, cost {:.6g}", start_ + 1, starts_, s.iteration, s.cost));
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const ProgressFn& progress_;
+  std::size_t start_, starts_;
+  int max_iterations_;
+};
+
+ceres::LossFunction* make_loss(const CalibrationSolverSpec& solver) {
+  switch (solver.loss) {
+    case CalibrationSolverSpec::Loss::kNone: return nullptr;
+    case CalibrationSolverSpec::Loss::kHuber: return new ceres::HuberLoss(solver.loss_scale);
+    case CalibrationSolverSpec::Loss::kCauchy: return new ceres::CauchyLoss(solver.loss_scale);
+  }
+  return nullptr;
+}
+
+// A problem over one block per free parameter, bounded; the cost is owned by the caller.
+struct BoundedProblem {
+  std::unique_ptr<ceres::Problem> problem;
+  std::vector<double> x;  // the blocks' storage
+  std::vector<double*> blocks;
+};
+
+BoundedProblem make_problem(const CalibrationProblem& calibration, CalibrationCost* cost, const std::vector<double>& start) {
+  BoundedProblem b;
+  ceres::Problem::Options options;
+  options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  b.problem = std::make_unique<ceres::Problem>(options);
+  b.x = start;
+  for (double& v : b.x) b.blocks.push_back(&v);
+  b.problem->AddResidualBlock(cost, make_loss(calibration.spec().solver), b.blocks);
+  for (std::size_t k = 0; k < b.blocks.size(); ++k) {
+    const ParameterSpec& spec = calibration.spec().parameters[calibration.free()[k]];
+    b.problem->SetParameterLowerBound(b.blocks[k], 0, spec.lower);
+    b.problem->SetParameterUpperBound(b.blocks[k], 0, spec.upper);
+  }
+  return b;
+}
+
+std::vector<std::vector<double>> start_points(const CalibrationProblem& problem) {
+  const CalibrationSolverSpec& solver = problem.spec().solver;
+  std::vector<std::vector<double>> starts{problem.free_of(problem.initial_values())};
+  const Halton halton(static_cast<int>(problem.free().size()), solver.seed);
+  for (int s = 1; s < solver.starts; ++s) {
+    const std::vector<double> u = halton.point(static_cast<std::uint64_t>(s));
+    std::vector<double> x;
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      const ParameterSpec& p = problem.spec().parameters[problem.free()[k]];
+      x.push_back(p.lower + u[k] * (p.upper - p.lower));
+    }
+    starts.push_back(x);
+  }
+  return starts;
+}
+
+CalibrationStart solve_from(const CalibrationProblem& calibration, CalibrationCost* cost, const std::vector<double>& start,
+                            std::size_t index, const ProgressFn& progress) {
+  BoundedProblem b = make_problem(calibration, cost, start);
+  ceres::Solver::Options options;
+  options.minimizer_type = ceres::TRUST_REGION;
+  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = calibration.spec().solver.max_iterations;
+  options.num_threads = 1;  // the heuristic runs are parallel inside the cost
+  options.logging_type = ceres::SILENT;
+  options.minimizer_progress_to_stdout = false;
+  ProgressCallback callback(progress, index, static_cast<std::size_t>(calibration.spec().solver.starts),
+                            options.max_num_iterations);
+  options.callbacks.push_back(&callback);
+  ceres::Solver::Summary summary;
+  ceres::Solve(options, b.problem.get(), &summary);
+  CalibrationStart s;
+  s.initial_free = start;
+  s.final_free = b.x;
+  s.initial_cost = summary.initial_cost;
+  s.final_cost = summary.final_cost;
+  s.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  s.termination = fmt::format("{}: {}", ceres::TerminationTypeToString(summary.termination_type), summary.message);
+  for (const ceres::IterationSummary& it : summary.iterations) s.cost_per_iteration.push_back(it.cost);
+  if (summary.termination_type == ceres::FAILURE || !std::isfinite(s.final_cost)) {
+    s.final_cost = std::numeric_limits<double>::infinity();
+  }
+  return s;
+}
+
+}  // namespace
+
+CalibrationFit fit_calibration(const CalibrationProblem& problem, const ProgressFn& progress) {
+  const auto clock_start = std::chrono::steady_clock::now();
+  CalibrationFit fit;
+  fit.initial_values = problem.initial_values();
+  fit.residual_count = problem.fit_residual_count();
+  CalibrationCost cost(problem);
+  for (const std::vector<double>& start : start_points(problem)) {
+    fit.starts.push_back(solve_from(problem, &cost, start, fit.starts.size(), progress));
+    if (fit.starts.back().final_cost < fit.starts[fit.best_start].final_cost) fit.best_start = fit.starts.size() - 1;
+  }
+  const CalibrationStart& best = fit.starts[fit.best_start];
+  if (!std::isfinite(best.final_cost)) throw InputError(problem.spec().source_path + ": every start of the fit failed: " + best.termination);
+  fit.initial_cost = fit.starts[0].initial_cost;
+  fit.final_cost = best.final_cost;
+  fit.values = problem.with_free(best.final_free);
+
+  report(progress, 1.0, "covariance at the optimum");
+  BoundedProblem b = make_problem(problem, &cost, best.final_free);
+  std::vector<double> ranges;
+  std::vector<std::string> labels;
+  for (const std::size_t p : problem.free()) {
+    ranges.push_back(problem.spec().parameters[p].upper - problem.spec().parameters[p].lower);
+    labels.push_back(problem.spec().parameters[p].label());
+  }
+  fit.uncertainty = estimate_uncertainty(*b.problem, b.blocks, ranges, labels, best.final_cost,
+                                         problem.spec().solver.min_reciprocal_condition);
+
+  for (const PreparedScene& scene : problem.scenes()) {
+    SceneError e;
+    e.name = scene.entry.name;
+    e.fit = scene.fit();
+    e.grain_diameter_m = scene.grain_diameter_m;
+    e.heuristic_initial_params = problem.run(scene, fit.initial_values);
+    e.heuristic_fitted = problem.run(scene, fit.values);
+    e.rmse_initial_m = surface_rmse_m(e.heuristic_initial_params, scene.reference_final, scene.entry.rmse_region);
+    e.rmse_fitted_m = surface_rmse_m(e.heuristic_fitted, scene.reference_final, scene.entry.rmse_region);
+    fit.scenes.push_back(std::move(e));
+  }
+  fit.heuristic_runs = problem.runs();
+  fit.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return fit;
+}
+
+std::string determination(const CalibrationFit& fit, const CalibrationProblem& problem, std::size_t k) {
+  if (!fit.uncertainty.determined[k]) return "undetermined";
+  const ParameterSpec& p = problem.spec().parameters[problem.free()[k]];
+  return fit.uncertainty.standard_error[k] > 0.25 * (p.upper - p.lower) ? "poorly determined" : "determined";
+}
+
+}  // namespace repose

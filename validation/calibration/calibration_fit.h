@@ -1,0 +1,63 @@
+#pragma once
+// The fit of a calibration: Levenberg-Marquardt (Ceres) on the weighted
+// residuals of all fit scenes, bounds enforced by Ceres, an optional robust
+// loss, from several starts (the file's initial values, then points of a
+// seeded Halton sequence spread over the bounds); the start that ends with
+// the lowest cost wins (the earliest on a tie). Then the uncertainty of the
+// winner (calibration_uncertainty.h) and each scene's surface RMSE with the
+// initial and the fitted parameters, fit and held-out scenes alike.
+// Deterministic: the same file and seed give bit-identical results, whatever
+// the thread count.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "models/core/base/progress.h"
+#include "validation/calibration/calibration_problem.h"
+#include "validation/calibration/calibration_uncertainty.h"
+
+namespace repose {
+
+struct CalibrationStart {
+  std::vector<double> initial_free;  // free parameter values it started from
+  std::vector<double> final_free;
+  double initial_cost = 0.0;
+  double final_cost = 0.0;
+  int iterations = 0;
+  std::string termination;           // Ceres's termination type and message
+  std::vector<double> cost_per_iteration;  // iteration 0 is the start
+};
+
+struct SceneError {
+  std::string name;
+  bool fit = true;                   // false: held out
+  double rmse_initial_m = 0.0;       // surface RMSE (rmse region) with the initial parameters
+  double rmse_fitted_m = 0.0;        // ... with the fitted ones
+  double grain_diameter_m = 0.0;     // 0 without a dem section
+  HeightField heuristic_initial_params;  // final surfaces, for the figures
+  HeightField heuristic_fitted;
+};
+
+struct CalibrationFit {
+  std::vector<double> initial_values;  // every parameter (SI)
+  std::vector<double> values;          // every parameter, fitted (fixed ones unchanged)
+  std::vector<CalibrationStart> starts;
+  std::size_t best_start = 0;
+  double initial_cost = 0.0;           // at the initial values
+  double final_cost = 0.0;
+  std::size_t residual_count = 0;
+  CalibrationUncertainty uncertainty;  // over the free parameters
+  std::vector<SceneError> scenes;      // in the calibration's order
+  long long heuristic_runs = 0;
+  double wall_time_s = 0.0;
+};
+
+CalibrationFit fit_calibration(const CalibrationProblem& problem, const ProgressFn& progress = {});
+
+// "determined", "poorly determined" (a standard error above a quarter of the
+// bound range) or "undetermined", for free parameter k.
+std::string determination(const CalibrationFit& fit, const CalibrationProblem& problem, std::size_t k);
+
+}  // namespace repose

@@ -1,0 +1,46 @@
+#pragma once
+// The speed/accuracy ladder of a calibrated scene: each rung is a way to
+// compute the scene's final surface, as (wall time, surface RMSE against the
+// yardstick). The yardstick is the finest LIGGGHTS reference (smallest
+// grains) of the ladder, or the scene's own reference when the ladder lists
+// none. Rungs:
+//   - the calibrated ground model at each listed cell size (the reference's
+//     initial surface resampled onto that grid, the result back onto the
+//     yardstick's grid: area-weighted when finer, bilinear when coarser);
+//   - the multi-resolution ground model at the scene's cell size (every
+//     object on the coarse grid, coarse_factor as listed);
+//   - each LIGGGHTS run of the ladder, its cost from its manifest.
+// The heuristic's time is the fastest of timing_repeats runs.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "models/core/base/progress.h"
+#include "validation/calibration/calibration_problem.h"
+
+namespace repose {
+
+struct LadderRung {
+  std::string label;        // "ground 4 mm", "ground multires 4/8 mm", "LIGGGHTS d = 4 mm"
+  std::string kind;         // "ground", "ground-multires", "liggghts"
+  double resolution_m = 0.0;  // cell size, or grain diameter for LIGGGHTS
+  double wall_time_s = 0.0;
+  std::optional<double> cpu_time_s;  // LIGGGHTS: its own CPU time
+  double rmse_m = 0.0;      // surface RMSE against the yardstick (rmse region of the scene)
+  bool yardstick = false;
+};
+
+struct Ladder {
+  std::string scene;
+  std::string yardstick;    // label of the yardstick
+  std::vector<LadderRung> rungs;
+  // The finest LIGGGHTS run's wall time over the ground model's at the scene's own cell size.
+  std::optional<double> liggghts_over_ground_time;
+  std::optional<double> liggghts_over_ground_cpu_time;  // its CPU time over the same
+};
+
+// values: every parameter of the calibration (the fitted ones).
+Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<double>& values, const ProgressFn& progress = {});
+
+}  // namespace repose

@@ -1,0 +1,331 @@
+#include "validation/calibration/calibration_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "models/core/base/error.h"
+#include "models/core/config/yaml_reader.h"
+
+namespace repose {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+const Range kCoordinate = Range::closed(-1.0e6, 1.0e6);
+
+struct Context {
+  fs::path directory;  // absolute folder of the calibration file
+};
+
+std::string resolve(const Context& ctx, const std::string& path) {
+  const fs::path p(path);
+  return (p.is_absolute() ? p : ctx.directory / p).lexically_normal().string();
+}
+
+std::string existing(const Context& ctx, const YamlValue& value, bool directory, const std::string& what) {
+  const std::string path = resolve(ctx, value.string());
+  std::error_code ec;
+  if (!fs::exists(path, ec)) value.fail(what, fmt::format("'{}', which does not exist ({})", value.string(), path));
+  if (fs::is_directory(path, ec) != directory) {
+    value.fail(what, fmt::format("'{}', which is {}a directory ({})", value.string(), directory ? "not " : "", path));
+  }
+  return path;
+}
+
+// ---- one field list per options struct, driving the allowed keys and reading
+
+class FieldNames {
+ public:
+  std::vector<std::string> names;
+  void number(const char* key, double&, const Range&) { names.emplace_back(key); }
+  void integer(const char* key, int&, const IntRange&) { names.emplace_back(key); }
+  void boolean(const char* key, bool&) { names.emplace_back(key); }
+  void seed(const char* key, std::uint64_t&) { names.emplace_back(key); }
+  template <class E>
+  void choice(const char* key, E&, const std::vector<std::pair<std::string, E>>&) {
+    names.emplace_back(key);
+  }
+};
+
+class FieldReader {
+ public:
+  explicit FieldReader(const YamlMap& map) : map_(map) {}
+  void number(const char* key, double& x, const Range& r) {
+    if (auto v = map_.get(key)) x = v->number(r);
+  }
+  void integer(const char* key, int& x, const IntRange& r) {
+    if (auto v = map_.get(key)) x = static_cast<int>(v->integer(r));
+  }
+  void boolean(const char* key, bool& b) {
+    if (auto v = map_.get(key)) b = v->boolean();
+  }
+  void seed(const char* key, std::uint64_t& s) {
+    if (auto v = map_.get(key)) s = v->unsigned_integer();
+  }
+  template <class E>
+  void choice(const char* key, E& e, const std::vector<std::pair<std::string, E>>& table) {
+    auto v = map_.get(key);
+    if (!v) return;
+    std::vector<std::string> words;
+    for (const auto& [word, value] : table) words.push_back(word);
+    e = table[v->choice(words)].second;
+  }
+
+ private:
+  const YamlMap& map_;
+};
+
+template <class Visitor>
+void solver_fields(Visitor& v, CalibrationSolverSpec& s) {
+  using L = CalibrationSolverSpec::Loss;
+  v.choice("loss", s.loss, std::vector<std::pair<std::string, L>>{{"none", L::kNone}, {"huber", L::kHuber}, {"cauchy", L::kCauchy}});
+  v.number("loss_scale", s.loss_scale, Range::positive());
+  v.integer("starts", s.starts, IntRange{1, 256});
+  v.integer("max_iterations", s.max_iterations, IntRange{1, 10000});
+  v.seed("seed", s.seed);
+  v.integer("threads", s.threads, IntRange{1, 64});
+  v.number("min_reciprocal_condition", s.min_reciprocal_condition, Range::open(0.0, 1.0));
+}
+
+template <class Visitor>
+void ladder_fields(Visitor& v, LadderSpec& l) {
+  v.boolean("multires", l.multires);
+  v.integer("multires_coarse_factor", l.multires_coarse_factor, IntRange{2, 16});
+  v.integer("timing_repeats", l.timing_repeats, IntRange{1, 100});
+}
+
+template <class Spec, class Fields>
+std::vector<std::string> keys_of(Fields fields, std::vector<std::string> extra) {
+  FieldNames names;
+  Spec spec;
+  fields(names, spec);
+  extra.insert(extra.end(), names.names.begin(), names.names.end());
+  return extra;
+}
+
+// ---- pieces
+
+CalibrationRegion read_region(const YamlValue& value) {
+  const YamlMap map = value.map({"x", "y"});
+  const Eigen::Vector2d x = map.vec2("x", kCoordinate), y = map.vec2("y", kCoordinate);
+  for (const auto& [key, r] : {std::pair{"x", x}, std::pair{"y", y}}) {
+    if (!(r[0] < r[1])) map.get(key)->fail("a range [min, max] with min < max", fmt::format("[{}, {}]", r[0], r[1]));
+  }
+  return {x[0], x[1], y[0], y[1]};
+}
+
+ObservableSpec read_observable(const YamlValue& value) {
+  using K = ObservableSpec::Kind;
+  const std::vector<std::string> kinds = {"height_field", "transect", "crater_depth", "rim_height", "pile_angle", "furrow_area"};
+  const std::vector<std::vector<std::string>> keys = {
+      {"kind", "weight", "region_m"},
+      {"kind", "weight", "from_m", "to_m", "samples"},
+      {"kind", "weight", "region_m"},
+      {"kind", "weight", "region_m"},
+      {"kind", "weight", "centre_m"},
+      {"kind", "weight", "from_m", "to_m", "samples"}};
+  // the allowed keys depend on the kind: read it first, then check the map against its kind
+  if (!value.is_map()) value.fail("a map with a kind");
+  const YAML::Node kind_node = value.node()["kind"];
+  if (!kind_node) {
+    value.map({"kind", "weight", "region_m", "from_m", "to_m", "samples", "centre_m"})
+        .fail_missing("kind", "one of height_field, transect, crater_depth, rim_height, pile_angle, furrow_area");
+  }
+  const std::size_t kind = YamlValue(value.file(), kind_node, value.path() + ".kind").choice(kinds);
+  const YamlMap map = value.map(keys[kind]);
+  ObservableSpec o;
+  o.kind = static_cast<K>(kind);
+  o.weight = map.number_or("weight", Range::positive(), 1.0);
+  if (auto r = map.get("region_m")) o.region = read_region(*r);
+  if (o.kind == K::kTransect || o.kind == K::kFurrowArea) {
+    o.from_m = map.vec2("from_m", kCoordinate);
+    o.to_m = map.vec2("to_m", kCoordinate);
+    if (o.from_m == o.to_m) map.get("to_m")->fail("a point other than from_m");
+    o.samples = static_cast<int>(map.integer_or("samples", IntRange{2, 100000}, o.samples));
+  }
+  if (o.kind == K::kPileAngle) o.centre_m = map.vec2("centre_m", kCoordinate);
+  return o;
+}
+
+ReferenceSpec read_reference(const Context& ctx, const YamlValue& value) {
+  const YamlMap map = value.map({"data", "liggghts", "heuristic"});
+  int count = 0;
+  for (const char* key : {"data", "liggghts", "heuristic"}) count += map.has(key) ? 1 : 0;
+  if (count != 1) value.fail("exactly one of data, liggghts, heuristic", count == 0 ? "none" : "several");
+  ReferenceSpec r;
+  if (auto data = map.get("data")) {
+    r.kind = ReferenceSpec::Kind::kData;
+    r.directory = existing(ctx, *data, true, "a folder of a reference run (height_initial.npy, height_final.npy)");
+    for (const char* file : {"height_initial.npy", "height_final.npy"}) {
+      if (!fs::exists(fs::path(r.directory) / file)) data->fail(fmt::format("a folder holding {}", file), r.directory);
+    }
+  } else if (auto run = map.get("liggghts")) {
+    r.kind = ReferenceSpec::Kind::kLiggghts;
+    r.directory = resolve(ctx, run->string());
+  } else {
+    r.kind = ReferenceSpec::Kind::kHeuristic;
+    const YamlMap h = map.get("heuristic")->map({"material", "alpha", "repose_angle_deg", "sigma"});
+    r.material = h.string_or("material", "");
+    if (auto v = h.get("alpha")) r.alpha = v->number(Range::closed(0.0, 1.0));
+    if (auto v = h.get("repose_angle_deg")) r.repose_angle_rad = v->number(Range::left_open(0.0, 90.0)) * kDeg;
+    if (auto v = h.get("sigma")) r.sigma = v->number(Range::left_open(0.0, kSigmaMax));
+  }
+  return r;
+}
+
+CalibrationScene read_scene_entry(const Context& ctx, const YamlValue& value) {
+  const YamlMap map = value.map({"scene", "name", "role", "reference", "observables", "rmse_region_m"});
+  CalibrationScene s;
+  s.scene_path = existing(ctx, map.required("scene", "a scene file"), false, "a scene file");
+  s.name = map.string_or("name", "");
+  if (auto role = map.get("role")) s.role = role->choice({"fit", "held_out"}) == 0 ? CalibrationScene::Role::kFit
+                                                                                  : CalibrationScene::Role::kHeldOut;
+  s.reference = read_reference(ctx, map.required("reference", "a map with one of data, liggghts, heuristic"));
+  for (const YamlValue& o : map.required("observables", "a list of observables").list(1)) {
+    s.observables.push_back(read_observable(o));
+  }
+  if (auto r = map.get("rmse_region_m")) s.rmse_region = read_region(*r);
+  return s;
+}
+
+struct FieldLimits {
+  ParameterSpec::Field field;
+  const char* name;
+  Range range;          // in file units
+  double scale;         // file units -> SI
+  double default_lower, default_upper, default_step;  // file units
+};
+
+const std::vector<FieldLimits>& field_limits() {
+  using F = ParameterSpec::Field;
+  static const std::vector<FieldLimits> limits = {
+      {F::kAlpha, "alpha", Range::closed(0.0, 1.0), 1.0, 0.0, 1.0, 0.05},
+      {F::kReposeAngle, "repose_angle_deg", Range::left_open(0.0, 90.0), kDeg, 5.0, 85.0, 2.0},
+      {F::kSigma, "sigma", Range::left_open(0.0, kSigmaMax), 1.0, 0.01, kSigmaMax, 0.02}};
+  return limits;
+}
+
+ParameterSpec read_parameter(const YamlValue& value) {
+  const YamlMap map = value.map({"material", "name", "initial", "bounds", "step", "fixed"});
+  std::vector<std::string> names;
+  for (const FieldLimits& f : field_limits()) names.emplace_back(f.name);
+  const FieldLimits& f = field_limits()[map.required("name", "one of alpha, repose_angle_deg, sigma").choice(names)];
+  ParameterSpec p;
+  p.field = f.field;
+  p.material = map.string_or("material", p.material);
+  p.fixed = map.boolean_or("fixed", false);
+  double lower = f.default_lower, upper = f.default_upper;
+  if (auto b = map.get("bounds")) {
+    const Eigen::Vector2d v = b->vec2(f.range);
+    if (!(v[0] < v[1])) b->fail("bounds [lower, upper] with lower < upper", fmt::format("[{}, {}]", v[0], v[1]));
+    lower = v[0];
+    upper = v[1];
+  }
+  const double initial = map.number("initial", Range::closed(lower, upper));
+  const double step = map.number_or("step", Range::left_open(0.0, 0.5 * (upper - lower)), f.default_step);
+  p.initial = initial * f.scale;
+  p.lower = lower * f.scale;
+  p.upper = upper * f.scale;
+  p.step = std::min(step, 0.5 * (upper - lower)) * f.scale;
+  return p;
+}
+
+LadderSpec read_ladder(const Context& ctx, const YamlValue& value) {
+  const auto fields = [](auto& v, LadderSpec& l) { ladder_fields(v, l); };
+  const YamlMap map = value.map(keys_of<LadderSpec>(fields, {"scene", "heuristic_cell_sizes_m", "liggghts"}));
+  LadderSpec l;
+  FieldReader reader(map);
+  ladder_fields(reader, l);
+  l.scene = map.string_or("scene", "");
+  for (const YamlValue& c : map.required("heuristic_cell_sizes_m", "a list of cell sizes (m)").list(1)) {
+    l.heuristic_cell_sizes_m.push_back(c.number(Range::left_open(0.0, 1.0e3)));
+  }
+  if (auto list = map.get("liggghts")) {
+    for (const YamlValue& item : list->list()) {
+      const YamlMap m = item.map({"scene", "data"});
+      LadderReference r;
+      r.scene_path = existing(ctx, m.required("scene", "a scene file"), false, "a scene file");
+      r.directory = existing(ctx, m.required("data", "a reference run folder"), true, "a reference run folder");
+      for (const char* file : {"height_final.npy", "liggghts_manifest.json"}) {
+        if (!fs::exists(fs::path(r.directory) / file)) m.get("data")->fail(fmt::format("a folder holding {}", file), r.directory);
+      }
+      l.liggghts.push_back(r);
+    }
+  }
+  return l;
+}
+
+CalibrationSpec read_calibration(const Context& ctx, const YamlValue& root, const std::string& path) {
+  if (!root.is_map()) root.fail("a calibration (a map with scenes and parameters)");
+  const YamlMap map = root.map({"name", "scenes", "parameters", "solver", "ladder"});
+  CalibrationSpec spec;
+  spec.source_path = fs::absolute(path).lexically_normal().string();
+  spec.name = map.string_or("name", fs::path(path).stem().string());
+  const YamlValue scenes = map.required("scenes", "a list of scenes");
+  for (const YamlValue& s : scenes.list(1)) spec.scenes.push_back(read_scene_entry(ctx, s));
+  if (std::none_of(spec.scenes.begin(), spec.scenes.end(),
+                   [](const CalibrationScene& s) { return s.role == CalibrationScene::Role::kFit; })) {
+    scenes.fail("at least one scene with role fit", "only held_out scenes");
+  }
+  const YamlValue parameters = map.required("parameters", "a list of parameters");
+  for (const YamlValue& p : parameters.list(1)) {
+    ParameterSpec param = read_parameter(p);
+    for (const ParameterSpec& other : spec.parameters) {
+      if (other.label() == param.label()) p.fail("a parameter not listed before", param.label() + " again");
+    }
+    spec.parameters.push_back(param);
+  }
+  if (std::all_of(spec.parameters.begin(), spec.parameters.end(), [](const ParameterSpec& p) { return p.fixed; })) {
+    parameters.fail("at least one parameter that is not fixed", "all fixed");
+  }
+  if (auto s = map.get("solver")) {
+    const auto fields = [](auto& v, CalibrationSolverSpec& x) { solver_fields(v, x); };
+    const YamlMap solver = s->map(keys_of<CalibrationSolverSpec>(fields, {}));
+    FieldReader reader(solver);
+    solver_fields(reader, spec.solver);
+  }
+  if (auto l = map.get("ladder")) {
+    spec.ladder = read_ladder(ctx, *l);
+    // the ladder's scene name is checked once the scenes are loaded (calibration_problem.cpp)
+  }
+  return spec;
+}
+
+}  // namespace
+
+const char* parameter_field_name(ParameterSpec::Field field) {
+  switch (field) {
+    case ParameterSpec::Field::kAlpha: return "alpha";
+    case ParameterSpec::Field::kReposeAngle: return "repose_angle_deg";
+    case ParameterSpec::Field::kSigma: return "sigma";
+  }
+  return "?";
+}
+
+std::string ParameterSpec::label() const { return material + "." + parameter_field_name(field); }
+
+CalibrationSpec load_calibration_from_string(const std::string& yaml, const std::string& pretend_path) {
+  const Context ctx{fs::absolute(fs::path(pretend_path)).parent_path().lexically_normal()};
+  return read_calibration(ctx, parse_yaml(yaml, pretend_path), pretend_path);
+}
+
+CalibrationSpec load_calibration(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path + ": no such calibration file");
+  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a calibration file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return load_calibration_from_string(text.str(), path);
+}
+
+}  // namespace repose

@@ -1,0 +1,78 @@
+#pragma once
+// A calibration made ready to evaluate: every scene loaded and its ground
+// model built once, its reference surfaces loaded (or made), and the
+// reference's observables taken once. Evaluating a parameter set then runs
+// the heuristic on each scene (many sets in parallel, each run independent
+// and deterministic, so results do not depend on the thread count) and
+// returns the weighted residuals (heuristic - reference) of the fit scenes.
+//
+// Parameter values are kept as one vector over spec.parameters (SI units,
+// radians); the free ones are those not fixed, in the file's order.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "models/core/geometry/height_field.h"
+#include "models/core/base/progress.h"
+#include "models/core/config/scene.h"
+#include "models/ground/ground_model.h"
+#include "models/ground/ground_params.h"
+#include "validation/calibration/calibration_spec.h"
+
+namespace repose {
+
+struct PreparedScene {
+  CalibrationScene entry;          // name filled in
+  Scene scene;
+  GroundModel model;
+  HeightField initial;             // the heuristic starts here: the reference's initial surface
+  HeightField reference_final;
+  std::vector<std::vector<double>> reference_values;  // per observable
+  std::size_t residual_count = 0;
+  double grain_diameter_m = 0.0;   // of the scene's dem section (0 without one)
+  std::optional<double> reference_wall_time_s;  // the LIGGGHTS run's, from its manifest
+  std::optional<double> reference_cpu_time_s;
+  bool fit() const { return entry.role == CalibrationScene::Role::kFit; }
+};
+
+class CalibrationProblem {
+ public:
+  // Loads the scenes and references; a LIGGGHTS reference that is not made
+  // yet is run now (minutes). Throws InputError for a reference that does not
+  // fit its scene's grid, a parameter naming a material no fit scene has, or
+  // a ladder scene that is not listed.
+  CalibrationProblem(CalibrationSpec spec, const ProgressFn& progress = {});
+
+  const CalibrationSpec& spec() const { return spec_; }
+  const std::vector<PreparedScene>& scenes() const { return scenes_; }
+  const PreparedScene& scene_named(const std::string& name) const;
+  // Indices into spec().parameters of the free parameters.
+  const std::vector<std::size_t>& free() const { return free_; }
+
+  std::vector<double> initial_values() const;  // every parameter's initial value
+  // Every parameter's value with the free ones replaced.
+  std::vector<double> with_free(const std::vector<double>& free_values) const;
+  std::vector<double> free_of(const std::vector<double>& values) const;
+
+  // The scene's materials with the parameters applied (by material name).
+  GroundParams params_for(const PreparedScene& scene, const std::vector<double>& values) const;
+  HeightField run(const PreparedScene& scene, const std::vector<double>& values) const;
+  // weight * (heuristic - reference) / sqrt(count), observable after observable.
+  std::vector<double> residuals(const PreparedScene& scene, const HeightField& final_height) const;
+
+  // Residuals of all fit scenes (concatenated in scene order) at each point
+  // (free parameter values), computed on spec().solver.threads threads.
+  std::vector<std::vector<double>> fit_residuals(const std::vector<std::vector<double>>& free_points) const;
+  std::size_t fit_residual_count() const { return fit_residual_count_; }
+  long long runs() const { return runs_; }  // heuristic runs so far
+
+ private:
+  CalibrationSpec spec_;
+  std::vector<PreparedScene> scenes_;
+  std::vector<std::size_t> free_;
+  std::size_t fit_residual_count_ = 0;
+  mutable long long runs_ = 0;
+};
+
+}  // namespace repose

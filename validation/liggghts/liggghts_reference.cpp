@@ -1,0 +1,202 @@
+#include "validation/liggghts/liggghts_reference.h"
+
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "models/core/base/error.h"
+#include "models/core/io/json_writer.h"
+#include "models/core/io/mesh_io.h"
+#include "models/core/io/npy_io.h"
+#include "models/core/base/sha256.h"
+#include "validation/liggghts/liggghts_dump.h"
+#include "validation/liggghts/liggghts_thermo.h"
+#include "validation/particles/particle_observables.h"
+
+namespace repose {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kRunScriptFile = "run.in";
+
+void write_forces_csv(const fs::path& path, const ThermoTable& thermo, const RunScript& script, double step_s) {
+  std::ofstream out(path);
+  out << "time_s";
+  std::vector<int> cols;
+  for (const LiggghtsMeshFile& m : script.meshes) {
+    for (int a = 1; a <= 3; ++a) {
+      out << fmt::format(",{}_f{}_n", m.fix_id, "xyz"[a - 1]);
+      const int c = thermo.column(fmt::format("{}[{}]", m.fix_id, a));
+      REPOSE_DEMAND(c >= 0);
+      cols.push_back(c);
+    }
+  }
+  out << "\n";
+  for (const auto& row : thermo.rows) {
+    out << fmt::format("{}", row[0] * step_s);
+    for (int c : cols) out << fmt::format(",{}", row[c]);
+    out << "\n";
+  }
+  if (!out) throw InputError(fmt::format("{}: write failed", path.string()));
+}
+
+double mean_grain_diameter_m(const DemSpec& dem) { return 2.0 * dem.grain_radius_m; }
+
+// Runout over the dumps and, for a cylinder, the final pile's flank angles.
+void measure_column(LiggghtsReferenceResult& r, const Scene& scene, const std::vector<std::string>& dumps,
+                    const LiggghtsReferenceOptions& options, const fs::path& dir) {
+  std::vector<GrainSet> frames;
+  std::vector<double> times;
+  for (const std::string& path : dumps) {
+    DumpFrame f = read_last_dump_frame(path);
+    times.push_back(static_cast<double>(f.timestep) * scene.dem->time_step_s);
+    frames.push_back(std::move(f.grains));
+  }
+  const ColumnGeometry geometry = column_geometry(scene);
+  r.column = measure_column_collapse(geometry, read_last_dump_frame(r.bed.dump_path).grains, frames, times,
+                                     mean_grain_diameter_m(*scene.dem), options.column);
+  write_runout_csv((dir / "runout.csv").string(), *r.column);
+  if (geometry.shape == DemSpec::ColumnShape::kCylinder) {
+    r.pile = pile_flank_angles(r.height_final, geometry.axis_xy_m, options.flank);
+    write_flank_angles_csv((dir / "pile_flank_angles.csv").string(), *r.pile);
+  }
+}
+
+void write_manifest(const fs::path& path, const LiggghtsReferenceResult& r, const Scene& scene) {
+  std::ofstream out(path);
+  JsonWriter json(out);
+  json.begin_object();
+  json.key("solver").string("liggghts");
+  json.key("scene").string(scene.name);
+  json.key("scene_path").string(scene.source_path);
+  json.key("seed").unsigned_integer(scene.seed);
+  json.key("liggghts_version").string(r.run.version);
+  json.key("script_sha256").string(r.script_sha256);
+  json.key("grain_count").integer(r.grain_count);
+  json.key("steps").integer(r.steps);
+  json.key("time_step_s").number(scene.dem->time_step_s);
+  json.key("simulated_time_s").number(static_cast<double>(r.steps) * scene.dem->time_step_s);
+  json.key("wall_time_s").number(r.run.wall_time_s);
+  json.key("particle_steps_per_s").number(r.particle_steps_per_s);
+  json.key("cpu_time_s").number(r.run.cpu_time_s);
+  json.key("particle_steps_per_cpu_s")
+      .number(r.run.cpu_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.cpu_time_s : 0.0);
+  json.key("youngs_modulus_pa").number(scene.dem->youngs_modulus_pa);
+  json.key("youngs_modulus_note").string("softened, as DEM practice does, to allow a practical time step");
+  json.key("rayleigh_time_s").number(rayleigh_time_s(*scene.dem));
+  write_column_results(json, r);
+  write_mass_held_results(json, r);
+  json.key("bed").begin_object();
+  json.key("cache_key").string(r.bed.key);
+  json.key("directory").string(r.bed.directory);
+  json.key("from_cache").boolean(r.bed.from_cache);
+  json.key("grain_count").integer(r.bed.grain_count);
+  json.key("steps").integer(r.bed.steps);
+  json.key("wall_time_s").number(r.bed.wall_time_s);
+  json.key("cpu_time_s").number(r.bed.cpu_time_s);
+  json.end_object();
+  json.end_object();
+  out << "\n";
+  if (!out) throw InputError(fmt::format("{}: write failed", path.string()));
+}
+
+}  // namespace
+
+void write_column_results(JsonWriter& json, const LiggghtsReferenceResult& r) {
+  constexpr double deg = 180.0 / std::numbers::pi;
+  if (r.column) {
+    const ColumnCollapse& c = *r.column;
+    json.key("column").begin_object();
+    json.key("shape").string(c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder");
+    json.key("width_m").number(c.geometry.width_m);
+    json.key("slot_gap_m").number(c.geometry.gap_m);
+    json.key("height_initial_m").number(c.height_initial_m);
+    json.key("aspect_ratio").number(c.aspect_ratio);
+    json.key("front_initial_m").number(c.front_initial_m);
+    json.key("front_final_m").number(c.front_final_m);
+    json.key("front_final_spread_m").number(c.front_final_spread_m);
+    json.key("height_final_m").number(c.height_final_m);
+    json.key("runout_normalised").number(c.runout_normalised);
+    json.end_object();
+  }
+  if (r.pile) {
+    json.key("pile").begin_object();
+    json.key("flank_angle_mean_deg").number(r.pile->mean_rad * deg);
+    json.key("flank_angle_std_deg").number(r.pile->std_rad * deg);
+    json.key("azimuth_count").integer(static_cast<long>(r.pile->angle_rad.size()));
+    json.end_object();
+  }
+}
+
+void write_mass_held_results(JsonWriter& json, const LiggghtsReferenceResult& r) {
+  if (r.mass_held_kg.empty()) return;
+  json.key("mass_held_kg").begin_object();
+  for (const auto& [name, kg] : r.mass_held_kg) json.key(name).number(kg);
+  json.end_object();
+}
+
+LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::string& run_dir,
+                                               const LiggghtsReferenceOptions& options) {
+  const RunScript script = run_script(scene, options.script);  // checks the scene before any run
+  const fs::path dir(run_dir);
+  if (!fs::is_directory(dir)) throw InputError(fmt::format("{}: the run directory does not exist", run_dir));
+
+  LiggghtsReferenceResult r;
+  r.bed = settled_bed(scene, options.bed);
+
+  fs::copy_file(r.bed.restart_path, dir / kBedRestartFile, fs::copy_options::overwrite_existing);
+  // the bed's own manifest (its cost, also when it came from the cache)
+  fs::copy_file(fs::path(r.bed.directory) / "manifest.json", dir / "bed_manifest.json",
+                fs::copy_options::overwrite_existing);
+  for (const LiggghtsMeshFile& m : script.meshes) write_stl((dir / m.file_name).string(), m.mesh);
+  fs::create_directories(dir / kDumpDirectory);
+  std::ofstream(dir / kRunScriptFile) << script.text;
+  r.script_sha256 = sha256_hex(script.text);
+
+  LiggghtsRunOptions run = options.run;
+  run.total_steps = script.total_steps;
+  run.dump_directory = kDumpDirectory;
+  r.run = run_liggghts(run_dir, kRunScriptFile, run);
+  r.steps = script.total_steps;
+
+  const Grid& grid = scene.ground.grid;
+  const auto dumps = list_dump_files((dir / kDumpDirectory).string());
+  if (dumps.empty()) {
+    throw LiggghtsRunError(run_dir, (dir / "log.liggghts").string(), "the run wrote no dump");
+  }
+  const DumpFrame last = read_last_dump_frame(dumps.back());
+  r.grain_count = static_cast<long>(last.grains.size());
+  if (r.grain_count != r.bed.grain_count) {
+    throw LiggghtsRunError(run_dir, (dir / "log.liggghts").string(),
+                           fmt::format("{} grains at the end, {} in the bed", r.grain_count, r.bed.grain_count));
+  }
+  r.particle_steps_per_s =
+      r.run.wall_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.wall_time_s : 0.0;
+
+  r.height_initial = surface_height(read_last_dump_frame(r.bed.dump_path).grains, grid, options.surface);
+  r.height_final = surface_height(last.grains, grid, options.surface);
+  write_npy_2d((dir / "height_initial.npy").string(), r.height_initial.heights());
+  write_npy_2d((dir / "height_final.npy").string(), r.height_final.heights());
+  write_field_csv((dir / "height_initial.csv").string(), r.height_initial, "height_m");
+  write_field_csv((dir / "height_final.csv").string(), r.height_final, "height_m");
+  const HeightField material = material_per_area(last.grains, grid);
+  write_npy_2d((dir / "material_per_area_final.npy").string(), material.heights());
+  write_field_csv((dir / "material_per_area_final.csv").string(), material, "grain_volume_per_area_m");
+  write_forces_csv(dir / "forces.csv", read_thermo_table((dir / "log.liggghts").string()), script,
+                   scene.dem->time_step_s);
+  if (scene.dem->initial == DemSpec::Initial::kColumn) measure_column(r, scene, dumps, options, dir);
+  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    const ObjectSpec& o = scene.objects[k];
+    const TriangleMesh world = transformed(o.body, o.pose_at(scene.time.duration_s));
+    r.mass_held_kg.emplace_back(o.name.empty() ? fmt::format("object_{}", k) : o.name,
+                                mass_held_by_object_kg(last.grains, world, scene.dem->density_kg_m3));
+  }
+  write_manifest(dir / "liggghts_manifest.json", r, scene);
+  return r;
+}
+
+}  // namespace repose

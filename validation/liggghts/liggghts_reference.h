@@ -1,0 +1,76 @@
+#pragma once
+// A scene run as a LIGGGHTS reference, from scene to observables:
+//   1. the settled bed (liggghts_bed.h, cached) the run starts from;
+//   2. the run script (objects as STL meshes, keyframed motion) run in run_dir;
+//   3. observables written to run_dir:
+//        height_initial.npy / .csv   surface of the settled bed (the heuristic's
+//                                    initial height field for a compared run)
+//        height_final.npy / .csv     surface after the run
+//        material_per_area_final.npy grain volume per unit area (m)
+//        forces.csv                  time_s and the force (N) on each object over time
+//        liggghts_manifest.json      LIGGGHTS version, script sha256, grain count,
+//                                    steps, particle-steps per second, wall and CPU times
+//        bed_manifest.json           the settled bed's manifest (its cost)
+//   the manifest also holds mass_held_kg: the mass of grains each object holds at the end
+//   and for a scene that starts from a column (dem.initial: column):
+//        runout.csv                  time_s, front_m: the deposit front over the dumps
+//        pile_flank_angles.csv       cylinder columns: the final pile's flank angle per azimuth (degrees)
+// run_dir must exist and should be empty (the caller makes it atomic, e.g.
+// with OutputDirectory); the run's own files (run.in, log.liggghts, dumps/) stay there.
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "models/core/geometry/height_field.h"
+#include "models/core/io/json_writer.h"
+#include "models/core/config/scene.h"
+#include "validation/particles/column_collapse.h"
+#include "validation/liggghts/liggghts_bed.h"
+#include "validation/liggghts/liggghts_runner.h"
+#include "validation/liggghts/liggghts_script.h"
+#include "validation/particles/particle_observables.h"
+#include "validation/particles/surface_height.h"
+
+namespace repose {
+
+struct LiggghtsReferenceOptions {
+  BedOptions bed;                // cache directory, bed sizing, the settling run's options
+  RunScriptOptions script;
+  LiggghtsRunOptions run;        // executable, wall-clock limit, progress of the run itself
+  SurfaceHeightOptions surface;
+  ColumnCollapseOptions column;
+  FlankAngleOptions flank;
+};
+
+struct LiggghtsReferenceResult {
+  SettledBed bed;
+  LiggghtsRunSummary run;
+  long grain_count = 0;          // grains in the last dump
+  long steps = 0;                // steps of the run (after the bed)
+  double particle_steps_per_s = 0.0;
+  std::string script_sha256;
+  HeightField height_initial;    // surface of the settled bed on the scene's grid
+  HeightField height_final;      // surface after the run
+  std::optional<ColumnCollapse> column;  // a column scene: its runout
+  std::optional<FlankAngles> pile;       // a cylinder column: the final pile's flank angles
+  // Per object (scene order): its name and the mass (kg) of the grains it
+  // holds at the end of the run (mass_held_by_object_kg, observables.h), the
+  // object at ObjectSpec::pose_at(scene duration), grains of the scene's density.
+  std::vector<std::pair<std::string, double>> mass_held_kg;
+};
+
+// Throws InputError for a scene that cannot run (no dem section, a time step
+// too large) and LiggghtsRunError when a run fails.
+LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::string& run_dir,
+                                               const LiggghtsReferenceOptions& options = {});
+
+// The column and pile results (when present) as members "column" and "pile"
+// of the JSON object being written (degrees for angles, as in files).
+void write_column_results(JsonWriter& json, const LiggghtsReferenceResult& r);
+// The mass held by each object as a member "mass_held_kg": {"<object name>": kg, ...}
+// (left out for a scene without objects), so a measure reads mass_held_kg.<object name>.
+void write_mass_held_results(JsonWriter& json, const LiggghtsReferenceResult& r);
+
+}  // namespace repose

@@ -1,0 +1,511 @@
+#include "validation/liggghts/liggghts_script.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "models/core/base/error.h"
+
+namespace repose {
+
+namespace {
+
+const DemSpec& require_dem(const Scene& scene) {
+  if (!scene.dem) {
+    throw InputError(fmt::format("{}: dem: the scene has no 'dem' section, so it cannot run under LIGGGHTS",
+                                 scene.source_path.empty() ? scene.name : scene.source_path));
+  }
+  check_dem_spec(*scene.dem);
+  return *scene.dem;
+}
+
+void require_positive(double v, const char* key) {
+  if (!(std::isfinite(v) && v > 0.0)) throw InputError(fmt::format("dem: {}: expected a positive number, got {}", key, v));
+}
+
+void require_non_negative(double v, const char* key) {
+  if (!(std::isfinite(v) && v >= 0.0)) {
+    throw InputError(fmt::format("dem: {}: expected a non-negative number, got {}", key, v));
+  }
+}
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+bool is_prime(std::uint64_t n) {
+  if (n < 2) return false;
+  for (std::uint64_t d = 2; d * d <= n; ++d) {
+    if (n % d == 0) return false;
+  }
+  return true;
+}
+
+long steps_for(double time_s, double step_s) { return std::lround(time_s / step_s); }
+
+std::string rolling_model_name(const DemSpec& dem) {
+  return dem.rolling_model == DemSpec::RollingModel::kCdt ? "cdt" : "epsd2";
+}
+
+// Grain-wall contact: the grain-grain law without cohesion (grains do not stick to walls).
+std::string wall_model(const DemSpec& dem) {
+  return "model hertz tangential history rolling_friction " + rolling_model_name(dem);
+}
+
+std::string box_block(const DemDomain& d) {
+  return fmt::format("{} {} {} {} {} {}", liggghts_number(d.x_min_m), liggghts_number(d.x_max_m),
+                     liggghts_number(d.y_min_m), liggghts_number(d.y_max_m), liggghts_number(d.z_min_m),
+                     liggghts_number(d.z_max_m));
+}
+
+// Everything both scripts set after the box exists: contact law, materials,
+// time step, gravity, the floor and side walls, integration.
+// Atom types: 1 the grains (and every wall), 2 a rough floor. Per-type
+// properties list the grains' values for both; pair tables differ only in
+// the grain-floor rolling friction.
+bool rough_floor(const DemSpec& dem) { return dem.floor == DemSpec::Floor::kRough; }
+int atom_type_count(const DemSpec& dem) { return rough_floor(dem) ? 2 : 1; }
+
+std::string per_type(const DemSpec& dem, double v) {
+  return rough_floor(dem) ? liggghts_number(v) + " " + liggghts_number(v) : liggghts_number(v);
+}
+
+// A type-pair table: `grains` between grains, `floor` between a grain and the floor.
+std::string per_type_pair(const DemSpec& dem, double grains, double floor) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  if (!rough_floor(dem)) return "1 " + n(grains);
+  return "2 " + n(grains) + " " + n(floor) + " " + n(floor) + " " + n(floor);
+}
+
+// Everything both scripts set after the box exists: contact law, materials,
+// time step, gravity, the floor and side walls, integration.
+void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  s << "neighbor " << n(dem.grain_radius_m * (1.0 + dem.radius_spread)) << " bin\n"
+    << "neigh_modify delay 0\n\n"
+    << "# materials (Young's modulus softened, as DEM practice does)"
+    << (rough_floor(dem) ? "; type 2: the rough floor" : "") << "\n"
+    << "fix m1 all property/global youngsModulus peratomtype " << per_type(dem, dem.youngs_modulus_pa) << "\n"
+    << "fix m2 all property/global poissonsRatio peratomtype " << per_type(dem, dem.poisson_ratio) << "\n"
+    << "fix m3 all property/global coefficientRestitution peratomtypepair "
+    << per_type_pair(dem, dem.restitution, dem.restitution) << "\n"
+    << "fix m4 all property/global coefficientFriction peratomtypepair " << per_type_pair(dem, dem.friction, dem.friction)
+    << "\n"
+    << "fix m5 all property/global coefficientRollingFriction peratomtypepair "
+    << per_type_pair(dem, dem.rolling_friction, dem.floor_rolling_friction) << "\n";
+  const bool cohesive = dem.cohesion_energy_density_j_m3 > 0.0;
+  if (cohesive) {
+    s << "fix m6 all property/global cohesionEnergyDensity peratomtypepair "
+      << per_type_pair(dem, dem.cohesion_energy_density_j_m3, 0.0) << "\n";
+  }
+  s << "\n# Hertz-Mindlin with tangential history and rolling friction\n"
+    << "pair_style gran model hertz tangential history rolling_friction " << rolling_model_name(dem)
+    << (cohesive ? " cohesion sjkr" : "") << "\n"
+    << "pair_coeff * *\n"
+    << "timestep " << n(dem.time_step_s) << "\n"
+    << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector 0 0 -1\n\n"
+    << "# floor and side walls on the ground grid's edges\n";
+  const std::string wall = "all wall/gran " + wall_model(dem) + " primitive type 1";
+  const std::string floor = "all wall/gran " + wall_model(dem) + " primitive type " + std::to_string(atom_type_count(dem));
+  s << "fix wall_floor " << floor << " zplane " << n(d.z_min_m) << "\n"
+    << "fix wall_xmin " << wall << " xplane " << n(d.x_min_m) << "\n"
+    << "fix wall_xmax " << wall << " xplane " << n(d.x_max_m) << "\n"
+    << "fix wall_ymin " << wall << " yplane " << n(d.y_min_m) << "\n"
+    << "fix wall_ymax " << wall << " yplane " << n(d.y_max_m) << "\n"
+    << "fix integrate all nve/sphere\n\n";
+}
+
+bool is_column(const DemSpec& dem) { return dem.initial == DemSpec::Initial::kColumn; }
+
+// Height of the insertion region: grains are inserted loosely (at
+// insert_volume_fraction) and fall. In a narrow column the walls keep grain
+// centres a radius away, so the region is made taller by the ratio of the
+// footprint to the area open to centres (a bed's is left as it is).
+double fill_height_m(const Scene& scene, const BedScriptOptions& o) {
+  const DemSpec& dem = *scene.dem;
+  double factor = 1.0;
+  if (is_column(dem)) {
+    const ColumnGeometry c = column_geometry(scene);
+    const double r = dem.grain_radius_m * (1.0 + dem.radius_spread);
+    const double open = c.shape == DemSpec::ColumnShape::kSlot
+                            ? (c.width_m - 2 * r) * (c.gap_m - 2 * r)
+                            : std::numbers::pi * (c.width_m - r) * (c.width_m - r);
+    factor = c.footprint_m2 / open;
+  }
+  return settled_height_m(dem) * o.packing_fraction / o.insert_volume_fraction * factor;
+}
+
+// The region grains are inserted into and, for a column, the gate that holds them.
+void write_insertion_region(std::ostringstream& s, const Scene& scene, const DemDomain& d, double fill_m) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  const DemSpec& dem = *scene.dem;
+  if (!is_column(dem)) {
+    s << "region fill block " << n(d.x_min_m) << " " << n(d.x_max_m) << " " << n(d.y_min_m) << " " << n(d.y_max_m)
+      << " 0 " << n(fill_m) << " units box\n";
+    return;
+  }
+  const ColumnGeometry c = column_geometry(scene);
+  const std::string wall = "all wall/gran " + wall_model(dem) + " primitive type 1";
+  s << "# the column's gate (left out of the run script: removed at t = 0)\n";
+  if (c.shape == DemSpec::ColumnShape::kSlot) {
+    s << "fix gate " << wall << " xplane " << n(c.gate_x_m) << "\n"
+      << "region fill block " << n(c.back_wall_x_m) << " " << n(c.gate_x_m) << " " << n(d.y_min_m) << " "
+      << n(d.y_max_m) << " 0 " << n(fill_m) << " units box\n";
+  } else {
+    s << "fix gate " << wall << " zcylinder " << n(c.width_m) << " " << n(c.axis_xy_m.x()) << " "
+      << n(c.axis_xy_m.y()) << "\n"
+      << "region fill cylinder z " << n(c.axis_xy_m.x()) << " " << n(c.axis_xy_m.y()) << " " << n(c.width_m)
+      << " 0 " << n(fill_m) << " units box\n";
+  }
+}
+
+// Position of an object at time t: linear between keyframes, held outside.
+Eigen::Vector3d position_at(const ObjectSpec& object, double t) {
+  const auto& k = object.keyframes;
+  REPOSE_DEMAND(!k.empty());
+  if (t <= k.front().time_s) return k.front().pose.position_m;
+  if (t >= k.back().time_s) return k.back().pose.position_m;
+  for (std::size_t i = 0; i + 1 < k.size(); ++i) {
+    if (t <= k[i + 1].time_s) {
+      const double span = k[i + 1].time_s - k[i].time_s;
+      const double a = span > 0 ? (t - k[i].time_s) / span : 1.0;
+      return (1 - a) * k[i].pose.position_m + a * k[i + 1].pose.position_m;
+    }
+  }
+  return k.back().pose.position_m;
+}
+
+// Does any keyframe turn the object away from its first orientation?
+bool rotates(const ObjectSpec& object) {
+  const Eigen::Quaterniond q0 = object.keyframes.front().pose.orientation.normalized();
+  for (const Keyframe& k : object.keyframes) {
+    if (std::abs(std::abs(q0.dot(k.pose.orientation.normalized())) - 1.0) > 1e-12) return true;
+  }
+  return false;
+}
+
+// The constant-rate rotation carrying orientation a to b along the slerp
+// (the shortest way): angle in [0, pi] about a unit world axis; angle 0 when they agree.
+struct Turn {
+  double angle_rad = 0.0;
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+};
+
+Turn turn_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
+  Eigen::Quaterniond d = b.normalized() * a.normalized().conjugate();
+  if (d.w() < 0.0) d.coeffs() = -d.coeffs();
+  const double s = d.vec().norm();
+  Turn t;
+  if (s <= 1e-15) return t;
+  t.angle_rad = 2.0 * std::atan2(s, d.w());
+  t.axis = d.vec() / s;
+  return t;
+}
+
+// The times at which any object's velocity may change, within [0, duration].
+std::vector<double> segment_times(const Scene& scene) {
+  std::set<double> times = {0.0, scene.time.duration_s};
+  for (const ObjectSpec& o : scene.objects) {
+    for (const Keyframe& k : o.keyframes) {
+      if (k.time_s > 0.0 && k.time_s < scene.time.duration_s) times.insert(k.time_s);
+    }
+  }
+  return {times.begin(), times.end()};
+}
+
+}  // namespace
+
+std::string liggghts_number(double v) {
+  REPOSE_DEMAND(std::isfinite(v));
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  REPOSE_DEMAND(r.ec == std::errc());
+  return {buf, r.ptr};
+}
+
+double rayleigh_time_s(const DemSpec& dem) {
+  const double r = dem.grain_radius_m * (1.0 - dem.radius_spread);
+  const double shear_modulus = dem.youngs_modulus_pa / (2.0 * (1.0 + dem.poisson_ratio));
+  return std::numbers::pi * r * std::sqrt(dem.density_kg_m3 / shear_modulus) / (0.1631 * dem.poisson_ratio + 0.8766);
+}
+
+void check_dem_spec(const DemSpec& dem) {
+  require_positive(dem.grain_radius_m, "grain_radius_m");
+  if (!(dem.radius_spread >= 0.0 && dem.radius_spread < 0.5)) {
+    throw InputError(fmt::format("dem: radius_spread: expected a value in [0, 0.5), got {}", dem.radius_spread));
+  }
+  require_positive(dem.density_kg_m3, "density_kg_m3");
+  require_positive(dem.youngs_modulus_pa, "youngs_modulus_pa");
+  if (!(dem.poisson_ratio > -1.0 && dem.poisson_ratio < 0.5)) {
+    throw InputError(fmt::format("dem: poisson_ratio: expected a value in (-1, 0.5), got {}", dem.poisson_ratio));
+  }
+  if (!(dem.restitution > 0.0 && dem.restitution <= 1.0)) {
+    throw InputError(fmt::format("dem: restitution: expected a value in (0, 1], got {}", dem.restitution));
+  }
+  require_non_negative(dem.friction, "friction");
+  require_non_negative(dem.rolling_friction, "rolling_friction");
+  require_non_negative(dem.cohesion_energy_density_j_m3, "cohesion_energy_density_j_m3");
+  require_non_negative(dem.floor_rolling_friction, "floor_rolling_friction");
+  require_positive(dem.time_step_s, "time_step_s");
+  require_positive(dem.bed_depth_m, "bed_depth_m");
+  require_positive(dem.settle_kinetic_energy_j, "settle_kinetic_energy_j");
+  require_non_negative(dem.gravity_m_s2, "gravity_m_s2");
+  require_positive(dem.dump_interval_s, "dump_interval_s");
+  const double t_r = rayleigh_time_s(dem);
+  const double max_step = kMaxRayleighFraction * t_r;
+  if (dem.time_step_s > max_step) {
+    throw InputError(fmt::format(
+        "dem: time_step_s: {:.6g} s is above 20 % of the Rayleigh time {:.6g} s of the smallest grain; "
+        "use a step of at most {:.6g} s (or a smaller Young's modulus / larger grains)",
+        dem.time_step_s, t_r, max_step));
+  }
+}
+
+std::vector<std::uint64_t> liggghts_seeds(std::uint64_t scene_seed, int count) {
+  std::vector<std::uint64_t> seeds;
+  std::uint64_t state = scene_seed;
+  while (static_cast<int>(seeds.size()) < count) {
+    state = splitmix64(state);
+    std::uint64_t candidate = 10007 + state % 100000000ULL;
+    while (!is_prime(candidate)) ++candidate;
+    if (std::find(seeds.begin(), seeds.end(), candidate) == seeds.end()) seeds.push_back(candidate);
+  }
+  return seeds;
+}
+
+std::vector<double> grain_radii_m(const DemSpec& dem) {
+  if (dem.radius_spread == 0.0) return {dem.grain_radius_m};
+  std::vector<double> radii;
+  constexpr int kCount = 5;
+  for (int k = 0; k < kCount; ++k) {
+    radii.push_back(dem.grain_radius_m * (1.0 + dem.radius_spread * (2.0 * k / (kCount - 1) - 1.0)));
+  }
+  return radii;
+}
+
+double mean_grain_volume_m3(const DemSpec& dem) {
+  const auto radii = grain_radii_m(dem);
+  double sum = 0.0;
+  for (double r : radii) sum += 4.0 / 3.0 * std::numbers::pi * r * r * r;
+  return sum / static_cast<double>(radii.size());
+}
+
+long bed_grain_count(const Scene& scene, const BedScriptOptions& options) {
+  const DemSpec& dem = require_dem(scene);
+  const Grid& g = scene.ground.grid;
+  const double footprint = is_column(dem) ? column_geometry(scene).footprint_m2 : g.extent_x_m() * g.extent_y_m();
+  const double volume = footprint * settled_height_m(dem) * options.packing_fraction;
+  return std::lround(volume / mean_grain_volume_m3(dem));
+}
+
+DemDomain bed_domain(const Scene& scene, const BedScriptOptions& options) {
+  const DemSpec& dem = require_dem(scene);
+  const Grid& g = scene.ground.grid;
+  DemDomain d;
+  d.x_min_m = g.origin_x_m;
+  d.x_max_m = g.origin_x_m + g.extent_x_m();
+  d.y_min_m = g.origin_y_m;
+  d.y_max_m = g.origin_y_m + g.extent_y_m();
+  d.z_min_m = 0.0;
+  d.z_max_m = fill_height_m(scene, options) + 4.0 * dem.grain_radius_m;
+  return d;
+}
+
+long bed_max_steps(const Scene& scene, const BedScriptOptions& options) {
+  const DemSpec& dem = require_dem(scene);
+  const long chunk = std::max(1L, steps_for(options.settle_check_interval_s, dem.time_step_s));
+  const long chunks = std::max(1L, std::lround(std::ceil(options.max_settle_time_s / options.settle_check_interval_s)));
+  return 1 + chunk * chunks;
+}
+
+std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
+  const DemSpec& dem = require_dem(scene);
+  if (!(options.insert_volume_fraction > 0.0 && options.insert_volume_fraction < options.packing_fraction &&
+        options.packing_fraction < 0.75)) {
+    throw InputError("bed options: expected 0 < insert_volume_fraction < packing_fraction < 0.75");
+  }
+  const auto n = [](double v) { return liggghts_number(v); };
+  const DemDomain d = bed_domain(scene, options);
+  const auto radii = grain_radii_m(dem);
+  const auto seeds = liggghts_seeds(scene.seed, static_cast<int>(radii.size()) + 2);
+  const long grains = bed_grain_count(scene, options);
+  if (grains > options.max_grain_count) {
+    throw InputError(fmt::format(
+        "{}: dem: the bed would hold {} grains, more than the limit of {}; use larger grains, a shallower bed "
+        "(bed_depth_m) or a smaller ground grid",
+        scene.source_path, grains, options.max_grain_count));
+  }
+  const long chunk = std::max(1L, steps_for(options.settle_check_interval_s, dem.time_step_s));
+  const long chunks = std::max(1L, std::lround(std::ceil(options.max_settle_time_s / options.settle_check_interval_s)));
+
+  std::ostringstream s;
+  s << "# repose: settled bed for scene '" << scene.name << "' (generated; do not edit)\n"
+    << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\n"
+    << "communicate single vel yes\nunits si\n"
+    << "region domain block " << box_block(d) << " units box\n"
+    << "create_box " << atom_type_count(dem) << " domain\n";
+  write_physics(s, dem, d);
+  s << "# grains: " << radii.size() << " radii, equal in number\n";
+  for (std::size_t k = 0; k < radii.size(); ++k) {
+    s << "fix pts" << k << " all particletemplate/sphere " << seeds[k] << " atom_type 1 density constant "
+      << n(dem.density_kg_m3) << " radius constant " << n(radii[k]) << "\n";
+  }
+  s << "fix pdd all particledistribution/discrete/numberbased " << seeds[radii.size()] << " " << radii.size();
+  for (std::size_t k = 0; k < radii.size(); ++k) s << " pts" << k << " " << n(1.0 / static_cast<double>(radii.size()));
+  s << "\n";
+  write_insertion_region(s, scene, d, fill_height_m(scene, options));
+  s << "fix ins all insert/pack seed " << seeds[radii.size() + 1]
+    << " distributiontemplate pdd maxattempt 200 insert_every once overlapcheck yes all_in yes"
+    << " vel constant 0 0 0 region fill particles_in_region " << grains << " ntry_mc 100000\n\n"
+    << "thermo_style custom step atoms ke\n"
+    << "thermo " << std::max(1L, steps_for(options.thermo_interval_s, dem.time_step_s)) << "\n"
+    << "thermo_modify lost error norm no\n"
+    << "run 1\nunfix ins\n\n"
+    << "# settle until the kinetic energy falls below the threshold\n"
+    << "variable settle_ke equal ke\n"
+    << "label settle_loop\n"
+    << "variable settle_i loop " << chunks << "\n"
+    << "run " << chunk << "\n"
+    << "if \"${settle_ke} < " << n(dem.settle_kinetic_energy_j) << "\" then \"jump SELF settled\"\n"
+    << "next settle_i\n"
+    << "jump SELF settle_loop\n"
+    << "print \"" << kFailureMarker << ": the bed did not settle below " << n(dem.settle_kinetic_energy_j)
+    << " J within " << n(options.max_settle_time_s) << " s\"\n"
+    << "jump SELF finished\n"
+    << "label settled\n"
+    << "print \"" << kSettledMarker << "\"\n"
+    << "write_restart " << kBedRestartFile << "\n"
+    << "dump bed all custom 1 " << kBedDumpFile << " id type x y z radius\n"
+    << "dump_modify bed sort id\n"
+    << "run 0\n"
+    << "undump bed\n"
+    << "print \"" << kCompleteMarker << "\"\n"
+    << "label finished\n";
+  return s.str();
+}
+
+RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
+  const DemSpec& dem = require_dem(scene);
+  const auto n = [](double v) { return liggghts_number(v); };
+  RunScript out;
+
+  // domain: the grid's extent, up to the highest point any object reaches
+  const Grid& g = scene.ground.grid;
+  DemDomain& d = out.domain;
+  d.x_min_m = g.origin_x_m;
+  d.x_max_m = g.origin_x_m + g.extent_x_m();
+  d.y_min_m = g.origin_y_m;
+  d.y_max_m = g.origin_y_m + g.extent_y_m();
+  // a column, once its gate is gone, only falls; a bed may be heaped up by the objects
+  if (is_column(dem)) column_geometry(scene);  // refuses a column that does not fit, before any run
+  double top = is_column(dem) ? 1.25 * dem.column_height_m : dem.bed_depth_m * 2.0;
+  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    const ObjectSpec& o = scene.objects[k];
+    if (rotates(o)) {
+      // any orientation in between: the body's farthest vertex from its origin bounds its top
+      double reach = 0.0;
+      for (Eigen::Index v = 0; v < o.body.V.rows(); ++v) reach = std::max(reach, o.body.V.row(v).norm());
+      for (const Keyframe& key : o.keyframes) top = std::max(top, key.pose.position_m.z() + reach);
+      out.meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, o.pose_at(0.0))});
+      continue;
+    }
+    const Aabb body = bounding_box(transformed(o.body, Pose{Eigen::Vector3d::Zero(), o.keyframes.front().pose.orientation}));
+    for (const Keyframe& key : o.keyframes) top = std::max(top, key.pose.position_m.z() + body.max.z());
+    Pose start = o.keyframes.front().pose;
+    start.position_m = position_at(o, 0.0);
+    out.meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, start)});
+  }
+  d.z_max_m = top + (options.top_margin_m > 0 ? options.top_margin_m : 8.0 * dem.grain_radius_m);
+
+  const long thermo_every = std::max(1L, steps_for(options.thermo_interval_s, dem.time_step_s));
+  out.dump_interval_steps = std::max(1L, steps_for(dem.dump_interval_s, dem.time_step_s));
+
+  std::ostringstream s;
+  s << "# repose: run of scene '" << scene.name << "' on a settled bed (generated; do not edit)\n"
+    << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\n"
+    << "communicate single vel yes\nunits si\n"
+    << "read_restart " << kBedRestartFile << "\n";
+  write_physics(s, dem, d);
+  s << "# per-atom restart data must be consumed by a run before the box may grow;\n"
+    << "# after a restart, reset_timestep must come right before a run\n"
+    << "reset_timestep 0\n"
+    << "run 0\n"
+    << "change_box all z final " << n(d.z_min_m) << " " << n(d.z_max_m) << " units box\n\n";
+  std::string thermo = "thermo_style custom step atoms ke";
+  if (!out.meshes.empty()) {
+    s << "# objects: STL meshes (force on each in f_objK[1..3]) made granular walls\n";
+    std::string ids;
+    for (const LiggghtsMeshFile& m : out.meshes) {
+      s << "fix " << m.fix_id << " all mesh/surface/stress file " << m.file_name << " type 1 stress on\n";
+      ids += " " + m.fix_id;
+      thermo += fmt::format(" f_{0}[1] f_{0}[2] f_{0}[3]", m.fix_id);
+    }
+    s << "fix object_walls all wall/gran " << wall_model(dem) << " mesh n_meshes " << out.meshes.size()
+      << " meshes" << ids << "\n\n";
+  }
+  s << thermo << "\n"
+    << "thermo " << thermo_every << "\n"
+    << "thermo_modify lost error norm no\n"
+    << "dump grains all custom " << out.dump_interval_steps << " " << kDumpDirectory
+    << "/dump.*.txt id type x y z radius\n"
+    << "dump_modify grains sort id\n\n";
+
+  // keyframed motion: per object and segment a linear velocity and, for a
+  // rotating object, a constant-rate rotation (the slerp between keyframes)
+  // about the body origin. LIGGGHTS superposes move/mesh fixes on one mesh,
+  // each later one in the frame carried by the earlier ones: linear first,
+  // then rotate with its origin at the body origin's segment-start position
+  // (so the centre of rotation travels with the object); superposed fixes
+  // must be unfixed in reverse order. Checked against a real run in
+  // tests/validation/rotating_mesh_test.cpp.
+  const std::vector<double> times = segment_times(scene);
+  for (std::size_t seg = 0; seg + 1 < times.size(); ++seg) {
+    const long first = steps_for(times[seg], dem.time_step_s);
+    const long last = steps_for(times[seg + 1], dem.time_step_s);
+    if (last <= first) continue;
+    const double span_s = static_cast<double>(last - first) * dem.time_step_s;
+    std::vector<std::string> fixes;
+    s << "# segment " << seg << ": t = " << n(times[seg]) << " .. " << n(times[seg + 1]) << " s\n";
+    for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+      const ObjectSpec& o = scene.objects[k];
+      const bool turning = rotates(o);
+      const Pose a = turning ? o.pose_at(times[seg]) : Pose{position_at(o, times[seg]), Eigen::Quaterniond::Identity()};
+      const Pose b =
+          turning ? o.pose_at(times[seg + 1]) : Pose{position_at(o, times[seg + 1]), Eigen::Quaterniond::Identity()};
+      const Eigen::Vector3d v = (b.position_m - a.position_m) / span_s;
+      std::vector<std::string> object_fixes;
+      if (!v.isZero(0.0)) {
+        const std::string id = fmt::format("move{}_{}", k, seg);
+        s << "fix " << id << " all move/mesh mesh " << out.meshes[k].fix_id << " linear " << n(v.x()) << " "
+          << n(v.y()) << " " << n(v.z()) << "\n";
+        object_fixes.push_back(id);
+      }
+      const Turn turn = turning ? turn_between(a.orientation, b.orientation) : Turn{};
+      if (turn.angle_rad > 0.0) {
+        const std::string id = fmt::format("turn{}_{}", k, seg);
+        const Eigen::Vector3d& p = a.position_m;
+        s << "fix " << id << " all move/mesh mesh " << out.meshes[k].fix_id << " rotate origin " << n(p.x()) << " "
+          << n(p.y()) << " " << n(p.z()) << " axis " << n(turn.axis.x()) << " " << n(turn.axis.y()) << " "
+          << n(turn.axis.z()) << " period " << n(2.0 * std::numbers::pi * span_s / turn.angle_rad) << "\n";
+        object_fixes.push_back(id);
+      }
+      fixes.insert(fixes.end(), object_fixes.rbegin(), object_fixes.rend());
+    }
+    s << "run " << (last - first) << "\n";
+    for (const std::string& id : fixes) s << "unfix " << id << "\n";
+    out.total_steps = last;
+  }
+  s << "print \"" << kCompleteMarker << "\"\n";
+  out.text = s.str();
+  return out;
+}
+
+}  // namespace repose

@@ -1,0 +1,30 @@
+#pragma once
+// Where a granular column stands before its gate is removed (dem.initial:
+// column), in the scene's coordinates: shared by every particle reference.
+
+#include <Eigen/Core>
+
+#include "models/core/config/scene.h"
+
+namespace repose {
+
+struct ColumnGeometry {
+  DemSpec::ColumnShape shape = DemSpec::ColumnShape::kCylinder;
+  Eigen::Vector2d axis_xy_m = Eigen::Vector2d::Zero();  // cylinder: its axis (the grid's centre)
+  double back_wall_x_m = 0.0;  // slot: the wall the column leans on (the grid's x_min edge)
+  double gate_x_m = 0.0;       // slot: the gate plane, back_wall_x_m + width_m
+  double gap_m = 0.0;          // slot: the distance between the side walls (the grid's y extent)
+  double width_m = 0.0;        // slot: L0 along x; cylinder: radius R0
+  double height_m = 0.0;       // H0, the intended settled height
+  double footprint_m2 = 0.0;   // slot: L0 * gap; cylinder: pi R0^2
+};
+
+// Requires scene.dem with initial == column; throws InputError when the
+// column does not fit the grid (a slot longer than the grid, a cylinder
+// wider than it).
+ColumnGeometry column_geometry(const Scene& scene);
+
+// Height of the settled grains: bed_depth_m for a bed, column_height_m for a column.
+double settled_height_m(const DemSpec& dem);
+
+}  // namespace repose

@@ -1,0 +1,20 @@
+#pragma once
+// Spherical grains as arrays (libigl style):
+//   position_m: #G by 3 centres (m)
+//   radius_m:   #G radii (m)
+// The common input of the observables, whichever solver made the grains.
+
+#include <Eigen/Core>
+
+#include "models/core/geometry/triangle_mesh.h"
+
+namespace repose {
+
+struct GrainSet {
+  MatrixX3dR position_m;
+  Eigen::VectorXd radius_m;
+
+  Eigen::Index size() const { return position_m.rows(); }
+};
+
+}  // namespace repose
