@@ -7,7 +7,6 @@
 #include "models/core/base/error.h"
 #include "models/tearing/sheet_forces.h"
 #include "models/tearing/stable_time_step.h"
-#include "models/tearing/tearing.h"
 
 namespace repose {
 
@@ -26,8 +25,7 @@ ExplicitIntegrator::ExplicitIntegrator(const SheetModel& model, const SheetParam
 
 int ExplicitIntegrator::step(SheetState* state) {
   REPOSE_DEMAND(state->positions.cols() == model_.vertex_count());
-  const int torn = tear_overstretched_cells(model_, params_, static_cast<int>(state->steps + 1), state);
-  internal_forces(model_, params_, *state, &forces_);
+  const int torn = tear_and_internal_forces(model_, params_, static_cast<int>(state->steps + 1), state, &forces_);
   const double t_next = state->time_s + dt_;
   const double damping = 1.0 / (1.0 + model_.spec.damping_per_s * dt_);
   const Eigen::Vector3d& g = model_.spec.gravity_m_per_s2;

@@ -34,22 +34,39 @@ bool bending_acts(const BendingTerm& t, const SheetState& state) {
   return edge_held(t.cells_ab, state) && edge_held(t.cells_bc, state);
 }
 
-void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
-                     Eigen::Matrix3Xd* forces) {
-  forces->setZero(3, model.vertex_count());
-  const SpringConstants k = spring_constants(model, params);
-  const Eigen::Matrix3Xd& x = state.positions;
-  for (int c = 0; c < model.cell_count(); ++c) {
-    if (!state.intact(c)) continue;
-    for (const CellSpring& s : cell_springs(model, c)) {
-      const Eigen::Vector3d d = x.col(s.b) - x.col(s.a);
-      const double length = d.norm();
-      if (length == 0.0) continue;  // coincident ends: no direction to push along
-      const Eigen::Vector3d f = (spring_constant(k, s, model.cell_weight[c]) * (length - s.rest_length_m) / length) * d;
-      forces->col(s.a) += f;
-      forces->col(s.b) -= f;
-    }
+namespace {
+
+// The spring vectors of a cell and whether any is stretched past `limit`.
+struct CellStretch {
+  std::array<Eigen::Vector3d, 6> d;
+  std::array<double, 6> length;
+  bool over = false;
+};
+
+CellStretch stretch_of(const std::array<CellSpring, 6>& springs, const Eigen::Matrix3Xd& x, double limit) {
+  CellStretch s;
+  for (int k = 0; k < 6; ++k) {
+    s.d[k] = x.col(springs[k].b) - x.col(springs[k].a);
+    s.length[k] = s.d[k].norm();
+    s.over = s.over || s.length[k] > (1.0 + limit) * springs[k].rest_length_m;
   }
+  return s;
+}
+
+void add_cell_forces(const std::array<CellSpring, 6>& springs, const CellStretch& s, const SpringConstants& k,
+                     double weight, Eigen::Matrix3Xd* forces) {
+  for (int q = 0; q < 6; ++q) {
+    if (s.length[q] == 0.0) continue;  // coincident ends: no direction to push along
+    const CellSpring& sp = springs[q];
+    const Eigen::Vector3d f = (spring_constant(k, sp, weight) * (s.length[q] - sp.rest_length_m) / s.length[q]) * s.d[q];
+    forces->col(sp.a) += f;
+    forces->col(sp.b) -= f;
+  }
+}
+
+void add_bending_forces(const SheetModel& model, const SpringConstants& k, const SheetState& state,
+                        Eigen::Matrix3Xd* forces) {
+  const Eigen::Matrix3Xd& x = state.positions;
   for (const BendingTerm& t : model.bending) {
     if (!bending_acts(t, state)) continue;
     const Eigen::Vector3d g = (k.bending_n_per_m * t.weight) * (x.col(t.a) - 2.0 * x.col(t.b) + x.col(t.c));
@@ -57,6 +74,44 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
     forces->col(t.b) += 2.0 * g;
     forces->col(t.c) -= g;
   }
+}
+
+}  // namespace
+
+void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
+                     Eigen::Matrix3Xd* forces) {
+  forces->setZero(3, model.vertex_count());
+  const SpringConstants k = spring_constants(model, params);
+  for (int c = 0; c < model.cell_count(); ++c) {
+    if (!state.intact(c)) continue;
+    const std::array<CellSpring, 6> springs = cell_springs(model, c);
+    add_cell_forces(springs, stretch_of(springs, state.positions, INFINITY), k, model.cell_stiffness[c], forces);
+  }
+  add_bending_forces(model, k, state, forces);
+}
+
+bool cell_overstretched(const SheetModel& model, const SheetParams& params, const SheetState& state, int c) {
+  return stretch_of(cell_springs(model, c), state.positions, cell_tear_strain(model, params, c)).over;
+}
+
+int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
+                             Eigen::Matrix3Xd* forces) {
+  forces->setZero(3, model.vertex_count());
+  const SpringConstants k = spring_constants(model, params);
+  int torn = 0;
+  for (int c = 0; c < model.cell_count(); ++c) {
+    if (!state->intact(c)) continue;
+    const std::array<CellSpring, 6> springs = cell_springs(model, c);
+    const CellStretch s = stretch_of(springs, state->positions, cell_tear_strain(model, params, c));
+    if (s.over) {
+      state->torn_step[static_cast<std::size_t>(c)] = step_number;
+      ++torn;
+    } else {
+      add_cell_forces(springs, s, k, model.cell_stiffness[c], forces);
+    }
+  }
+  add_bending_forces(model, k, *state, forces);
+  return torn;
 }
 
 double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state) {
@@ -67,7 +122,7 @@ double potential_energy(const SheetModel& model, const SheetParams& params, cons
     if (!state.intact(c)) continue;
     for (const CellSpring& s : cell_springs(model, c)) {
       const double stretch = (x.col(s.b) - x.col(s.a)).norm() - s.rest_length_m;
-      energy += 0.5 * spring_constant(k, s, model.cell_weight[c]) * stretch * stretch;
+      energy += 0.5 * spring_constant(k, s, model.cell_stiffness[c]) * stretch * stretch;
     }
   }
   for (const BendingTerm& t : model.bending) {

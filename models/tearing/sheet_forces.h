@@ -37,6 +37,23 @@ bool bending_acts(const BendingTerm& t, const SheetState& state);
 void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
                      Eigen::Matrix3Xd* forces);
 
+// The tear rule of tearing.h and internal_forces in one pass over the
+// springs (each cell's verdict depends on its own springs only, so tearing
+// a cell before the next is judged changes nothing): cells over their limit
+// are marked torn at step_number, the forces of the rest accumulated.
+// Returns the number of cells torn.
+int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
+                             Eigen::Matrix3Xd* forces);
+
+// Whether cell c has a spring past its tear strain: the one
+// rule both tear_and_internal_forces and tearing.h apply.
+bool cell_overstretched(const SheetModel& model, const SheetParams& params, const SheetState& state, int c);
+
+// The strain past which cell c tears: tear_strain x its tear factor.
+inline double cell_tear_strain(const SheetModel& model, const SheetParams& params, int c) {
+  return params.tear_strain * model.cell_tear_factor[c];
+}
+
 // Elastic energy of the intact springs and acting bending terms (J).
 double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state);
 // Kinetic energy of all vertices (J).

@@ -49,7 +49,7 @@ void add_bending_term(SheetModel* m, int a, int b, int c, std::array<int, 2> ab,
   int count = 0;
   for (const int cell : {ab[0], ab[1], bc[0], bc[1]}) {
     if (cell < 0) continue;
-    t.weight += m->cell_weight[cell];
+    t.weight += m->cell_stiffness[cell];
     ++count;
   }
   REPOSE_DEMAND(count > 0);
@@ -126,6 +126,8 @@ SheetModel build_sheet_model(const SheetSpec& spec, const FibreImages& images) {
   const double mean = density.mean();
   if (!(mean > 0.0)) throw InputError("tearing sheet: the fibre image is empty (mean density 0) over the sheet");
   m.cell_weight = density / mean;
+  m.cell_stiffness = m.cell_weight.array().pow(spec.stiffness_density_exponent).matrix();
+  m.cell_tear_factor = m.cell_weight.array().pow(spec.tear_strain_density_exponent).matrix();
   m.mass_kg = Eigen::VectorXd::Zero(nv);
   const double quarter_cell_kg = 0.25 * spec.grammage_kg_per_m2 * m.cell_size_m * m.cell_size_m;
   for (int c = 0; c < m.cell_count(); ++c) {

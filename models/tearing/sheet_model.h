@@ -7,9 +7,12 @@
 //
 // Springs belong to cells: each cell contributes half an edge spring to each
 // of its four edges (a shared edge gets both halves) and a full spring to
-// each diagonal, all scaled by the cell's relative fibre density w (mean
-// over the cell of the composite image, divided by the mean over the sheet:
-// "the more fibre clumps near a spring, the larger its constant"). With
+// each diagonal, all scaled by w^p, w the cell's relative fibre density
+// (mean over the cell of the composite image, divided by the mean over the
+// sheet: "the more fibre clumps near a spring, the larger its constant") and
+// p = SheetSpec::stiffness_density_exponent (the seed gives no law; p = 1 is
+// proportional, larger p sharpens the contrast between clumps and the gaps
+// between them, which the seed's predecessor made strong). With
 // k_edge = 3/4 E t and k_diagonal = 3/8 E t this lattice is isotropic with
 // Poisson's ratio 1/3 and 2-D Young's modulus
 //   E_2D = k_e (k_e + 2 k_d) / (k_e + k_d) = E t
@@ -29,6 +32,11 @@
 // second difference vanishes under any affine deformation, so it resists
 // folding and leaves E_2D as above. A bending term acts while both of its
 // edges are held by at least one intact cell.
+//
+// Departure from the seed, optional: a cell's tear strain may follow its
+// fibre density too (tear_strain x w^q, q = tear_strain_density_exponent;
+// q = 0 is the seed's single limit), so that the gaps between clumps are
+// weaker as well as softer.
 //
 // Vertex masses are grammage x cell area / 4 x w summed over the vertex's
 // cells, so the sheet's mass is grammage x area exactly.
@@ -59,7 +67,9 @@ struct SheetModel {
   double cell_size_m = 0.0;
   Eigen::Matrix3Xd rest_positions;  // 3 x vertex_count
   Eigen::VectorXd mass_kg;          // vertex_count
-  Eigen::VectorXd cell_weight;      // cell_count, relative fibre density (mean 1)
+  Eigen::VectorXd cell_weight;      // cell_count, relative fibre density w (mean 1)
+  Eigen::VectorXd cell_stiffness;   // cell_count, w^stiffness_density_exponent
+  Eigen::VectorXd cell_tear_factor;  // cell_count, w^tear_strain_density_exponent
   std::vector<BendingTerm> bending;
   // Per vertex: bit a set when axis a (x, y, z) is moved by a grip.
   std::vector<std::uint8_t> held_axes;

@@ -61,6 +61,10 @@ void SheetSpec::validate() const {
           "height_m / (width_m / cells_x)", rows, "a whole number of square cells in [1, 2000]");
   require(std::isfinite(bending_stiffness_n_m) && bending_stiffness_n_m >= 0.0, "bending_stiffness_n_m",
           bending_stiffness_n_m, ">= 0");
+  require(stiffness_density_exponent >= 0.0 && stiffness_density_exponent <= 8.0, "stiffness_density_exponent",
+          stiffness_density_exponent, "in [0, 8]");
+  require(tear_strain_density_exponent >= 0.0 && tear_strain_density_exponent <= 8.0,
+          "tear_strain_density_exponent", tear_strain_density_exponent, "in [0, 8]");
   require(std::isfinite(damping_per_s) && damping_per_s >= 0.0, "damping_per_s", damping_per_s, ">= 0");
   require(gravity_m_per_s2.allFinite(), "gravity_m_per_s2", gravity_m_per_s2.norm(), "finite");
   require(std::isfinite(notch_length_m) && notch_length_m >= 0.0 && notch_length_m <= height_m, "notch_length_m",

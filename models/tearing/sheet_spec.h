@@ -40,6 +40,12 @@ struct SheetSpec {
   // Plate bending stiffness D (N m) of the sheet at mean fibre density;
   // 3e-4 N m is E t^3 / 12 for E = 4 GPa, t = 0.1 mm.
   double bending_stiffness_n_m = 3.0e-4;
+  // Spring constants scale as (relative fibre density)^exponent
+  // (sheet_model.h); 1 is proportional. In [0, 8].
+  double stiffness_density_exponent = 1.0;
+  // A cell's tear strain is tear_strain x (relative fibre density)^exponent
+  // (sheet_model.h); 0, the default, is the seed's single limit. In [0, 8].
+  double tear_strain_density_exponent = 0.0;
   // Velocity damping (1/s): each step v /= 1 + damping_per_s * dt (air drag
   // and internal losses lumped, applied implicitly so it never destabilises).
   double damping_per_s = 2.0e3;

@@ -7,7 +7,7 @@ namespace repose {
 std::vector<int> overstretched_cells(const SheetModel& model, const SheetParams& params, const SheetState& state) {
   std::vector<int> cells;
   for (int c = 0; c < model.cell_count(); ++c) {
-    if (state.intact(c) && max_spring_strain(model, state, c) > params.tear_strain) cells.push_back(c);
+    if (state.intact(c) && cell_overstretched(model, params, state, c)) cells.push_back(c);
   }
   return cells;
 }

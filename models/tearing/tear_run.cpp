@@ -1,0 +1,60 @@
+#include "models/tearing/tear_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "models/core/base/error.h"
+#include "models/tearing/explicit_integrator.h"
+#include "models/tearing/stable_time_step.h"
+
+namespace repose {
+
+void TearRunOptions::validate() const {
+  if (!(std::isfinite(duration_s) && duration_s > 0.0)) {
+    throw InputError(fmt::format("tearing run: duration_s = {} must be > 0", duration_s));
+  }
+  if (!(time_step_fraction > 0.0 && time_step_fraction <= 1.0)) {
+    throw InputError(fmt::format("tearing run: time_step_fraction = {} must be in (0, 1]", time_step_fraction));
+  }
+  if (!(std::isfinite(stop_at_depth_m) && stop_at_depth_m >= 0.0)) {
+    throw InputError(fmt::format("tearing run: stop_at_depth_m = {} must be >= 0", stop_at_depth_m));
+  }
+}
+
+TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearRunOptions& options) {
+  options.validate();
+  params.validate();
+  const auto start = std::chrono::steady_clock::now();
+  TearRun run;
+  run.time_step_s = options.time_step_fraction * stable_time_step_s(model, params);
+  ExplicitIntegrator integrator(model, params, run.time_step_s);
+  run.state = make_sheet_state(model);
+  const long steps = static_cast<long>(std::ceil(options.duration_s / run.time_step_s));
+  const long check_every = std::max(1L, steps / 200);
+  for (long s = 0; s < steps; ++s) {
+    integrator.step(&run.state);
+    for (Eigen::Index g = 0; g < run.state.grip_force_n.cols(); ++g) {
+      run.peak_grip_force_n = std::max(run.peak_grip_force_n, run.state.grip_force_n.col(g).norm());
+    }
+    if (options.stop_at_depth_m > 0.0 && s % check_every == 0 &&
+        measure_tear_path(model, run.state).depth_m >= options.stop_at_depth_m) {
+      break;
+    }
+  }
+  REPOSE_DEMAND(run.state.positions.allFinite());
+  run.steps = run.state.steps;
+  run.path = measure_tear_path(model, run.state);
+  run.grip_work_j = run.state.grip_work_j;
+  // the notch is not torn by the pull: take it off when the tear holds it
+  const bool from_notch = !model.notch_cells.empty() && run.path.holds_notch;
+  const double notch_depth_m = from_notch ? static_cast<double>(model.notch_cells.size()) * model.cell_size_m : 0.0;
+  run.tear_length_m = std::max(0.0, run.path.depth_m - notch_depth_m);
+  if (run.tear_length_m > 0.0) run.work_per_tear_length_j_per_m = run.grip_work_j / run.tear_length_m;
+  run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+}  // namespace repose
