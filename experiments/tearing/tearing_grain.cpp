@@ -10,6 +10,7 @@
 //   tearing_grain --seeds 10 --out DIR [--cells 50] [--speed 2] [--duration 0.03]
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -128,6 +129,7 @@ int main(int argc, char** argv) {
                          p.stray_cells, run.peak_grip_force_n, run.work_per_tear_length_j_per_m, run.steps,
                          run.time_step_s, run.wall_seconds);
       csv.flush();
+      std::fflush(stdout);
       fmt::print("seed {} {:<6}: tortuosity {:.3f} roughness {:.2f} mm deviation {:.2f} mm depth {:.1f} mm notch {} stray {} "
                  "peak {:.1f} N ({} steps, {:.1f} s)\n",
                  seed, grain, p.tortuosity, 1e3 * p.roughness_m, 1e3 * p.deviation_m, 1e3 * p.depth_m, p.holds_notch, p.stray_cells,
