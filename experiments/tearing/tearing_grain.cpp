@@ -129,11 +129,11 @@ int main(int argc, char** argv) {
                          p.stray_cells, run.peak_grip_force_n, run.work_per_tear_length_j_per_m, run.steps,
                          run.time_step_s, run.wall_seconds);
       csv.flush();
-      std::fflush(stdout);
       fmt::print("seed {} {:<6}: tortuosity {:.3f} roughness {:.2f} mm deviation {:.2f} mm depth {:.1f} mm notch {} stray {} "
                  "peak {:.1f} N ({} steps, {:.1f} s)\n",
                  seed, grain, p.tortuosity, 1e3 * p.roughness_m, 1e3 * p.deviation_m, 1e3 * p.depth_m, p.holds_notch, p.stray_cells,
                  run.peak_grip_force_n, run.steps, run.wall_seconds);
+      std::fflush(stdout);
       if (seed == 1) {
         write_png_rgb(fmt::format("{}/tear_{}_seed{}.png", s.out, grain, seed), draw_tear_image(model, run.state, images, 8));
         write_fibre_pngs(images, fmt::format("{}/fibres_{}_seed{}_", s.out, grain, seed));
