@@ -22,6 +22,7 @@
 
 #include "models/tearing/fibre_image.h"
 #include "models/tearing/sheet_model.h"
+#include "models/tearing/tear_edge_layers.h"
 #include "models/tearing/tear_image.h"
 #include "models/tearing/tear_run.h"
 
@@ -137,6 +138,9 @@ int main(int argc, char** argv) {
       if (seed == 1) {
         write_png_rgb(fmt::format("{}/tear_{}_seed{}.png", s.out, grain, seed), draw_tear_image(model, run.state, images, 8));
         write_fibre_pngs(images, fmt::format("{}/fibres_{}_seed{}_", s.out, grain, seed));
+        const TearEdgeOptions edge;
+        write_png_rgb(fmt::format("{}/tear_edge_{}_seed{}.png", s.out, grain, seed),
+                      draw_layered_tear_edge(images, trace_layer_cuts(model, run.state, images, edge), edge));
       }
       rows.push_back({seed, grain, std::move(run)});
     }
