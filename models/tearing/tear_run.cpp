@@ -8,6 +8,7 @@
 
 #include "models/core/base/error.h"
 #include "models/tearing/explicit_integrator.h"
+#include "models/tearing/implicit_integrator.h"
 #include "models/tearing/stable_time_step.h"
 
 namespace repose {
@@ -16,33 +17,53 @@ void TearRunOptions::validate() const {
   if (!(std::isfinite(duration_s) && duration_s > 0.0)) {
     throw InputError(fmt::format("tearing run: duration_s = {} must be > 0", duration_s));
   }
-  if (!(time_step_fraction > 0.0 && time_step_fraction <= 1.0)) {
-    throw InputError(fmt::format("tearing run: time_step_fraction = {} must be in (0, 1]", time_step_fraction));
+  const double most = integrator == Integrator::kExplicit ? 1.0 : 1000.0;
+  if (!(time_step_fraction > 0.0 && time_step_fraction <= most)) {
+    throw InputError(fmt::format("tearing run: time_step_fraction = {} must be in (0, {}] for this integrator",
+                                 time_step_fraction, most));
   }
   if (!(std::isfinite(stop_at_depth_m) && stop_at_depth_m >= 0.0)) {
     throw InputError(fmt::format("tearing run: stop_at_depth_m = {} must be >= 0", stop_at_depth_m));
   }
 }
 
-TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearRunOptions& options) {
+namespace {
+
+template <class Integrator>
+void pull(const SheetModel& model, const TearRunOptions& options, const ProgressFn& progress, Integrator* integrator,
+          TearRun* run) {
+  const long steps = static_cast<long>(std::ceil(options.duration_s / run->time_step_s));
+  const long check_every = std::max(1L, steps / 200);
+  for (long s = 0; s < steps; ++s) {
+    integrator->step(&run->state);
+    for (Eigen::Index g = 0; g < run->state.grip_force_n.cols(); ++g) {
+      run->peak_grip_force_n = std::max(run->peak_grip_force_n, run->state.grip_force_n.col(g).norm());
+    }
+    if (s % check_every != 0) continue;
+    report(progress, static_cast<double>(s) / static_cast<double>(steps), "tearing");
+    if (options.stop_at_depth_m > 0.0 && measure_tear_path(model, run->state).depth_m >= options.stop_at_depth_m) {
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearRunOptions& options,
+                 const ProgressFn& progress) {
   options.validate();
   params.validate();
   const auto start = std::chrono::steady_clock::now();
   TearRun run;
-  run.time_step_s = options.time_step_fraction * stable_time_step_s(model, params);
-  ExplicitIntegrator integrator(model, params, run.time_step_s);
+  run.stable_time_step_s = stable_time_step_s(model, params);
+  run.time_step_s = options.time_step_fraction * run.stable_time_step_s;
   run.state = make_sheet_state(model);
-  const long steps = static_cast<long>(std::ceil(options.duration_s / run.time_step_s));
-  const long check_every = std::max(1L, steps / 200);
-  for (long s = 0; s < steps; ++s) {
-    integrator.step(&run.state);
-    for (Eigen::Index g = 0; g < run.state.grip_force_n.cols(); ++g) {
-      run.peak_grip_force_n = std::max(run.peak_grip_force_n, run.state.grip_force_n.col(g).norm());
-    }
-    if (options.stop_at_depth_m > 0.0 && s % check_every == 0 &&
-        measure_tear_path(model, run.state).depth_m >= options.stop_at_depth_m) {
-      break;
-    }
+  if (options.integrator == TearRunOptions::Integrator::kExplicit) {
+    ExplicitIntegrator integrator(model, params, run.time_step_s);
+    pull(model, options, progress, &integrator, &run);
+  } else {
+    ImplicitIntegrator integrator(model, params, run.time_step_s);
+    pull(model, options, progress, &integrator, &run);
   }
   REPOSE_DEMAND(run.state.positions.allFinite());
   run.steps = run.state.steps;

@@ -40,6 +40,26 @@ TEST(TearRun, AUniformSheetTearsStraightAlongItsNotchUnderTheTwist) {
   EXPECT_NEAR(run.work_per_tear_length_j_per_m, run.grip_work_j / run.tear_length_m, 1e-12);
 }
 
+// The same with the implicit integrator at four times the explicit limit.
+TEST(TearRun, TheImplicitIntegratorTearsTheUniformSheetStraightToo) {
+  SheetSpec spec = free_sheet_spec(0.026, 13);
+  spec.damping_per_s = 2e3;
+  spec.grips = seed_twist_grips(0.026, 0.026, 0.004, 0.006, 4.0);
+  spec.notch_length_m = 0.004;
+  spec.notch_x_m = 0.013;
+  const SheetModel model = uniform_sheet(spec);
+  TearRunOptions options;
+  options.integrator = TearRunOptions::Integrator::kImplicit;
+  options.time_step_fraction = 4.0;
+  options.duration_s = 0.01;
+  options.stop_at_depth_m = 0.012;
+  const TearRun run = run_tear(model, SheetParams{}, options);
+  EXPECT_GE(run.path.depth_m, 0.012 - 1e-12);
+  EXPECT_EQ(run.path.stray_cells, 0);
+  for (const Eigen::Vector2d& p : run.path.points) EXPECT_DOUBLE_EQ(p.x(), 0.013);
+  EXPECT_DOUBLE_EQ(run.time_step_s, 4.0 * run.stable_time_step_s);
+}
+
 TEST(TearRun, RefusesOptionsOutsideTheirRanges) {
   const SheetModel model = uniform_sheet(free_sheet_spec(0.01, 2));
   TearRunOptions options;
