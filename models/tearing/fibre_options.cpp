@@ -5,14 +5,15 @@
 
 #include <fmt/format.h>
 
-#include "models/core/base/error.h"
+#include "models/core/config/fields.h"
 
 namespace repose {
 
 namespace {
 
+// FieldError names the key, so that the scene loader points at it.
 void require(bool ok, const char* field, double value, const char* rule) {
-  if (!ok) throw InputError(fmt::format("tearing fibres: {} = {} must be {}", field, value, rule));
+  if (!ok) throw FieldError(field, rule, fmt::format("{}", value));
 }
 
 }  // namespace
@@ -29,9 +30,9 @@ void FibreOptions::validate() const {
           clump_length_min_m, ">= clump_width_max_m (a clump is longer than it is wide)");
   require(std::isfinite(clump_length_max_m) && clump_length_max_m >= clump_length_min_m, "clump_length_max_m",
           clump_length_max_m, ">= clump_length_min_m");
-  require(std::isfinite(grain_direction_rad), "grain_direction_rad", grain_direction_rad, "finite");
-  require(grain_spread_rad >= 0.0 && grain_spread_rad <= std::numbers::pi / 2, "grain_spread_rad", grain_spread_rad,
-          "in [0, pi/2]");
+  require(std::isfinite(grain_direction_rad), "grain_direction_deg", grain_direction_rad / kRadPerDeg, "finite");
+  require(grain_spread_rad >= 0.0 && grain_spread_rad <= std::numbers::pi / 2, "grain_spread_deg",
+          grain_spread_rad / kRadPerDeg, "in [0, 90] deg");
   require(background_density >= 0.0 && background_density < 1.0, "background_density", background_density,
           "in [0, 1)");
 }

@@ -44,7 +44,7 @@ struct FibreOptions {
   // point of the sheet above zero stiffness. In [0, 1).
   double background_density = 0.2;
 
-  // Throws InputError naming the field and the rule.
+  // Throws FieldError (an InputError) naming the scene key and the rule.
   void validate() const;
 };
 

@@ -15,7 +15,7 @@ struct SheetParams {
   // more than this fraction of its rest length (the seed's "a set length").
   double tear_strain = 0.02;
 
-  // Throws InputError naming the field: stiffness_n_per_m > 0, tear_strain
+  // Throws FieldError (an InputError) naming the field: stiffness_n_per_m > 0, tear_strain
   // in (0, 10].
   void validate() const;
 };

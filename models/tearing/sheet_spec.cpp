@@ -4,14 +4,15 @@
 
 #include <fmt/format.h>
 
-#include "models/core/base/error.h"
+#include "models/core/config/fields.h"
 
 namespace repose {
 
 namespace {
 
+// FieldError names the key, so that the scene loader points at it.
 void require(bool ok, const std::string& field, double value, const char* rule) {
-  if (!ok) throw InputError(fmt::format("tearing sheet: {} = {} must be {}", field, value, rule));
+  if (!ok) throw FieldError(field, rule, fmt::format("{}", value));
 }
 
 // Whether a grip holds the vertex whose rest position is (x, y).
@@ -26,9 +27,10 @@ void validate_grips(const SheetSpec& s) {
   for (std::size_t k = 0; k < s.grips.size(); ++k) {
     const GripSpec& g = s.grips[k];
     const std::string name = fmt::format("grips[{}]", k);
-    require(g.x_max_m >= g.x_min_m, name + ".x_max_m", g.x_max_m, ">= x_min_m");
-    require(g.y_max_m >= g.y_min_m, name + ".y_max_m", g.y_max_m, ">= y_min_m");
-    require(g.velocity_m_per_s.allFinite(), name + ".velocity_m_per_s", g.velocity_m_per_s.norm(), "finite");
+    if (!(g.x_max_m >= g.x_min_m && g.y_max_m >= g.y_min_m && g.velocity_m_per_s.allFinite())) {
+      throw FieldError("grips", name + " with x_max_m >= x_min_m, y_max_m >= y_min_m and a finite velocity",
+                       fmt::format("x [{}, {}], y [{}, {}]", g.x_min_m, g.x_max_m, g.y_min_m, g.y_max_m));
+    }
     int held = 0;
     for (int j = 0; j <= ny; ++j) {
       for (int i = 0; i <= s.cells_x; ++i) {
@@ -36,13 +38,14 @@ void validate_grips(const SheetSpec& s) {
         ++held;
         for (std::size_t m = 0; m < k; ++m) {
           if (grip_holds(s.grips[m], i * h, j * h)) {
-            throw InputError(fmt::format("tearing sheet: grips[{}] and grips[{}] both hold the vertex at ({}, {}) m",
-                                         m, k, i * h, j * h));
+            throw FieldError("grips", "grips that hold no vertex in common",
+                             fmt::format("grips[{}] and grips[{}] both holding the vertex at ({}, {}) m", m, k, i * h,
+                                         j * h));
           }
         }
       }
     }
-    if (held == 0) throw InputError(fmt::format("tearing sheet: {} holds no vertex of the mesh", name));
+    if (held == 0) throw FieldError("grips", "grips that each hold a vertex of the mesh", name + " holding none");
   }
 }
 
@@ -58,7 +61,7 @@ void SheetSpec::validate() const {
   require(cells_x >= 1 && cells_x <= 2000, "cells_x", cells_x, "in [1, 2000]");
   const double rows = height_m / cell_size_m();
   require(std::abs(rows - std::round(rows)) <= 1e-6 * rows && std::round(rows) >= 1.0 && rows <= 2000.5,
-          "height_m / (width_m / cells_x)", rows, "a whole number of square cells in [1, 2000]");
+          "height_m", height_m, "a whole number (1 to 2000) of square cells of width_m / cells_x");
   require(std::isfinite(bending_stiffness_n_m) && bending_stiffness_n_m >= 0.0, "bending_stiffness_n_m",
           bending_stiffness_n_m, ">= 0");
   require(stiffness_density_exponent >= 0.0 && stiffness_density_exponent <= 8.0, "stiffness_density_exponent",

@@ -60,7 +60,7 @@ struct SheetSpec {
   int cells_y() const;  // height_m / cell size, rounded
   double cell_size_m() const { return width_m / cells_x; }
 
-  // Throws InputError naming the field and the rule (including a grip that
+  // Throws FieldError (an InputError) naming the field and the rule (including a grip that
   // holds no vertex and two grips that hold the same vertex).
   void validate() const;
 };

@@ -81,7 +81,7 @@ TEST(FibreImage, RefusesOptionsOutsideTheirRanges) {
   EXPECT_NE(message(o).find("clump_length_min_m"), std::string::npos);
   o = {};
   o.grain_spread_rad = 2.0;
-  EXPECT_NE(message(o).find("grain_spread_rad"), std::string::npos);
+  EXPECT_NE(message(o).find("grain_spread_deg"), std::string::npos);
   o = {};
   o.background_density = 1.0;
   EXPECT_NE(message(o).find("background_density"), std::string::npos);
