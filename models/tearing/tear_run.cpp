@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/config/fields.h"
 #include "models/tearing/explicit_integrator.h"
 #include "models/tearing/implicit_integrator.h"
 #include "models/tearing/stable_time_step.h"
@@ -15,15 +16,15 @@ namespace repose {
 
 void TearRunOptions::validate() const {
   if (!(std::isfinite(duration_s) && duration_s > 0.0)) {
-    throw InputError(fmt::format("tearing run: duration_s = {} must be > 0", duration_s));
+    throw FieldError("duration_s", "a duration > 0 s", fmt::format("{}", duration_s));
   }
   const double most = integrator == Integrator::kExplicit ? 1.0 : 1000.0;
   if (!(time_step_fraction > 0.0 && time_step_fraction <= most)) {
-    throw InputError(fmt::format("tearing run: time_step_fraction = {} must be in (0, {}] for this integrator",
-                                 time_step_fraction, most));
+    throw FieldError("time_step_fraction", fmt::format("a number in (0, {}] for this integrator", most),
+                     fmt::format("{}", time_step_fraction));
   }
   if (!(std::isfinite(stop_at_depth_m) && stop_at_depth_m >= 0.0)) {
-    throw InputError(fmt::format("tearing run: stop_at_depth_m = {} must be >= 0", stop_at_depth_m));
+    throw FieldError("stop_at_depth_m", "a depth >= 0 m", fmt::format("{}", stop_at_depth_m));
   }
 }
 

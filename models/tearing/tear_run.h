@@ -21,7 +21,7 @@ struct TearRunOptions {
   // 0: run the whole duration.
   double stop_at_depth_m = 0.0;
 
-  void validate() const;  // throws InputError naming the field
+  void validate() const;  // throws FieldError (an InputError) naming the field
 };
 
 struct TearRun {

@@ -31,8 +31,8 @@ void params_fields(V& v, SheetParams& p) {
 }
 
 template <class V>
-void settings_fields(V& v, TearingSettings& t) {
-  using I = TearingSettings::Integrator;
+void settings_fields(V& v, TearRunOptions& t) {
+  using I = TearRunOptions::Integrator;
   v.choice("integrator", t.integrator, ChoiceTable<I>{{"explicit", I::kExplicit}, {"implicit", I::kImplicit}});
   v.number("time_step_fraction", t.time_step_fraction, Range::positive());
   v.number("stop_at_depth_m", t.stop_at_depth_m, Range::non_negative());
@@ -77,7 +77,7 @@ void grip_fields(V& v, GripSpec& g) {
 
 const auto kSheet = [](auto& v, SheetSpec& x) { sheet_fields(v, x); };
 const auto kParams = [](auto& v, SheetParams& x) { params_fields(v, x); };
-const auto kSettings = [](auto& v, TearingSettings& x) { settings_fields(v, x); };
+const auto kSettings = [](auto& v, TearRunOptions& x) { settings_fields(v, x); };
 const auto kFibres = [](auto& v, FibreOptions& x) { fibre_fields(v, x); };
 const auto kTwist = [](auto& v, Twist& x) { twist_fields(v, x); };
 const auto kGrip = [](auto& v, GripSpec& x) { grip_fields(v, x); };
@@ -85,7 +85,7 @@ const auto kGrip = [](auto& v, GripSpec& x) { grip_fields(v, x); };
 std::vector<std::string> section_keys() {
   std::vector<std::string> keys = field_keys<SheetSpec>(kSheet, {"fibres", "twist", "grips"});
   for (const auto& k : field_keys<SheetParams>(kParams)) keys.push_back(k);
-  for (const auto& k : field_keys<TearingSettings>(kSettings)) keys.push_back(k);
+  for (const auto& k : field_keys<TearRunOptions>(kSettings)) keys.push_back(k);
   return keys;
 }
 
@@ -109,21 +109,12 @@ void read_grips(const YamlMap& map, TearingSection* s) {
 
 }  // namespace
 
-void TearingSettings::validate() const {
-  const double most = integrator == Integrator::kExplicit ? 1.0 : 1000.0;
-  if (!(time_step_fraction > 0.0 && time_step_fraction <= most)) {
-    throw FieldError("time_step_fraction", fmt::format("a number in (0, {}] for this integrator", most),
-                     yaml_number(time_step_fraction));
-  }
-  if (!(stop_at_depth_m >= 0.0)) throw FieldError("stop_at_depth_m", "a depth >= 0 m", yaml_number(stop_at_depth_m));
-}
-
 void TearingSection::write_yaml(YAML::Emitter& out) const {
   out << YAML::BeginMap;
   FieldWriter writer(out);
   SheetSpec sheet_copy = sheet;
   SheetParams params_copy = params;
-  TearingSettings settings_copy = settings;
+  TearRunOptions settings_copy = run;
   FibreOptions fibres_copy = sheet.fibres;
   sheet_fields(writer, sheet_copy);
   params_fields(writer, params_copy);
@@ -140,7 +131,7 @@ std::string TearingSection::summary() const {
                      "integrator, E t {} N/m, tear strain {}",
                      sheet.width_m, sheet.height_m, sheet.cells_x, sheet.cells_y(), sheet.fibres.layers,
                      sheet.fibres.grain_direction_rad / kRadPerDeg, sheet.grips.size(),
-                     settings.integrator == TearingSettings::Integrator::kExplicit ? "explicit" : "implicit",
+                     run.integrator == TearRunOptions::Integrator::kExplicit ? "explicit" : "implicit",
                      params.stiffness_n_per_m, params.tear_strain);
 }
 
@@ -149,7 +140,8 @@ std::shared_ptr<const SceneSection> read_tearing_section(const YamlValue& value,
   const YamlMap map = value.map(section_keys());
   read_fields_into(map, kSheet, s->sheet);
   read_fields_into(map, kParams, s->params);
-  read_fields_into(map, kSettings, s->settings);
+  read_fields_into(map, kSettings, s->run);
+  s->run.duration_s = common.time.duration_s;  // the solver takes it from the scene again
   if (auto fibres = map.get("fibres")) {
     const YamlMap f = fibres->map(field_keys<FibreOptions>(kFibres));
     read_fields_into(f, kFibres, s->sheet.fibres);
@@ -158,8 +150,7 @@ std::shared_ptr<const SceneSection> read_tearing_section(const YamlValue& value,
   read_grips(map, s.get());
   validate_at(map, [&] { s->sheet.validate(); });
   validate_at(map, [&] { s->params.validate(); });
-  validate_at(map, [&] { s->settings.validate(); });
-  (void)common;
+  validate_at(map, [&] { s->run.validate(); });
   return s;
 }
 

@@ -34,19 +34,9 @@
 #include "models/core/config/yaml_reader.h"
 #include "models/tearing/sheet_params.h"
 #include "models/tearing/sheet_spec.h"
+#include "models/tearing/tear_run.h"
 
 namespace repose {
-
-struct TearingSettings {
-  enum class Integrator { kExplicit, kImplicit };
-  Integrator integrator = Integrator::kExplicit;
-  // The step as a fraction of the explicit stable step: (0, 1] explicit,
-  // (0, 1000] implicit.
-  double time_step_fraction = 0.9;
-  double stop_at_depth_m = 0.0;
-
-  void validate() const;  // FieldError naming the field
-};
 
 class TearingSection final : public SceneSection {
  public:
@@ -54,7 +44,9 @@ class TearingSection final : public SceneSection {
 
   SheetSpec sheet;
   SheetParams params;  // the scene's values of the fitted parameters
-  TearingSettings settings;
+  // integrator, time_step_fraction, stop_at_depth_m; duration_s is the
+  // scene's time.duration_s
+  TearRunOptions run;
 
   void write_yaml(YAML::Emitter& out) const override;
   std::string summary() const override;

@@ -36,7 +36,9 @@ HeightField grid_field(int nx, int ny, double pitch_m, double origin_m, const st
 
 class CompiledTearing final : public CompiledSolver {
  public:
-  explicit CompiledTearing(const Scene& scene) : section_(*scene.section<TearingSection>()), duration_s_(scene.time.duration_s) {
+  explicit CompiledTearing(const Scene& scene) : section_(*scene.section<TearingSection>()), run_options_(section_.run) {
+    run_options_.duration_s = scene.time.duration_s;  // the scene's time, however it was changed
+    run_options_.validate();
     std::mt19937_64 rng(scene.seed);
     const SheetSpec& spec = section_.sheet;
     images_ = draw_fibre_images(spec.fibres, spec.width_m, spec.height_m, rng);
@@ -57,13 +59,7 @@ class CompiledTearing final : public CompiledSolver {
     params.stiffness_n_per_m = values_si[0];
     params.tear_strain = values_si[1];
     params.validate();
-    TearRunOptions tear;
-    tear.integrator = section_.settings.integrator == TearingSettings::Integrator::kExplicit
-                          ? TearRunOptions::Integrator::kExplicit
-                          : TearRunOptions::Integrator::kImplicit;
-    tear.duration_s = duration_s_;
-    tear.time_step_fraction = section_.settings.time_step_fraction;
-    tear.stop_at_depth_m = section_.settings.stop_at_depth_m;
+    const TearRunOptions& tear = run_options_;
     const TearRun pulled = run_tear(model_, params, tear, options.progress);
     Run run;
     run.solver = "tearing";
@@ -125,7 +121,7 @@ class CompiledTearing final : public CompiledSolver {
   }
 
   TearingSection section_;
-  double duration_s_ = 0.0;
+  TearRunOptions run_options_;
   FibreImages images_;
   SheetModel model_;
   std::vector<ParameterInfo> parameters_;

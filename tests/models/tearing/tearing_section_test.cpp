@@ -39,7 +39,7 @@ TEST(TearingSection, ReadsTheSheetFibresTwistAndParameters) {
   EXPECT_EQ(s->sheet.cells_x, 20);
   EXPECT_DOUBLE_EQ(s->params.tear_strain, 0.03);
   EXPECT_DOUBLE_EQ(s->params.stiffness_n_per_m, SheetParams{}.stiffness_n_per_m);  // the default
-  EXPECT_EQ(s->settings.integrator, TearingSettings::Integrator::kImplicit);
+  EXPECT_EQ(s->run.integrator, TearRunOptions::Integrator::kImplicit);
   EXPECT_EQ(s->sheet.fibres.layers, 4);
   EXPECT_NEAR(s->sheet.fibres.grain_direction_rad, std::numbers::pi / 2, 1e-15);
   ASSERT_EQ(s->sheet.grips.size(), 2u);
