@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/io/input_file.h"
 
 namespace repose {
 
@@ -19,11 +20,12 @@ namespace {
 // Line-by-line reader that knows where it is, for messages.
 class DumpReader {
  public:
-  explicit DumpReader(const std::string& path) : path_(path), in_(path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) fail_at(0, "is a directory, not a dump file");
-    if (!in_) fail_at(0, "cannot open the file");
-  }
+  // InputStream checks the file (a regular file within the dump bound) and
+  // never reads past it.
+  explicit DumpReader(const std::string& path) : path_(path), in_(path, input_kind::kLiggghtsDump) {}
+
+  // The file's size, an upper bound for counts the file declares.
+  std::uint64_t file_bytes() const { return in_.file().size(); }
 
   bool next(std::string* line) {
     if (!std::getline(in_, *line)) return false;
@@ -66,7 +68,7 @@ class DumpReader {
 
  private:
   std::string path_;
-  std::ifstream in_;
+  InputStream in_;
   long line_number_ = 0;
 };
 
@@ -112,6 +114,13 @@ DumpFrame read_frame(DumpReader& r, const std::string& timestep_line) {
   }
   const int ci = index["id"], cx = index["x"], cy = index["y"], cz = index["z"], cr = index["radius"];
   const int ct = index.contains("type") ? index["type"] : -1;
+  // a row holds at least one character and one separator per column: a count
+  // the file cannot hold is refused before allocating for it
+  const std::uint64_t max_rows = r.file_bytes() / (2 * columns.size());
+  if (static_cast<std::uint64_t>(count) > max_rows) {
+    r.fail(fmt::format("NUMBER OF ATOMS {} is more rows than the file can hold ({} bytes, at most {} rows of {} columns)",
+                       count, r.file_bytes(), max_rows, columns.size()));
+  }
 
   f.id.resize(count);
   f.type.assign(count, 1);

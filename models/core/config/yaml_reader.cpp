@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/config/yaml_text_checks.h"
 
 namespace repose {
 
@@ -291,11 +292,31 @@ Eigen::Vector3d YamlMap::vec3_or(const std::string& key, const Range& each, cons
 }
 
 YamlValue parse_yaml(const std::string& text, const std::string& file) {
+  check_single_document(text, file);
+  std::vector<YAML::Node> documents;
   try {
-    return YamlValue(file, YAML::Load(text), "");
+    documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {  // syntax errors, and too deep nesting
+    // an unterminated quote makes the parser fail further down: name the quote
+    if (const auto quote = find_unclosed_quote(text, e.mark.line)) {
+      throw InputError(yaml_error_message(
+          file, *quote, "yaml", "a quoted string closed on the line where it opens",
+          fmt::format("an unterminated quote (the parser then failed at line {}, column {}: {})",
+                      one_based(e.mark.line), one_based(e.mark.column), e.msg)));
+    }
     throw InputError(yaml_error_message(file, e.mark, "yaml", "valid YAML syntax", "a syntax error (" + e.msg + ")"));
   }
+  if (documents.size() > 1) {  // check_single_document's scan should have caught it
+    throw InputError(yaml_error_message(file, documents[1].Mark(), "yaml", "a single YAML document per file",
+                                        "a second document"));
+  }
+  YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
+  check_quotes_closed(root, text, file);
+  return YamlValue(file, root, "");
+}
+
+YamlValue read_yaml_file(const std::string& path, const InputKind& kind) {
+  return parse_yaml(read_input_file(path, kind), path);
 }
 
 }  // namespace repose
