@@ -2,7 +2,9 @@
 // clean up) while it is writing its run folder must leave no target folder
 // (or, when replacing with --force, the old result untouched); a later run
 // must succeed, write a complete folder, and remove the killed run's
-// leftovers instead of trusting them.
+// leftovers instead of trusting them. A run ended by SIGTERM or SIGINT,
+// which can be caught, removes its temporary folder itself and still dies
+// of the signal (exit status 128 + signal).
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>

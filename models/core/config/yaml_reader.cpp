@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
 #include "models/core/config/yaml_text_checks.h"
 
 namespace repose {
@@ -292,6 +293,9 @@ Eigen::Vector3d YamlMap::vec3_or(const std::string& key, const Range& each, cons
 }
 
 YamlValue parse_yaml(const std::string& text, const std::string& file) {
+  // yaml-cpp's nodes take about 85 bytes per byte of text (input_file.h)
+  require_memory(memory_estimate::product(text.size(), 90),
+                 fmt::format("{}: parsing {} of YAML", file, format_bytes(text.size())));
   check_single_document(text, file);
   std::vector<YAML::Node> documents;
   try {
