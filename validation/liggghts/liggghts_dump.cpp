@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
 #include "models/core/io/input_file.h"
 
 namespace repose {
@@ -24,6 +25,7 @@ class DumpReader {
   // never reads past it.
   explicit DumpReader(const std::string& path) : path_(path), in_(path, input_kind::kLiggghtsDump) {}
 
+  const std::string& path() const { return path_; }
   // The file's size, an upper bound for counts the file declares.
   std::uint64_t file_bytes() const { return in_.file().size(); }
 
@@ -90,6 +92,21 @@ void expect_item(DumpReader& r, const std::string& line, const std::string& item
   if (line.rfind("ITEM: " + item, 0) != 0) r.fail(fmt::format("expected 'ITEM: {}', got '{}'", item, line));
 }
 
+// A count the file cannot hold, or whose arrays exceed the memory budget,
+// is refused before allocating for it: a row holds at least one character
+// and one separator per column.
+void check_atom_count(const DumpReader& r, long count, std::size_t columns) {
+  const std::uint64_t max_rows = r.file_bytes() / (2 * columns);
+  if (static_cast<std::uint64_t>(count) > max_rows) {
+    r.fail(fmt::format("NUMBER OF ATOMS {} is more rows than the file can hold ({} bytes, at most {} rows of {} columns)",
+                       count, r.file_bytes(), max_rows, columns));
+  }
+  // id, type, position and radius per atom
+  constexpr std::uint64_t kBytesPerAtom = sizeof(long) + sizeof(int) + 4 * sizeof(double);
+  require_memory(memory_estimate::items_bytes(static_cast<std::uint64_t>(count), kBytesPerAtom),
+                 fmt::format("{}: a dump frame of {} atoms", r.path(), count));
+}
+
 DumpFrame read_frame(DumpReader& r, const std::string& timestep_line) {
   DumpFrame f;
   expect_item(r, timestep_line, "TIMESTEP");
@@ -114,13 +131,7 @@ DumpFrame read_frame(DumpReader& r, const std::string& timestep_line) {
   }
   const int ci = index["id"], cx = index["x"], cy = index["y"], cz = index["z"], cr = index["radius"];
   const int ct = index.contains("type") ? index["type"] : -1;
-  // a row holds at least one character and one separator per column: a count
-  // the file cannot hold is refused before allocating for it
-  const std::uint64_t max_rows = r.file_bytes() / (2 * columns.size());
-  if (static_cast<std::uint64_t>(count) > max_rows) {
-    r.fail(fmt::format("NUMBER OF ATOMS {} is more rows than the file can hold ({} bytes, at most {} rows of {} columns)",
-                       count, r.file_bytes(), max_rows, columns.size()));
-  }
+  check_atom_count(r, count, columns.size());
 
   f.id.resize(count);
   f.type.assign(count, 1);

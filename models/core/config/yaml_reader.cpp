@@ -296,10 +296,13 @@ YamlValue parse_yaml(const std::string& text, const std::string& file) {
   // yaml-cpp's nodes take about 85 bytes per byte of text (input_file.h)
   require_memory(memory_estimate::product(text.size(), 90),
                  fmt::format("{}: parsing {} of YAML", file, format_bytes(text.size())));
+  // the second-document check is on the text: yaml-cpp 0.7's LoadAll, which
+  // would count documents, loops forever on some inputs (a fuzz finding,
+  // tests/fuzz/regressions/yaml/), and Load ignores what follows the first
   check_single_document(text, file);
-  std::vector<YAML::Node> documents;
+  YAML::Node root;
   try {
-    documents = YAML::LoadAll(text);
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {  // syntax errors, and too deep nesting
     // an unterminated quote makes the parser fail further down: name the quote
     if (const auto quote = find_unclosed_quote(text, e.mark.line)) {
@@ -310,11 +313,6 @@ YamlValue parse_yaml(const std::string& text, const std::string& file) {
     }
     throw InputError(yaml_error_message(file, e.mark, "yaml", "valid YAML syntax", "a syntax error (" + e.msg + ")"));
   }
-  if (documents.size() > 1) {  // check_single_document's scan should have caught it
-    throw InputError(yaml_error_message(file, documents[1].Mark(), "yaml", "a single YAML document per file",
-                                        "a second document"));
-  }
-  YAML::Node root = documents.empty() ? YAML::Node() : documents.front();
   check_quotes_closed(root, text, file);
   return YamlValue(file, root, "");
 }

@@ -46,5 +46,18 @@ TEST_F(YamlReader, ReadYamlFileGoesThroughTheInputFileChecks) {
   }
 }
 
+// A fuzz finding: yaml-cpp's LoadAll loops forever (allocating) on these
+// 26 bytes, which Load reads as one document. parse_yaml must return.
+TEST_F(YamlReader, InputThatMakesLoadAllLoopForeverIsParsedOnce) {
+  const std::string text("\x2c\x20\x68\x61\x3a\x20\x22\x78\x20\x5c\x22\x20\x79\xff\xff\x5f\xf0\x00\x0c\xb6\xa5\x0a"
+                         "\x70\x65\x6e\x0a",
+                         26);
+  try {
+    (void)parse_yaml(text, "fuzz.yaml");
+  } catch (const InputError&) {
+  }
+  SUCCEED();
+}
+
 }  // namespace
 }  // namespace repose
