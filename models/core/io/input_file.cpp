@@ -18,7 +18,7 @@ namespace repose {
 namespace {
 
 constexpr std::array kKnownKinds = {
-    input_kind::kScene, input_kind::kCalibration, input_kind::kExperiment, input_kind::kReference,
+    input_kind::kScene, input_kind::kCalibration, input_kind::kExperiment, input_kind::kReference, input_kind::kRunRecord,
     input_kind::kMesh,  input_kind::kNpy,         input_kind::kPng,        input_kind::kLiggghtsDump,
     input_kind::kLiggghtsLog,
 };

@@ -47,6 +47,8 @@ inline constexpr InputKind kCalibration{"calibration", 8 * kMiB};
 inline constexpr InputKind kExperiment{"experiment", 8 * kMiB};
 // Calibration references (numbers in small YAML files).
 inline constexpr InputKind kReference{"reference", 8 * kMiB};
+// JSON records of earlier runs (manifest.json, liggghts_manifest.json).
+inline constexpr InputKind kRunRecord{"run record", 64 * kMiB};
 // OBJ/STL: a binary STL of 10 million triangles is 500 MB.
 inline constexpr InputKind kMesh{"mesh", 512 * kMiB};
 // A float64 array of 16384^2 (the largest grid) is 2 GiB plus its header.
