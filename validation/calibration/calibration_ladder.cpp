@@ -46,12 +46,13 @@ LiggghtsRun load_liggghts_rung(const LadderReference& ref, const SectionTypes& s
     throw InputError(ref.scene_path + ": a ladder LIGGGHTS scene needs a dem section (its grain size)");
   }
   const std::string path = (fs::path(ref.directory) / "height_final.npy").string();
-  const ArrayXXdR a = read_npy_2d(path);
   const Grid& grid = scene.ground.grid;
-  if (a.rows() != grid.ny || a.cols() != grid.nx) {
-    throw InputError(fmt::format("{}: {} x {} heights, its scene's grid ({}) is {} x {}", path, a.rows(), a.cols(),
+  const NpyShape shape = read_npy_shape(path);
+  if (shape.rows != grid.ny || shape.cols != grid.nx) {
+    throw InputError(fmt::format("{}: {} x {} heights, its scene's grid ({}) is {} x {}", path, shape.rows, shape.cols,
                                  ref.scene_path, grid.ny, grid.nx));
   }
+  const ArrayXXdR a = read_npy_2d(path, grid.ny, grid.nx);
   LiggghtsRun run;
   run.final_height = HeightField(grid, a);
   run.rung.kind = "liggghts";

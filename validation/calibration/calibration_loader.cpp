@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/io/input_file.h"
 #include "models/core/config/fields.h"
 #include "models/core/config/yaml_reader.h"
 
@@ -263,14 +264,8 @@ CalibrationSpec load_calibration_from_string(const std::string& yaml, const std:
 }
 
 CalibrationSpec load_calibration(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError(path + ": no such calibration file");
-  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not a calibration file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_calibration_from_string(text.str(), path);
+  // a regular file within the bound: a FIFO waited forever, /dev/zero ran out of memory
+  return load_calibration_from_string(read_input_file(path, input_kind::kCalibration), path);
 }
 
 }  // namespace repose

@@ -26,11 +26,13 @@ namespace {
 namespace fs = std::filesystem;
 
 HeightField read_field(const std::string& path, const Grid& grid, const std::string& what) {
-  const ArrayXXdR a = read_npy_2d(path);
-  if (a.rows() != grid.ny || a.cols() != grid.nx) {
+  // the header's shape is checked before any data is read (npy_io.h)
+  const NpyShape shape = read_npy_shape(path);
+  if (shape.rows != grid.ny || shape.cols != grid.nx) {
     throw InputError(fmt::format("{}: {} holds {} rows x {} columns, the scene's grid is {} x {} (ny x nx)", path,
-                                 what, a.rows(), a.cols(), grid.ny, grid.nx));
+                                 what, shape.rows, shape.cols, grid.ny, grid.nx));
   }
+  const ArrayXXdR a = read_npy_2d(path, grid.ny, grid.nx);
   if (!a.allFinite()) throw InputError(fmt::format("{}: {} holds a non-finite height", path, what));
   return HeightField(grid, a);
 }

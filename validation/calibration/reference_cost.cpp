@@ -18,10 +18,9 @@ namespace fs = std::filesystem;
 
 std::optional<nlohmann::json> read_json(const fs::path& path) {
   if (!fs::exists(path)) return std::nullopt;
-  require_regular_file(path.string(), "run record");
-  std::ifstream in(path, std::ios::binary);
+  const std::string text = read_input_file(path.string(), input_kind::kRunRecord);
   try {
-    return nlohmann::json::parse(in);
+    return nlohmann::json::parse(text);
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: not valid JSON: {}", path.string(), e.what()));
   }

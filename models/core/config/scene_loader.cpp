@@ -97,19 +97,34 @@ Grid read_grid(const YamlMap& ground) {
   return g;
 }
 
+// The rows and columns a height file's header declares, read without decoding.
+std::pair<std::uint64_t, std::uint64_t> declared_shape(const std::string& path, bool png) {
+  if (png) {
+    const PngSize size = read_png_size(path);
+    return {size.height, size.width};
+  }
+  const NpyShape shape = read_npy_shape(path);
+  return {shape.rows, shape.cols};
+}
+
 // Reads a height file now, so that a wrong shape or a bad value is reported
-// against the scene key; make_initial_height reads it again.
+// against the scene key; make_initial_height reads it again. The shape is
+// compared from the file's header first: a 0.5 MB PNG may declare 16384^2
+// pixels (2.6 GB decoded).
 void check_height_file(const YamlValue& path_value, const InitialHeight& init, const Grid& grid) {
   const bool png = fs::path(init.path).extension() == ".png";
+  const std::pair<std::uint64_t, std::uint64_t> expected(grid.ny, grid.nx);
+  std::pair<std::uint64_t, std::uint64_t> shape;
   ArrayXXdR a;
   try {
-    a = png ? read_png16(init.path) : read_npy_2d(init.path);
+    shape = declared_shape(init.path, png);
+    if (shape == expected) a = png ? read_png16(init.path, grid.ny, grid.nx) : read_npy_2d(init.path, grid.ny, grid.nx);
   } catch (const InputError& e) {
     path_value.fail(png ? "a readable 16-bit grey PNG" : "a readable .npy array", fmt::format("an error: {}", e.what()));
   }
-  if (a.rows() != grid.ny || a.cols() != grid.nx) {
+  if (shape != expected) {
     path_value.fail(fmt::format("an array of {} rows x {} columns (the ground grid's ny x nx)", grid.ny, grid.nx),
-                    fmt::format("{} x {} in {}", a.rows(), a.cols(), init.path));
+                    fmt::format("{} x {} in {}", shape.first, shape.second, init.path));
   }
   if (!a.allFinite()) path_value.fail("finite heights", "a non-finite value in " + init.path);
   const double lowest = (png ? a * init.png_height_scale_m / 65535.0 : a).minCoeff() + init.height_m;
@@ -401,12 +416,7 @@ Scene load_scene_from_node(const YAML::Node& root, const std::string& path, cons
 }
 
 Scene load_scene(const std::string& path, const SectionTypes& sections) {
-  require_regular_file(path, "scene");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_scene_from_string(text.str(), path, sections);
+  return load_scene_from_string(read_input_file(path, input_kind::kScene), path, sections);
 }
 
 }  // namespace repose
