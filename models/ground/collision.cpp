@@ -70,11 +70,14 @@ Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, Un
   const int i0 = std::max(0, fp.i0 - reach_cells), j0 = std::max(0, fp.j0 - reach_cells);
   const int i1 = std::min(g.nx, fp.i0 + fp.ni + reach_cells), j1 = std::min(g.ny, fp.j0 + fp.nj + reach_cells);
   const double top = ground.heights().block(j0, i0, j1 - j0, i1 - i0).maxCoeff();
-  if (box.min.z() >= top) return {};
+  // as displacement's contact test (displacement.h): an object resting on
+  // ground it left at its underside touches it to round-off, and is no contact
+  if (box.min.z() >= top - kContactToleranceFraction * g.cell_size_m) return {};
   const DepthImage img =
       renderer.render_below(downward_faces(mesh), fp.sub_grid(ground.grid()), box.min.z(), box.max.z());
   Underside u;
   u.footprint = fp;
+  u.top_m = box.max.z();
   u.z_m = ArrayXXdR::Constant(fp.nj, fp.ni, std::numeric_limits<double>::infinity());
   for (int j = 0; j < fp.nj; ++j) {
     for (int i = 0; i < fp.ni; ++i) {

@@ -11,21 +11,12 @@
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"
+#include "models/ground/substep_count.h"
 #include "models/ground/swept_mesh.h"
 
 namespace repose {
 
 namespace {
-
-// Substeps this step needs: by angle for rotating objects, `substeps` without sweeping.
-int substep_count(const GroundModel& model, const std::vector<Pose>& from, const std::vector<Pose>& to) {
-  int n = model.options.sweep ? 1 : model.options.substeps;
-  for (std::size_t o = 0; o < from.size(); ++o) {
-    const double angle = from[o].orientation.angularDistance(to[o].orientation);
-    n = std::max(n, static_cast<int>(std::ceil(angle / model.options.max_substep_angle_rad - 1e-9)));
-  }
-  return n;
-}
 
 // Translation below this (per substep) is not swept: the body alone is the same.
 bool moved(const Pose& a, const Pose& b, double cell_size_m) {
@@ -72,6 +63,7 @@ Underside merged_underside(const std::vector<Underside>& undersides, const std::
   }
   Underside u;
   u.footprint = box;
+  for (const std::size_t m : members) u.top_m = std::max(u.top_m, undersides[m].top_m);
   u.z_m.resize(box.nj, box.ni);
   for (int j = 0; j < box.nj; ++j) {
     for (int i = 0; i < box.ni; ++i) {
@@ -94,8 +86,9 @@ int add_hovering_undersides(const GroundModel& model, const GroundParams& params
                             const std::vector<TriangleMesh>& meshes, const std::vector<char>& coarse,
                             const std::vector<Eigen::Vector3d>& motion, UndersideRenderer& renderer,
                             GroundState* state, Ceiling* ceiling) {
-  int reach_cells = 0;
+  int reach_cells = 0;  // beyond the grid's size it reaches nothing more (and cannot overflow)
   for (const Material& m : params.materials) reach_cells = std::max(reach_cells, m.erosion_iterations);
+  reach_cells = std::min(reach_cells, std::max(model.grid.nx, model.grid.ny));
   int contact_cells = 0;
   std::size_t fine = 0;  // ceiling->undersides holds the fine objects in order
   for (std::size_t o = 0; o < meshes.size(); ++o) {
@@ -127,7 +120,7 @@ StepReport step(const GroundModel& model, const GroundParams& params, UndersideR
   const std::size_t n_objects = model.objects.size();
   std::vector<Pose> end_poses(n_objects);
   for (std::size_t o = 0; o < n_objects; ++o) end_poses[o] = model.objects[o].pose_at(t0 + dt);
-  const int substeps = substep_count(model, state->previous_poses, end_poses);
+  const int substeps = substep_count(model, state->previous_poses, end_poses, state->step_index);
   report.substeps = substeps;
 
   std::vector<Pose> poses = state->previous_poses;
@@ -176,7 +169,9 @@ StepReport step(const GroundModel& model, const GroundParams& params, UndersideR
     report.erosion.pair_visits += e.pair_visits;
     report.erosion.moves += e.moves;
   }
-  state->erosion.end_step();
+  // a remembered cell is forgotten once its time is up and its slopes have settled (erosion_memory.h)
+  const std::vector<double> max_dh = max_height_differences(model, params);
+  state->erosion.end_step([&](std::int64_t c) { return is_settled(model, max_dh, state->height, c); });
   state->previous_poses = end_poses;
   ++state->step_index;
   state->time_s = state->step_index * dt;
