@@ -17,11 +17,15 @@ Grid Footprint::sub_grid(const Grid& grid) const {
 Footprint footprint_of(const Aabb& box, const Grid& grid) {
   if (box.empty()) return {};
   const double h = grid.cell_size_m;
-  // cell centres inside [min, max]; clamped to the grid
-  const double fi0 = std::ceil((box.min.x() - grid.origin_x_m) / h - 0.5);
-  const double fi1 = std::floor((box.max.x() - grid.origin_x_m) / h - 0.5);
-  const double fj0 = std::ceil((box.min.y() - grid.origin_y_m) / h - 0.5);
-  const double fj1 = std::floor((box.max.y() - grid.origin_y_m) / h - 0.5);
+  // cell centres inside [min, max], give or take 1e-9 cell: a box edge on a
+  // row of centres (a sphere of radius 5 cm on 4 mm cells) then takes that
+  // row on both sides alike, not as round-off decides (a footprint one row
+  // wider on one side made drags lopsided); clamped to the grid
+  constexpr double kTie = 1e-9;
+  const double fi0 = std::ceil((box.min.x() - grid.origin_x_m) / h - 0.5 - kTie);
+  const double fi1 = std::floor((box.max.x() - grid.origin_x_m) / h - 0.5 + kTie);
+  const double fj0 = std::ceil((box.min.y() - grid.origin_y_m) / h - 0.5 - kTie);
+  const double fj1 = std::floor((box.max.y() - grid.origin_y_m) / h - 0.5 + kTie);
   const int i0 = static_cast<int>(std::clamp(fi0, 0.0, static_cast<double>(grid.nx)));
   const int i1 = static_cast<int>(std::clamp(fi1, -1.0, static_cast<double>(grid.nx - 1)));
   const int j0 = static_cast<int>(std::clamp(fj0, 0.0, static_cast<double>(grid.ny)));

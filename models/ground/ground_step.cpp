@@ -18,6 +18,14 @@ namespace repose {
 
 namespace {
 
+// The highest point of an object at a pose: the crest of the heaps it
+// pushes up (excess_routing.h). A swept mesh reaches higher (the start of a
+// press from above), but the object is where the step ends.
+double top_at(const ObjectSpec& object, const Pose& pose) {
+  const Eigen::Vector3d up = pose.orientation.conjugate() * Eigen::Vector3d::UnitZ();
+  return (object.body.V * up).maxCoeff() + pose.position_m.z();
+}
+
 // Translation below this (per substep) is not swept: the body alone is the same.
 bool moved(const Pose& a, const Pose& b, double cell_size_m) {
   return (b.position_m - a.position_m).norm() > 1e-6 * cell_size_m;
@@ -83,7 +91,8 @@ Underside merged_underside(const std::vector<Underside>& undersides, const std::
 // contact (e.g. one lifted out of its own imprint), and material deposited
 // above its underside is displaced as by any contact.
 int add_hovering_undersides(const GroundModel& model, const GroundParams& params,
-                            const std::vector<TriangleMesh>& meshes, const std::vector<char>& coarse,
+                            const std::vector<TriangleMesh>& meshes, const std::vector<double>& tops,
+                            const std::vector<char>& coarse,
                             const std::vector<Eigen::Vector3d>& motion, UndersideRenderer& renderer,
                             GroundState* state, Ceiling* ceiling) {
   int reach_cells = 0;  // beyond the grid's size it reaches nothing more (and cannot overflow)
@@ -97,6 +106,7 @@ int add_hovering_undersides(const GroundModel& model, const GroundParams& params
     if (!ceiling->undersides[k].empty()) continue;
     ceiling->undersides[k] = find_underside(meshes[o], state->height, renderer, reach_cells);
     if (ceiling->undersides[k].empty()) continue;
+    ceiling->undersides[k].top_m = tops[o];
     const Underside u = ceiling->undersides[k];  // displace reads the ceiling too
     contact_cells += displace(model, params, u, *ceiling, motion[o], state).contact_cells;
   }
@@ -130,6 +140,7 @@ StepReport step(const GroundModel& model, const GroundParams& params, UndersideR
     std::vector<TriangleMesh> meshes(n_objects);
     std::vector<Eigen::Vector3d> motion(n_objects);
     std::vector<char> coarse(n_objects);
+    std::vector<double> tops(n_objects);
     for (std::size_t o = 0; o < n_objects; ++o) {
       const ObjectSpec& object = model.objects[o];
       const Pose to = s == substeps ? end_poses[o] : object.pose_at(t);
@@ -142,7 +153,11 @@ StepReport step(const GroundModel& model, const GroundParams& params, UndersideR
         meshes[o] = transformed(object.body, to);
       }
       coarse[o] = uses_coarse_grid(model, static_cast<int>(o), to);
-      if (!coarse[o]) ceiling.undersides.push_back(find_underside(meshes[o], state->height, renderer));
+      tops[o] = top_at(object, to);
+      if (!coarse[o]) {
+        ceiling.undersides.push_back(find_underside(meshes[o], state->height, renderer));
+        ceiling.undersides.back().top_m = tops[o];
+      }
       poses[o] = to;
     }
     std::vector<Eigen::Vector3d> fine_motion;
@@ -163,7 +178,8 @@ StepReport step(const GroundModel& model, const GroundParams& params, UndersideR
       const Underside& u = cluster.size() == 1 ? ceiling.undersides[cluster[0]] : merged;
       report.contact_cells += displace(model, params, u, ceiling, mean_motion, state).contact_cells;
     }
-    report.contact_cells += add_hovering_undersides(model, params, meshes, coarse, motion, renderer, state, &ceiling);
+    report.contact_cells +=
+        add_hovering_undersides(model, params, meshes, tops, coarse, motion, renderer, state, &ceiling);
     const ErosionResult e = erode(model, params, ceiling, state);
     report.erosion.passes += e.passes;
     report.erosion.pair_visits += e.pair_visits;
