@@ -113,6 +113,56 @@ int add_hovering_undersides(const GroundModel& model, const GroundParams& params
   return contact_cells;
 }
 
+// One substep: every object from `from` to `to`: collision, displacement
+// (coarse objects on their patch, touching fine objects as one region),
+// then erosion.
+void substep(const GroundModel& model, const GroundParams& params, const std::vector<Pose>& from,
+             const std::vector<Pose>& to, UndersideRenderer& renderer, GroundState* state, StepReport* report) {
+  const std::size_t n_objects = model.objects.size();
+  Ceiling ceiling;
+  std::vector<TriangleMesh> meshes(n_objects);
+  std::vector<Eigen::Vector3d> motion(n_objects), fine_motion;
+  std::vector<char> coarse(n_objects);
+  std::vector<double> tops(n_objects);
+  for (std::size_t o = 0; o < n_objects; ++o) {
+    const ObjectSpec& object = model.objects[o];
+    motion[o] = to[o].position_m - from[o].position_m;
+    if (model.options.sweep && moved(from[o], to[o], model.grid.cell_size_m)) {
+      REPOSE_DEMAND(model.swept_bodies.size() == n_objects);
+      meshes[o] = swept_mesh(object.body, model.swept_bodies[o], from[o], to[o]);
+      ++report->swept_objects;
+    } else {
+      meshes[o] = transformed(object.body, to[o]);
+    }
+    coarse[o] = uses_coarse_grid(model, static_cast<int>(o), to[o]);
+    tops[o] = top_at(object, to[o]);
+    if (!coarse[o]) {
+      ceiling.undersides.push_back(find_underside(meshes[o], state->height, renderer));
+      ceiling.undersides.back().top_m = tops[o];
+      fine_motion.push_back(motion[o]);
+    }
+  }
+  for (std::size_t o = 0; o < n_objects; ++o) {
+    if (!coarse[o]) continue;
+    report->contact_cells += deform_coarse(model, params, meshes[o], motion[o], renderer, state).contact_cells;
+    ++report->coarse_objects;
+  }
+  // a cluster of touching objects is displaced as one region, moving with their mean motion
+  for (const std::vector<std::size_t>& cluster : touching_clusters(ceiling.undersides)) {
+    Eigen::Vector3d mean_motion = Eigen::Vector3d::Zero();
+    for (const std::size_t m : cluster) mean_motion += fine_motion[m] / static_cast<double>(cluster.size());
+    const Underside merged = cluster.size() == 1 ? Underside{} : merged_underside(ceiling.undersides, cluster);
+    const Underside& u = cluster.size() == 1 ? ceiling.undersides[cluster[0]] : merged;
+    report->contact_cells += displace(model, params, u, ceiling, mean_motion, state).contact_cells;
+  }
+  report->contact_cells +=
+      add_hovering_undersides(model, params, meshes, tops, coarse, motion, renderer, state, &ceiling);
+  const ErosionResult e = erode(model, params, ceiling, state);
+  report->erosion.passes += e.passes;
+  report->erosion.pair_visits += e.pair_visits;
+  report->erosion.moves += e.moves;
+}
+
 }  // namespace
 
 bool uses_coarse_grid(const GroundModel& model, int object, const Pose& pose) {
@@ -135,55 +185,12 @@ StepReport step(const GroundModel& model, const GroundParams& params, UndersideR
 
   std::vector<Pose> poses = state->previous_poses;
   for (int s = 1; s <= substeps; ++s) {
-    const double t = t0 + dt * s / substeps;
-    Ceiling ceiling;
-    std::vector<TriangleMesh> meshes(n_objects);
-    std::vector<Eigen::Vector3d> motion(n_objects);
-    std::vector<char> coarse(n_objects);
-    std::vector<double> tops(n_objects);
+    std::vector<Pose> to(n_objects);
     for (std::size_t o = 0; o < n_objects; ++o) {
-      const ObjectSpec& object = model.objects[o];
-      const Pose to = s == substeps ? end_poses[o] : object.pose_at(t);
-      motion[o] = to.position_m - poses[o].position_m;
-      if (model.options.sweep && moved(poses[o], to, model.grid.cell_size_m)) {
-        REPOSE_DEMAND(model.swept_bodies.size() == n_objects);
-        meshes[o] = swept_mesh(object.body, model.swept_bodies[o], poses[o], to);
-        ++report.swept_objects;
-      } else {
-        meshes[o] = transformed(object.body, to);
-      }
-      coarse[o] = uses_coarse_grid(model, static_cast<int>(o), to);
-      tops[o] = top_at(object, to);
-      if (!coarse[o]) {
-        ceiling.undersides.push_back(find_underside(meshes[o], state->height, renderer));
-        ceiling.undersides.back().top_m = tops[o];
-      }
-      poses[o] = to;
+      to[o] = s == substeps ? end_poses[o] : model.objects[o].pose_at(t0 + dt * s / substeps);
     }
-    std::vector<Eigen::Vector3d> fine_motion;
-    for (std::size_t o = 0; o < n_objects; ++o) {
-      if (coarse[o]) {
-        report.contact_cells += deform_coarse(model, params, meshes[o], motion[o], renderer, state).contact_cells;
-        ++report.coarse_objects;
-      } else {
-        fine_motion.push_back(motion[o]);
-      }
-    }
-    // a cluster of touching objects is displaced as one region, moving with their mean motion
-    for (const std::vector<std::size_t>& cluster : touching_clusters(ceiling.undersides)) {
-      Eigen::Vector3d mean_motion = Eigen::Vector3d::Zero();
-      for (const std::size_t m : cluster) mean_motion += fine_motion[m] / static_cast<double>(cluster.size());
-      const Underside merged =
-          cluster.size() == 1 ? Underside{} : merged_underside(ceiling.undersides, cluster);
-      const Underside& u = cluster.size() == 1 ? ceiling.undersides[cluster[0]] : merged;
-      report.contact_cells += displace(model, params, u, ceiling, mean_motion, state).contact_cells;
-    }
-    report.contact_cells +=
-        add_hovering_undersides(model, params, meshes, tops, coarse, motion, renderer, state, &ceiling);
-    const ErosionResult e = erode(model, params, ceiling, state);
-    report.erosion.passes += e.passes;
-    report.erosion.pair_visits += e.pair_visits;
-    report.erosion.moves += e.moves;
+    substep(model, params, poses, to, renderer, state, &report);
+    poses = to;
   }
   // a remembered cell is forgotten once its time is up and its slopes have settled (erosion_memory.h)
   const std::vector<double> max_dh = max_height_differences(model, params);
