@@ -197,14 +197,13 @@ DisplacementResult displace(const GroundModel& model, const GroundParams& params
   } else {
     spread_from_inside_out(&region, &sink);
   }
-  std::vector<std::int64_t> touched;
+  route_excess(ExcessRouting{model, params, ceiling, dir, region, crest_m}, &received, state);
+  std::vector<std::int64_t> touched;  // every cell that changed has an entry in received
   for (const auto& [c, amount] : received) touched.push_back(c);
-  route_excess(ExcessRouting{model, params, ceiling, dir, region, crest_m}, &received, state, &touched);
 
   for (const int l : region.cells) state->erosion.touch(model.cell(region.gi(l), region.gj(l)));
   // sorted: the memory lists cells in the order they join, and the map's order is not deterministic
   std::sort(touched.begin(), touched.end());
-  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
   for (const std::int64_t c : touched) state->erosion.touch(c);
   return result;
 }

@@ -1,6 +1,9 @@
 #include "models/ground/excess_routing.h"
 
 #include <algorithm>
+#include <functional>
+#include <queue>
+#include <tuple>
 #include <cmath>
 #include <utility>
 
@@ -30,8 +33,7 @@ void sort_unique(std::vector<std::int64_t>* v) {
 }
 
 // Puts `amount` on cell (i, j), or records it as leaving the grid.
-void deposit(const ExcessRouting& in, int i, int j, double amount, Received* received, GroundState* state,
-             std::vector<std::int64_t>* touched) {
+void deposit(const ExcessRouting& in, int i, int j, double amount, Received* received, GroundState* state) {
   const Grid& g = in.model.grid;
   if (!g.contains(i, j)) {
     state->ledger.left_grid_m3 += amount * g.cell_area_m2();
@@ -40,7 +42,6 @@ void deposit(const ExcessRouting& in, int i, int j, double amount, Received* rec
   const std::int64_t c = in.model.cell(i, j);
   state->height.at(i, j) += amount;
   (*received)[c] += amount;
-  touched->push_back(c);
 }
 
 void take(const ExcessRouting& in, std::int64_t c, double amount, Received* received, GroundState* state) {
@@ -127,8 +128,7 @@ int nearer_neighbours(const ExcessRouting& in, const Levels& lv, int i, int j, i
   return n;
 }
 
-void move_under_objects(const ExcessRouting& in, Received* received, GroundState* state,
-                        std::vector<std::int64_t>* touched) {
+void move_under_objects(const ExcessRouting& in, Received* received, GroundState* state) {
   const Grid& g = in.model.grid;
   auto excess_at = [&](int i, int j) { return state->height.at(i, j) - in.limit_at(i, j); };
   std::vector<std::int64_t> over;
@@ -157,7 +157,7 @@ void move_under_objects(const ExcessRouting& in, Received* received, GroundState
       if (n == 0) continue;  // nothing above the ceiling; n == 0 cannot happen for k >= 1 (BFS)
       take(in, c, e, received, state);
       for (int t = 0; t < n; ++t) {
-        deposit(in, targets[t][0], targets[t][1], e / n, received, state, touched);
+        deposit(in, targets[t][0], targets[t][1], e / n, received, state);
         if (g.contains(targets[t][0], targets[t][1])) enqueue(in.model.cell(targets[t][0], targets[t][1]));
       }
     }
@@ -169,19 +169,23 @@ void move_under_objects(const ExcessRouting& in, Received* received, GroundState
 bool is_open(const ExcessRouting& in, int i, int j) { return in.on_open_ground(i, j); }
 
 // Rings of 4-neighbour distance from the objects (ring 0: the covered cells
-// of the footprint) through uncovered cells, found as far out as asked.
+// of the footprint) through uncovered cells, found as far out as asked. The
+// ring of each cell is kept in a dense window around the footprint, which
+// doubles when a ring reaches its edge.
 class Rings {
  public:
-  explicit Rings(const ExcessRouting& in) : in_(in) {
+  explicit Rings(const ExcessRouting& in) : in_(in), window_(in.region.fp) {
+    resize_window(8);
     const Footprint& fp = in.region.fp;
     rings_.emplace_back();
     for (int j = fp.j0; j < fp.j0 + fp.nj; ++j) {
       for (int i = fp.i0; i < fp.i0 + fp.ni; ++i) {
-        if (!is_open(in, i, j)) add(0, in.model.cell(i, j));
+        if (!is_open(in, i, j)) add(0, i, j);
       }
     }
   }
-  // Sorted cells of ring k (empty past the last).
+  // The cells of ring k from the footprint's centre outwards (by away(),
+  // then index); empty past the last ring.
   const std::vector<std::int64_t>& at(int k) {
     while (static_cast<int>(rings_.size()) <= k && !rings_.back().empty()) grow();
     return rings_[static_cast<std::size_t>(std::min(k, static_cast<int>(rings_.size()) - 1))];
@@ -198,29 +202,60 @@ class Rings {
   }
   // -1 for a cell not reached yet (or never).
   int of(std::int64_t c) const {
-    const auto it = ring_of_.find(c);
-    return it == ring_of_.end() ? -1 : it->second;
+    const int nx = in_.model.grid.nx;
+    const int i = cell_i(c, nx), j = cell_j(c, nx);
+    return window_.contains(i, j) ? ring_of_[slot(i, j)] : -1;
   }
 
  private:
-  void add(int k, std::int64_t c) {
-    if (ring_of_.emplace(c, k).second) rings_[static_cast<std::size_t>(k)].push_back(c);
+  std::size_t slot(int i, int j) const {
+    return static_cast<std::size_t>(j - window_.j0) * window_.ni + (i - window_.i0);
+  }
+  // The footprint and `margin` cells around it, clamped to the grid.
+  void resize_window(int margin) {
+    const Grid& g = in_.model.grid;
+    const Footprint& fp = in_.region.fp;
+    const Footprint old = window_;
+    const std::vector<int> old_rings = std::move(ring_of_);
+    const int i0 = std::max(0, fp.i0 - margin), j0 = std::max(0, fp.j0 - margin);
+    window_ = Footprint{i0, j0, std::min(g.nx, fp.i0 + fp.ni + margin) - i0, std::min(g.ny, fp.j0 + fp.nj + margin) - j0};
+    ring_of_.assign(static_cast<std::size_t>(window_.ni) * window_.nj, -1);
+    margin_ = margin;
+    if (old_rings.empty()) return;
+    for (int j = old.j0; j < old.j0 + old.nj; ++j) {
+      for (int i = old.i0; i < old.i0 + old.ni; ++i) {
+        ring_of_[slot(i, j)] = old_rings[static_cast<std::size_t>(j - old.j0) * old.ni + (i - old.i0)];
+      }
+    }
+  }
+  void add(int k, int i, int j) {
+    if (!window_.contains(i, j)) resize_window(2 * margin_);
+    int& r = ring_of_[slot(i, j)];
+    if (r != -1) return;
+    r = k;
+    rings_[static_cast<std::size_t>(k)].push_back(in_.model.cell(i, j));
   }
   void grow() {
     const Grid& g = in_.model.grid;
     const int k = static_cast<int>(rings_.size());
     rings_.emplace_back();
-    for (const std::int64_t c : rings_[static_cast<std::size_t>(k - 1)]) {
+    const std::vector<std::int64_t> last = rings_[static_cast<std::size_t>(k - 1)];
+    for (const std::int64_t c : last) {
       for (const auto& o : kNeighbours) {
         const int ni = cell_i(c, g.nx) + o[0], nj = cell_j(c, g.nx) + o[1];
-        if (g.contains(ni, nj) && is_open(in_, ni, nj)) add(k, in_.model.cell(ni, nj));
+        if (g.contains(ni, nj) && is_open(in_, ni, nj)) add(k, ni, nj);
       }
     }
-    std::sort(rings_.back().begin(), rings_.back().end());
+    std::sort(rings_.back().begin(), rings_.back().end(), [&](std::int64_t a, std::int64_t b) {
+      const std::int64_t da = away(a), db = away(b);
+      return da != db ? da < db : a < b;
+    });
   }
   const ExcessRouting& in_;
+  Footprint window_;
+  int margin_ = 0;
   std::vector<std::vector<std::int64_t>> rings_;
-  std::unordered_map<std::int64_t, int> ring_of_;
+  std::vector<int> ring_of_;  // over window_; -1: not reached
 };
 
 struct Shed {
@@ -261,37 +296,45 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k,
     if (s.n > 0) break;
   }
   if (s.n == 0) return s;  // hemmed in: keeps what it got
-  const double theta = in.params.materials[static_cast<std::size_t>(in.model.material_at(c))].repose_angle_rad;
-  const double cap = std::min(in.crest_m, lowest + g.cell_size_m * std::tan(theta));
+  const double cap = std::min(in.crest_m, lowest + in.repose_step_m[static_cast<std::size_t>(in.model.material_at(c))]);
   s.amount = std::min(mine, h - cap);
   return s;
 }
 
-// One sweep outwards from ring 1 until nothing moves past the farthest
-// source; within a ring from the centre outwards, cells equally far from
-// it all at once (Jacobi: they never give to each other, and their caps
-// are taken from the heights before any of them moves).
-void shed_outwards(const ExcessRouting& in, int last_source_ring, Rings* rings, Received* received,
-                   GroundState* state, std::vector<std::int64_t>* touched) {
-  bool moving = false;
-  for (int k = 1; moving || k <= last_source_ring; ++k) {
-    std::vector<std::int64_t> ring = rings->at(k);
-    if (ring.empty()) break;
-    rings->at(k + 1);  // known before ring k moves
-    std::stable_sort(ring.begin(), ring.end(), [&](auto a, auto b) { return rings->away(a) < rings->away(b); });
-    moving = false;
-    for (std::size_t first = 0, last = 0; first < ring.size(); first = last) {
-      while (last < ring.size() && rings->away(ring[last]) == rings->away(ring[first])) ++last;
-      std::vector<Shed> sheds;
-      for (std::size_t q = first; q < last; ++q) {
-        const Shed s = shed_of(in, *rings, ring[q], k, *received, *state);
-        if (s.amount > 0.0) sheds.push_back(s);
+// Moves the material of `holding` (cells that just received) outwards until
+// it rests: ring by ring, within a ring from the centre outwards, cells
+// equally far from it all at once (Jacobi: they never give to each other,
+// and their caps are taken from the heights before any of them moves).
+// Only cells that received are visited: a cell's cap never falls (its
+// onward neighbours only rise), so one that rested still rests.
+void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& holding, Rings* rings,
+                   Received* received, GroundState* state) {
+  const Grid& g = in.model.grid;
+  using Entry = std::tuple<int, std::int64_t, std::int64_t>;  // ring, away, cell: the order of visits
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  for (const std::int64_t c : holding) queue.emplace(rings->of(c), rings->away(c), c);
+  std::vector<Shed> sheds;
+  while (!queue.empty()) {
+    const auto [k, away, first] = queue.top();
+    rings->at(k + 1);  // its onward neighbours are known
+    sheds.clear();
+    for (std::int64_t last = -1; !queue.empty() && std::get<0>(queue.top()) == k && std::get<1>(queue.top()) == away;) {
+      const std::int64_t c = std::get<2>(queue.top());
+      queue.pop();
+      if (c == last) continue;  // queued twice
+      last = c;
+      const Shed s = shed_of(in, *rings, c, k, *received, *state);
+      if (s.amount > 0.0) sheds.push_back(s);
+    }
+    for (const Shed& s : sheds) {
+      take(in, s.from, s.amount, received, state);
+      for (int t = 0; t < s.n; ++t) {
+        const int ti = s.to[t][0], tj = s.to[t][1];
+        deposit(in, ti, tj, s.amount / s.n, received, state);
+        if (!g.contains(ti, tj)) continue;
+        const std::int64_t n = in.model.cell(ti, tj);
+        queue.emplace(rings->of(n), rings->away(n), n);
       }
-      for (const Shed& s : sheds) {
-        take(in, s.from, s.amount, received, state);
-        for (int t = 0; t < s.n; ++t) deposit(in, s.to[t][0], s.to[t][1], s.amount / s.n, received, state, touched);
-      }
-      moving = moving || !sheds.empty();
     }
   }
 }
@@ -301,13 +344,12 @@ void shed_outwards(const ExcessRouting& in, int last_source_ring, Rings* rings, 
 // as poured material does, the heap grows upwards near the object only as
 // its foot widens, so it ends as a slope at theta rather than a thin layer
 // spread far (at most kMaxPortions portions; theta = 90 deg needs one).
-void heap_on_open_ground(const ExcessRouting& in, Received* received, GroundState* state,
-                         std::vector<std::int64_t>* touched) {
-  constexpr int kMaxPortions = 64;
+void heap_on_open_ground(const ExcessRouting& in, Received* received, GroundState* state) {
+  constexpr int kMaxPortions = 16;
   const Grid& g = in.model.grid;
   Rings rings(in);
   std::vector<std::pair<std::int64_t, double>> sources;  // cell, displaced material on it
-  int last_source_ring = 0;
+  std::vector<std::int64_t> holding;
   double portions = 1.0;
   for (const std::int64_t c : cells_with_material(*received)) {
     const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
@@ -317,8 +359,8 @@ void heap_on_open_ground(const ExcessRouting& in, Received* received, GroundStat
     if (rings.of(c) == -1) continue;  // hemmed in: keeps what it got
     const double amount = (*received)[c];
     sources.emplace_back(c, amount);
-    last_source_ring = std::max(last_source_ring, rings.of(c));
-    const double step_m = g.cell_size_m * std::tan(in.params.materials[in.model.material_at(c)].repose_angle_rad);
+    holding.push_back(c);
+    const double step_m = in.repose_step_m[static_cast<std::size_t>(in.model.material_at(c))];
     portions = std::max(portions, std::min<double>(kMaxPortions, std::ceil(amount / step_m)));
     state->height.at(i, j) -= amount;
     (*received)[c] = 0.0;
@@ -328,7 +370,7 @@ void heap_on_open_ground(const ExcessRouting& in, Received* received, GroundStat
       state->height.at(cell_i(c, g.nx), cell_j(c, g.nx)) += amount / portions;
       (*received)[c] += amount / portions;
     }
-    shed_outwards(in, last_source_ring, &rings, received, state, touched);
+    shed_outwards(in, holding, &rings, received, state);
   }
 }
 
@@ -375,10 +417,11 @@ double ExcessRouting::limit_at(int i, int j) const {
   return pocket[static_cast<std::size_t>((j - window.j0) * window.ni + (i - window.i0))] ? crest_m : c;
 }
 
-void route_excess(ExcessRouting in, Received* received, GroundState* state, std::vector<std::int64_t>* touched) {
+void route_excess(ExcessRouting in, Received* received, GroundState* state) {
   find_pockets(&in);
-  move_under_objects(in, received, state, touched);
-  heap_on_open_ground(in, received, state, touched);
+  for (const Material& m : in.params.materials) in.repose_step_m.push_back(in.model.grid.cell_size_m * std::tan(m.repose_angle_rad));
+  move_under_objects(in, received, state);
+  heap_on_open_ground(in, received, state);
 }
 
 }  // namespace repose

@@ -59,6 +59,7 @@ struct ExcessRouting {
   // column as high as the whole region's material (issue 16).
   Footprint window{};  // the footprint and one ring around it
   std::vector<char> pocket{};
+  std::vector<double> repose_step_m{};  // per material: cell_size * tan(theta)
   // How high the cell may stand before its material must move on: the
   // ceiling under an object (the base where that is lower), the crest in a
   // pocket, +inf on open ground.
@@ -67,8 +68,7 @@ struct ExcessRouting {
 };
 
 // Moves excess as above. received: what this displacement has put on each
-// free cell (updated). Every cell that changes is appended to touched.
-void route_excess(ExcessRouting in, Received* received, GroundState* state,
-                  std::vector<std::int64_t>* touched);
+// free cell (updated; every cell that changes has an entry).
+void route_excess(ExcessRouting in, Received* received, GroundState* state);
 
 }  // namespace repose
