@@ -32,7 +32,7 @@ TEST(ErosionMemory, AnUnsettledCellStaysPastItsTime) {
 // passes, cells were forgotten at up to 37 deg. Prints how long it took.
 TEST(ErosionMemory, ASurfaceLeftAloneReachesTheAngleOfRepose) {
   const double bed = 0.05, r = 0.05, lifted_s = 0.6, step_s = 0.02;
-  for (const auto [passes, memory_steps] : {std::pair{1, 0}, std::pair{5, 5}, std::pair{5, 30}}) {
+  for (const auto& [passes, memory_steps] : {std::pair{1, 0}, std::pair{5, 5}, std::pair{5, 30}}) {
     Material m = sand();
     m.erosion_iterations = passes;
     ObjectSpec ball = sphere(r, {at(0, 0, 0, bed + r + 0.005), at(0.3, 0, 0, bed + r - 0.03),
