@@ -1,6 +1,7 @@
 #include "models/ground/coarse_contact.h"
 
 #include <algorithm>
+#include <cstdint>
 
 #include "models/ground/displacement.h"
 #include "models/ground/erosion.h"
@@ -13,10 +14,24 @@ namespace repose {
 namespace {
 
 // Whole coarse cells [c0, c1] around fine cells [first, last] of an axis of n fine cells.
-bool coarse_range(int first, int last, int margin, int factor, int n, int* c0, int* c1) {
-  *c0 = std::max(0, first - margin) / factor;
-  *c1 = std::min(n / factor - 1, (last + margin) / factor);
+// In 64 bits: margin and factor come from the input (coarse_factor).
+bool coarse_range(int first, int last, std::int64_t margin, int factor, int n, int* c0, int* c1) {
+  *c0 = static_cast<int>(std::max<std::int64_t>(0, first - margin) / factor);
+  *c1 = static_cast<int>(std::min<std::int64_t>(n / factor - 1, (last + margin) / factor));
   return *c1 >= *c0;
+}
+
+// Bilinear interpolation of the coarse change can take a fine cell below
+// the base where its neighbours in the block stand higher. The block's
+// volume is right (at least zero: the coarse height is), so its negative
+// cells are lifted to zero and its positive ones scaled down by the same
+// volume: the block keeps its volume, and no height goes below zero.
+void keep_above_base(int i0, int j0, int f, HeightField* fine) {
+  auto block = fine->heights().block(j0, i0, f, f);
+  if (block.minCoeff() >= 0.0) return;
+  const double total = std::max(0.0, block.sum());  // negative only by round-off
+  const double positive = block.max(0.0).sum();
+  block = block.max(0.0) * (positive > 0.0 ? total / positive : 0.0);
 }
 
 }  // namespace
@@ -28,7 +43,7 @@ CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& 
   const int f = model.options.coarse_factor;
   const Footprint fp = footprint_of(bounding_box(mesh), g);
   if (fp.empty()) return result;
-  const int margin = std::max(fp.ni, fp.nj) / 2 + 2 * f;
+  const std::int64_t margin = std::max(fp.ni, fp.nj) / 2 + 2 * static_cast<std::int64_t>(f);
   int ci0, ci1, cj0, cj1;
   if (!coarse_range(fp.i0, fp.i0 + fp.ni - 1, margin, f, g.nx, &ci0, &ci1) ||
       !coarse_range(fp.j0, fp.j0 + fp.nj - 1, margin, f, g.ny, &cj0, &cj1)) {
@@ -67,6 +82,7 @@ CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& 
   erode(patch, params, ceiling, &patch_state);
   state->ledger.compressed_m3 += patch_state.ledger.compressed_m3;
   state->ledger.left_grid_m3 += patch_state.ledger.left_grid_m3;
+  state->ledger.bedrock_m3 = std::max(state->ledger.bedrock_m3, patch_state.ledger.bedrock_m3);
 
   // map back the change onto the fine cells of changed coarse cells
   HeightField change(patch_grid, patch_state.height.heights() - before.heights());
@@ -83,7 +99,7 @@ CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& 
           sum += df;
         }
       }
-      const double correction = dc - sum / (f * f);
+      const double correction = dc - sum / (static_cast<double>(f) * f);
       for (int j = j0; j < j0 + f; ++j) {
         for (int i = i0; i < i0 + f; ++i) {
           state->height.at(i, j) += correction;
@@ -91,6 +107,7 @@ CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& 
           ++result.changed_fine_cells;
         }
       }
+      keep_above_base(i0, j0, f, &state->height);
     }
   }
   return result;

@@ -14,6 +14,9 @@
 //    ones, so every coarse cell's volume change is carried over exactly and
 //    nothing is lost. The changed fine cells join the fine erosion memory
 //    (remembered at full resolution), so the next steps smooth them there.
+//    Interpolation can take a fine cell below the base where its block's
+//    neighbours stand higher: then the block's negative cells are lifted to
+//    zero and its positive ones scaled down, keeping the block's volume.
 // Limits: coarse cells that would reach past the grid's edge are left out
 // of the patch (a strip narrower than coarse_factor cells at the far edges is
 // not deformed by coarse objects); material pushed past the patch's edge

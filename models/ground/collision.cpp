@@ -17,11 +17,15 @@ Grid Footprint::sub_grid(const Grid& grid) const {
 Footprint footprint_of(const Aabb& box, const Grid& grid) {
   if (box.empty()) return {};
   const double h = grid.cell_size_m;
-  // cell centres inside [min, max]; clamped to the grid
-  const double fi0 = std::ceil((box.min.x() - grid.origin_x_m) / h - 0.5);
-  const double fi1 = std::floor((box.max.x() - grid.origin_x_m) / h - 0.5);
-  const double fj0 = std::ceil((box.min.y() - grid.origin_y_m) / h - 0.5);
-  const double fj1 = std::floor((box.max.y() - grid.origin_y_m) / h - 0.5);
+  // cell centres inside [min, max], give or take 1e-9 cell: a box edge on a
+  // row of centres (a sphere of radius 5 cm on 4 mm cells) then takes that
+  // row on both sides alike, not as round-off decides (a footprint one row
+  // wider on one side made drags lopsided); clamped to the grid
+  constexpr double kTie = 1e-9;
+  const double fi0 = std::ceil((box.min.x() - grid.origin_x_m) / h - 0.5 - kTie);
+  const double fi1 = std::floor((box.max.x() - grid.origin_x_m) / h - 0.5 + kTie);
+  const double fj0 = std::ceil((box.min.y() - grid.origin_y_m) / h - 0.5 - kTie);
+  const double fj1 = std::floor((box.max.y() - grid.origin_y_m) / h - 0.5 + kTie);
   const int i0 = static_cast<int>(std::clamp(fi0, 0.0, static_cast<double>(grid.nx)));
   const int i1 = static_cast<int>(std::clamp(fi1, -1.0, static_cast<double>(grid.nx - 1)));
   const int j0 = static_cast<int>(std::clamp(fj0, 0.0, static_cast<double>(grid.ny)));
@@ -70,11 +74,14 @@ Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, Un
   const int i0 = std::max(0, fp.i0 - reach_cells), j0 = std::max(0, fp.j0 - reach_cells);
   const int i1 = std::min(g.nx, fp.i0 + fp.ni + reach_cells), j1 = std::min(g.ny, fp.j0 + fp.nj + reach_cells);
   const double top = ground.heights().block(j0, i0, j1 - j0, i1 - i0).maxCoeff();
-  if (box.min.z() >= top) return {};
+  // as displacement's contact test (displacement.h): an object resting on
+  // ground it left at its underside touches it to round-off, and is no contact
+  if (box.min.z() >= top - kContactToleranceFraction * g.cell_size_m) return {};
   const DepthImage img =
       renderer.render_below(downward_faces(mesh), fp.sub_grid(ground.grid()), box.min.z(), box.max.z());
   Underside u;
   u.footprint = fp;
+  u.top_m = box.max.z();
   u.z_m = ArrayXXdR::Constant(fp.nj, fp.ni, std::numeric_limits<double>::infinity());
   for (int j = 0; j < fp.nj; ++j) {
     for (int i = 0; i < fp.ni; ++i) {

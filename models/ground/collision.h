@@ -17,6 +17,10 @@
 
 namespace repose {
 
+// A cell collides when its height exceeds the object's underside by more
+// than this fraction of the cell size (displacement.h says why).
+inline constexpr double kContactToleranceFraction = 1e-9;
+
 // A rectangle of cells [i0, i0 + ni) x [j0, j0 + nj) of a grid.
 struct Footprint {
   int i0 = 0, j0 = 0, ni = 0, nj = 0;
@@ -47,6 +51,9 @@ std::unique_ptr<UndersideRenderer> make_osmesa_underside_renderer();
 struct Underside {
   Footprint footprint;
   ArrayXXdR z_m;  // footprint.nj x footprint.ni; +inf where the object is not over the cell
+  // The object's highest point: displaced material heaps no higher beside it
+  // (excess_routing.h). -inf when unknown (an underside made by hand).
+  double top_m = -std::numeric_limits<double>::infinity();
   bool empty() const { return footprint.empty(); }
   // +inf outside the footprint.
   double at(int i, int j) const {

@@ -12,22 +12,31 @@
 // Dragging (horizontal or upward motion): cells are processed from the rear
 // of the contact region to the front (by position along the motion), each
 // handing its material in equal shares to the neighbours that are not
-// behind it along the motion (and, among contact cells, processed after it),
-// so nothing is pushed backwards.
-// Then, where a receiving cell rises above an object's underside, the excess
-// moves further out: towards the nearest cell that no object covers, level
-// by level (level: 4-neighbour distance to such a cell through free cells),
-// farthest level first, in equal shares to the neighbours one level nearer;
-// when dragging, not backwards unless that is the only way out (leaving it
-// above the object's underside would be worse). Objects whose footprints touch are
-// displaced as one region (ground_step.cpp), so this never pushes material
-// under another object.
+// behind it along the motion; among contact cells beside it, only to those
+// nearer the border. Cells tied in both never exchange material, so the
+// result does not depend on storage order: a drag along an axis is
+// mirror-symmetric about it, a diagonal drag about the diagonal.
+// Then the material that stands above an object's underside, or heaps on
+// open ground beyond what material can heap, moves further out
+// (excess_routing.h). Objects whose footprints touch are displaced as one
+// region (ground_step.cpp), so this never pushes material under another
+// object.
+//
+// Floor (departure: the paper has none): heights are material above a base
+// at z = 0; below it is bedrock. An object reaching below the base removes
+// material down to the base only, and the ledger records the largest volume
+// of bedrock one contact overlapped (VolumeLedger::bedrock_m3). Heights
+// never go below zero.
+//
+// Contact: a cell collides when its height exceeds the underside by more
+// than kContactToleranceFraction * cell_size. A cell left at an underside
+// by the last step stands there to round-off, and whether it counted as a
+// contact (passing material on) or not (receiving it) decided by round-off
+// made mirror images of a drag differ by millimetres.
 //
 // Boundary: open. Material handed to a cell beyond the grid's edge leaves
 // and is recorded as left_grid_m3 (an object larger than the grid pushes its
-// material off the grid). Excess that cannot reach an uncovered cell (a
-// pocket enclosed by contact, or only reachable backwards while dragging)
-// stays where it is.
+// material off the grid).
 
 #include <Eigen/Core>
 
@@ -43,6 +52,7 @@ struct DisplacementResult {
   int contact_cells = 0;
   double removed_m3 = 0.0;    // sum of dh' * cell area
   double displaced_m3 = 0.0;  // alpha * dh' * cell area
+  double bedrock_m3 = 0.0;    // sum of (base - underside) * cell area where the underside is below the base
 };
 
 // motion_m: how far the object moved over this (sub)step, world frame. The

@@ -31,6 +31,28 @@ struct PairRule {
 
 }  // namespace
 
+std::vector<double> max_height_differences(const GroundModel& model, const GroundParams& params) {
+  std::vector<double> max_dh;
+  for (const Material& m : params.materials) max_dh.push_back(model.grid.cell_size_m * std::tan(m.repose_angle_rad));
+  return max_dh;
+}
+
+bool is_settled(const GroundModel& model, const std::vector<double>& max_dh_m, const HeightField& height,
+                std::int64_t cell) {
+  const Grid& g = model.grid;
+  const int i = static_cast<int>(cell % g.nx), j = static_cast<int>(cell / g.nx);
+  const double tolerance_m = kErosionToleranceFraction * g.cell_size_m;
+  const double h = height.at(i, j);
+  for (const auto& o : kNeighbours) {
+    const int ni = i + o[0], nj = j + o[1];
+    if (!g.contains(ni, nj)) continue;
+    const double hn = height.at(ni, nj);
+    const std::int64_t hi = h > hn ? cell : model.cell(ni, nj);
+    if (std::abs(h - hn) - max_dh_m[static_cast<std::size_t>(model.material_at(hi))] > tolerance_m) return false;
+  }
+  return true;
+}
+
 ErosionResult erode(const GroundModel& model, const GroundParams& params, const Ceiling& ceiling,
                     GroundState* state) {
   ErosionResult result;

@@ -26,7 +26,12 @@
 // Boundary: closed. No pair crosses the grid edge, nothing leaves.
 // Tolerance: an excess below kErosionToleranceFraction * cell_size is left
 // alone, so a settled slope exceeds tan(theta) by at most that fraction
-// (1e-6), and a settled region stops being active.
+// (1e-6), and a settled region stops being active: a remembered cell is
+// forgotten once its time is up and it is settled (erosion_memory.h), so
+// a surface left alone reaches tan(theta) to that tolerance, whatever En.
+
+#include <cstdint>
+#include <vector>
 
 #include "models/ground/collision.h"
 
@@ -48,5 +53,14 @@ struct ErosionResult {
 // params (validate() does, once per run), so it can be driven with sigma
 // beyond the stability limit to measure what happens there.
 ErosionResult erode(const GroundModel& model, const GroundParams& params, const Ceiling& ceiling, GroundState* state);
+
+// The height difference a pair may have, per material (indexed like
+// params.materials): cell_size * tan(theta).
+std::vector<double> max_height_differences(const GroundModel& model, const GroundParams& params);
+
+// True when no 4-neighbour pair of `cell` exceeds its max height difference
+// (the higher cell's material) by more than the tolerance.
+bool is_settled(const GroundModel& model, const std::vector<double>& max_dh_m, const HeightField& height,
+                std::int64_t cell);
 
 }  // namespace repose

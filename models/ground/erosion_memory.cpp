@@ -15,10 +15,14 @@ void ErosionMemory::touch(std::int64_t cell) {
   r = start_;
 }
 
-void ErosionMemory::end_step() {
+void ErosionMemory::end_step(const std::function<bool(std::int64_t)>& settled) {
   std::size_t kept = 0;
   for (const std::int64_t c : cells_) {
     std::uint16_t& r = remaining_[static_cast<std::size_t>(c)];
+    if (r == 1 && settled && !settled(c)) {
+      cells_[kept++] = c;  // time ran out but the slope has not settled: stays, r stays 1
+      continue;
+    }
     if (--r > 0) cells_[kept++] = c;
   }
   cells_.resize(kept);

@@ -14,6 +14,7 @@
 #include "models/ground/ground_section.h"
 #include "models/ground/simulate_ground.h"
 #include "models/ground/streaks.h"
+#include "models/ground/substep_count.h"
 
 namespace repose {
 
@@ -44,6 +45,7 @@ void add_measures(Run& run, const GroundRun& g, const Scene& scene) {
   run.set("volume.final_m3", g.final_volume_m3, "m^3");
   run.set("volume.compressed_m3", g.ledger.compressed_m3, "m^3");
   run.set("volume.left_grid_m3", g.ledger.left_grid_m3, "m^3");
+  run.set("volume.bedrock_m3", g.ledger.bedrock_m3, "m^3");
   run.set("volume.imbalance_m3", g.ledger.imbalance_m3(g.final_volume_m3), "m^3");
   // streaks along each moving object's path; ridges count above 5 % of a cell
   for (const ObjectSpec& object : scene.objects) {
@@ -62,6 +64,7 @@ class CompiledGround final : public CompiledSolver {
  public:
   explicit CompiledGround(const Scene& scene)
       : scene_(scene), model_(build_ground_model(scene)), initial_(make_initial_height(scene)) {
+    check_counts(model_);  // substeps and coarse patches, so that `check` refuses what `run` would
     for (const Material& m : model_.materials) {
       const bool seen = std::any_of(targets_.begin(), targets_.end(),
                                     [&](const MaterialParameter& p) { return p.material == m.name; });

@@ -7,6 +7,7 @@ namespace repose {
 
 GroundState make_ground_state(const GroundModel& model, HeightField initial) {
   REPOSE_DEMAND(initial.grid() == model.grid);
+  REPOSE_DEMAND(initial.grid().cell_count() == 0 || initial.min_height_m() >= 0.0);
   GroundState state;
   state.height = std::move(initial);
   state.erosion = ErosionMemory(model.grid.cell_count(), model.options.erosion_memory_steps);

@@ -24,7 +24,9 @@ struct GroundState {
 };
 
 // The state at time 0: the given initial heights (on the model's grid), the
-// objects at their poses at time 0, an empty erosion memory.
+// objects at their poses at time 0, an empty erosion memory. Heights are
+// material above the base (displacement.h): the initial ones must be >= 0
+// (the scene loader refuses others), and the model keeps them so.
 GroundState make_ground_state(const GroundModel& model, HeightField initial);
 
 }  // namespace repose

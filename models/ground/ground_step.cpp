@@ -11,20 +11,19 @@
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"
+#include "models/ground/substep_count.h"
 #include "models/ground/swept_mesh.h"
 
 namespace repose {
 
 namespace {
 
-// Substeps this step needs: by angle for rotating objects, `substeps` without sweeping.
-int substep_count(const GroundModel& model, const std::vector<Pose>& from, const std::vector<Pose>& to) {
-  int n = model.options.sweep ? 1 : model.options.substeps;
-  for (std::size_t o = 0; o < from.size(); ++o) {
-    const double angle = from[o].orientation.angularDistance(to[o].orientation);
-    n = std::max(n, static_cast<int>(std::ceil(angle / model.options.max_substep_angle_rad - 1e-9)));
-  }
-  return n;
+// The highest point of an object at a pose: the crest of the heaps it
+// pushes up (excess_routing.h). A swept mesh reaches higher (the start of a
+// press from above), but the object is where the step ends.
+double top_at(const ObjectSpec& object, const Pose& pose) {
+  const Eigen::Vector3d up = pose.orientation.conjugate() * Eigen::Vector3d::UnitZ();
+  return (object.body.V * up).maxCoeff() + pose.position_m.z();
 }
 
 // Translation below this (per substep) is not swept: the body alone is the same.
@@ -72,6 +71,7 @@ Underside merged_underside(const std::vector<Underside>& undersides, const std::
   }
   Underside u;
   u.footprint = box;
+  for (const std::size_t m : members) u.top_m = std::max(u.top_m, undersides[m].top_m);
   u.z_m.resize(box.nj, box.ni);
   for (int j = 0; j < box.nj; ++j) {
     for (int i = 0; i < box.ni; ++i) {
@@ -91,11 +91,13 @@ Underside merged_underside(const std::vector<Underside>& undersides, const std::
 // contact (e.g. one lifted out of its own imprint), and material deposited
 // above its underside is displaced as by any contact.
 int add_hovering_undersides(const GroundModel& model, const GroundParams& params,
-                            const std::vector<TriangleMesh>& meshes, const std::vector<char>& coarse,
+                            const std::vector<TriangleMesh>& meshes, const std::vector<double>& tops,
+                            const std::vector<char>& coarse,
                             const std::vector<Eigen::Vector3d>& motion, UndersideRenderer& renderer,
                             GroundState* state, Ceiling* ceiling) {
-  int reach_cells = 0;
+  int reach_cells = 0;  // beyond the grid's size it reaches nothing more (and cannot overflow)
   for (const Material& m : params.materials) reach_cells = std::max(reach_cells, m.erosion_iterations);
+  reach_cells = std::min(reach_cells, std::max(model.grid.nx, model.grid.ny));
   int contact_cells = 0;
   std::size_t fine = 0;  // ceiling->undersides holds the fine objects in order
   for (std::size_t o = 0; o < meshes.size(); ++o) {
@@ -104,10 +106,61 @@ int add_hovering_undersides(const GroundModel& model, const GroundParams& params
     if (!ceiling->undersides[k].empty()) continue;
     ceiling->undersides[k] = find_underside(meshes[o], state->height, renderer, reach_cells);
     if (ceiling->undersides[k].empty()) continue;
+    ceiling->undersides[k].top_m = tops[o];
     const Underside u = ceiling->undersides[k];  // displace reads the ceiling too
     contact_cells += displace(model, params, u, *ceiling, motion[o], state).contact_cells;
   }
   return contact_cells;
+}
+
+// One substep: every object from `from` to `to`: collision, displacement
+// (coarse objects on their patch, touching fine objects as one region),
+// then erosion.
+void substep(const GroundModel& model, const GroundParams& params, const std::vector<Pose>& from,
+             const std::vector<Pose>& to, UndersideRenderer& renderer, GroundState* state, StepReport* report) {
+  const std::size_t n_objects = model.objects.size();
+  Ceiling ceiling;
+  std::vector<TriangleMesh> meshes(n_objects);
+  std::vector<Eigen::Vector3d> motion(n_objects), fine_motion;
+  std::vector<char> coarse(n_objects);
+  std::vector<double> tops(n_objects);
+  for (std::size_t o = 0; o < n_objects; ++o) {
+    const ObjectSpec& object = model.objects[o];
+    motion[o] = to[o].position_m - from[o].position_m;
+    if (model.options.sweep && moved(from[o], to[o], model.grid.cell_size_m)) {
+      REPOSE_DEMAND(model.swept_bodies.size() == n_objects);
+      meshes[o] = swept_mesh(object.body, model.swept_bodies[o], from[o], to[o]);
+      ++report->swept_objects;
+    } else {
+      meshes[o] = transformed(object.body, to[o]);
+    }
+    coarse[o] = uses_coarse_grid(model, static_cast<int>(o), to[o]);
+    tops[o] = top_at(object, to[o]);
+    if (!coarse[o]) {
+      ceiling.undersides.push_back(find_underside(meshes[o], state->height, renderer));
+      ceiling.undersides.back().top_m = tops[o];
+      fine_motion.push_back(motion[o]);
+    }
+  }
+  for (std::size_t o = 0; o < n_objects; ++o) {
+    if (!coarse[o]) continue;
+    report->contact_cells += deform_coarse(model, params, meshes[o], motion[o], renderer, state).contact_cells;
+    ++report->coarse_objects;
+  }
+  // a cluster of touching objects is displaced as one region, moving with their mean motion
+  for (const std::vector<std::size_t>& cluster : touching_clusters(ceiling.undersides)) {
+    Eigen::Vector3d mean_motion = Eigen::Vector3d::Zero();
+    for (const std::size_t m : cluster) mean_motion += fine_motion[m] / static_cast<double>(cluster.size());
+    const Underside merged = cluster.size() == 1 ? Underside{} : merged_underside(ceiling.undersides, cluster);
+    const Underside& u = cluster.size() == 1 ? ceiling.undersides[cluster[0]] : merged;
+    report->contact_cells += displace(model, params, u, ceiling, mean_motion, state).contact_cells;
+  }
+  report->contact_cells +=
+      add_hovering_undersides(model, params, meshes, tops, coarse, motion, renderer, state, &ceiling);
+  const ErosionResult e = erode(model, params, ceiling, state);
+  report->erosion.passes += e.passes;
+  report->erosion.pair_visits += e.pair_visits;
+  report->erosion.moves += e.moves;
 }
 
 }  // namespace
@@ -127,56 +180,21 @@ StepReport step(const GroundModel& model, const GroundParams& params, UndersideR
   const std::size_t n_objects = model.objects.size();
   std::vector<Pose> end_poses(n_objects);
   for (std::size_t o = 0; o < n_objects; ++o) end_poses[o] = model.objects[o].pose_at(t0 + dt);
-  const int substeps = substep_count(model, state->previous_poses, end_poses);
+  const int substeps = substep_count(model, state->previous_poses, end_poses, state->step_index);
   report.substeps = substeps;
 
   std::vector<Pose> poses = state->previous_poses;
   for (int s = 1; s <= substeps; ++s) {
-    const double t = t0 + dt * s / substeps;
-    Ceiling ceiling;
-    std::vector<TriangleMesh> meshes(n_objects);
-    std::vector<Eigen::Vector3d> motion(n_objects);
-    std::vector<char> coarse(n_objects);
+    std::vector<Pose> to(n_objects);
     for (std::size_t o = 0; o < n_objects; ++o) {
-      const ObjectSpec& object = model.objects[o];
-      const Pose to = s == substeps ? end_poses[o] : object.pose_at(t);
-      motion[o] = to.position_m - poses[o].position_m;
-      if (model.options.sweep && moved(poses[o], to, model.grid.cell_size_m)) {
-        REPOSE_DEMAND(model.swept_bodies.size() == n_objects);
-        meshes[o] = swept_mesh(object.body, model.swept_bodies[o], poses[o], to);
-        ++report.swept_objects;
-      } else {
-        meshes[o] = transformed(object.body, to);
-      }
-      coarse[o] = uses_coarse_grid(model, static_cast<int>(o), to);
-      if (!coarse[o]) ceiling.undersides.push_back(find_underside(meshes[o], state->height, renderer));
-      poses[o] = to;
+      to[o] = s == substeps ? end_poses[o] : model.objects[o].pose_at(t0 + dt * s / substeps);
     }
-    std::vector<Eigen::Vector3d> fine_motion;
-    for (std::size_t o = 0; o < n_objects; ++o) {
-      if (coarse[o]) {
-        report.contact_cells += deform_coarse(model, params, meshes[o], motion[o], renderer, state).contact_cells;
-        ++report.coarse_objects;
-      } else {
-        fine_motion.push_back(motion[o]);
-      }
-    }
-    // a cluster of touching objects is displaced as one region, moving with their mean motion
-    for (const std::vector<std::size_t>& cluster : touching_clusters(ceiling.undersides)) {
-      Eigen::Vector3d mean_motion = Eigen::Vector3d::Zero();
-      for (const std::size_t m : cluster) mean_motion += fine_motion[m] / static_cast<double>(cluster.size());
-      const Underside merged =
-          cluster.size() == 1 ? Underside{} : merged_underside(ceiling.undersides, cluster);
-      const Underside& u = cluster.size() == 1 ? ceiling.undersides[cluster[0]] : merged;
-      report.contact_cells += displace(model, params, u, ceiling, mean_motion, state).contact_cells;
-    }
-    report.contact_cells += add_hovering_undersides(model, params, meshes, coarse, motion, renderer, state, &ceiling);
-    const ErosionResult e = erode(model, params, ceiling, state);
-    report.erosion.passes += e.passes;
-    report.erosion.pair_visits += e.pair_visits;
-    report.erosion.moves += e.moves;
+    substep(model, params, poses, to, renderer, state, &report);
+    poses = to;
   }
-  state->erosion.end_step();
+  // a remembered cell is forgotten once its time is up and its slopes have settled (erosion_memory.h)
+  const std::vector<double> max_dh = max_height_differences(model, params);
+  state->erosion.end_step([&](std::int64_t c) { return is_settled(model, max_dh, state->height, c); });
   state->previous_poses = end_poses;
   ++state->step_index;
   state->time_s = state->step_index * dt;

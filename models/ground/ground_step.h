@@ -5,7 +5,8 @@
 // Substeps: rotating objects (a rolling wheel) are substepped so that no
 // object turns by more than max_substep_angle_rad per substep; without
 // sweeping, at least options.substeps substeps (1: the streaky no-sweep
-// case). Per substep: for each object its collision mesh (the swept mesh
+// case); at most kMaxSubstepsPerStep (substep_count.h: an InputError
+// beyond). Per substep: for each object its collision mesh (the swept mesh
 // between the substep's start and end poses when sweeping, else the body at
 // the end pose), its underside over its footprint, compression and
 // displacement (coarse objects on a coarsened patch, coarse_contact.h);

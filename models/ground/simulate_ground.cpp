@@ -11,6 +11,7 @@
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_state.h"
 #include "models/ground/ground_step.h"
+#include "models/ground/substep_count.h"
 
 namespace repose {
 
@@ -65,6 +66,7 @@ std::vector<std::string> ground_stages(const GroundModel& model, const GroundPar
 GroundRun simulate_ground(const GroundModel& model, const GroundParams& params, const HeightField& initial,
                           const ProgressFn& progress) {
   validate(params, model);
+  check_counts(model);  // before anything runs
   std::unique_ptr<UndersideRenderer> renderer = make_renderer(model);
   GroundRun run;
   run.initial_height = initial;

@@ -34,7 +34,8 @@ struct GroundRun {
 GroundRun simulate_ground(const Scene& scene, const GroundParams& params, const ProgressFn& progress = {});
 
 // Same from an already built model and initial heights (for calibration:
-// build once, run many parameter sets).
+// build once, run many parameter sets). Also throws InputError, before the
+// first step, when a derived count is out of bounds (substep_count.h).
 GroundRun simulate_ground(const GroundModel& model, const GroundParams& params, const HeightField& initial,
                           const ProgressFn& progress = {});
 

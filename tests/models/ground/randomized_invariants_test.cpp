@@ -4,10 +4,19 @@
 // what must hold for every scene:
 //   - volume balance: initial = final + compressed + left the grid, to round-off;
 //   - no NaN or infinite height;
-//   - no cell above a (fine-grid) object's underside at the end of a step;
-//   - after the objects have left and the slopes settled, no slope steeper
-//     than its material's tan(theta) + kErosionToleranceFraction (erosion.h);
-//   - determinism: the same scene twice gives bit-identical heights.
+//   - no cell above a (fine-grid) object's underside at the end of a step
+//     (or above the base, z = 0, where the underside is below it);
+//   - at every step, the floor: no height below zero (displacement.h);
+//   - at every step, no spike: no cell higher than the highest cell before
+//     the step or the top of an object that may have touched the ground in
+//     it (displacement heaps no higher, excess_routing.h; erosion never
+//     raises a cell above its highest neighbour);
+//   - after the objects have left and the erosion memory is empty, whatever
+//     its length (random, from 0 steps), no slope steeper than its
+//     material's tan(theta) + kErosionToleranceFraction (erosion.h);
+//   - determinism: the same scene twice gives bit-identical heights;
+//   - symmetry: the scene mirrored about x, y or the diagonal gives the
+//     mirrored heights, to round-off.
 // Every failure names its seed. Replay one: REPOSE_SEED=123 repose_ground_tests
 // --gtest_filter='RandomizedInvariants.*'. REPOSE_RANDOM_CASES sets how many
 // seeds run (scripts/test-sanitized.sh lowers it under the sanitizers).
@@ -33,9 +42,14 @@
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"
 #include "models/ground/ground_step.h"
+#include "tests/models/ground/mirrored_scene.h"
 
 namespace repose {
 namespace {
+
+using testing::largest_mirror_difference;
+using testing::Mirror;
+using testing::mirrored;
 
 constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr int kDefaultCases = 300;  // about 6 s in Release
@@ -44,6 +58,10 @@ constexpr int kMaxSettleSteps = 50000;
 // Heights may exceed an underside by round-off only (swept and end-pose
 // meshes are transformed separately; times differ by an ulp).
 constexpr double kCeilingToleranceM = 1e-9;
+// A scene and its mirror image differ by round-off, which erosion's and
+// contact's thresholds (fractions of 1e-6 and 1e-9 of a cell) can turn into
+// differences of that order.
+constexpr double kMirrorToleranceM = 1e-9;
 
 int case_count() {
   const char* text = std::getenv("REPOSE_RANDOM_CASES");
@@ -206,9 +224,7 @@ RandomCase random_case(std::uint64_t seed) {
   options.sweep = coin(rng, 0.7);
   options.substeps = uniform_int(rng, 1, 3);
   options.max_substep_angle_rad = uniform(rng, 2.0, 20.0) * kDegree;
-  options.erosion_memory_steps = 65000;  // cells keep settling until they are settled
   options.coarse_factor = uniform_int(rng, 1, 3);
-  s = with_ground_options(std::move(s), options);
   const int objects = uniform_int(rng, 1, 3);
   for (int o = 0; o < objects; ++o) {
     ObjectSpec object = random_object(rng, s.ground.grid, o);
@@ -216,10 +232,14 @@ RandomCase random_case(std::uint64_t seed) {
     object.keyframes = random_motion(rng, object, s.ground.grid, c.ground_m, s.time.step_s, steps);
     s.objects.push_back(std::move(object));
   }
+  // last, so that every other draw is as before: any memory length must settle (erosion_memory.h)
+  options.erosion_memory_steps = coin(rng, 0.5) ? uniform_int(rng, 0, 3) : uniform_int(rng, 0, 60);
+  s = with_ground_options(std::move(s), options);
   std::ostringstream text;
   text << "seed " << seed << " (replay: REPOSE_SEED=" << seed << "): grid " << s.ground.grid.nx << "x"
        << s.ground.grid.ny << " cell " << s.ground.grid.cell_size_m << " m, " << objects << " objects, " << steps
-       << " steps, sweep " << options.sweep << ", " << regions << " regions";
+       << " steps, sweep " << options.sweep << ", " << regions << " regions, memory "
+       << options.erosion_memory_steps << " steps";
   c.summary = text.str();
   return c;
 }
@@ -244,8 +264,10 @@ CeilingExcess worst_ceiling_excess(const GroundModel& model, const HeightField& 
     const DepthImage under = depth_image_cpu({transformed(model.objects[o].body, pose)}, model.grid, ViewFrom::kBelow);
     for (int j = 0; j < model.grid.ny; ++j) {
       for (int i = 0; i < model.grid.nx; ++i) {
-        if (under.is_covered(i, j) && height.at(i, j) - under.z(i, j) > worst.excess_m) {
-          worst = {height.at(i, j) - under.z(i, j), static_cast<int>(o), i, j};
+        // below the base the object met bedrock: the ground stops at zero
+        const double ceiling = under.is_covered(i, j) ? std::max(under.z(i, j), 0.0) : 0.0;
+        if (under.is_covered(i, j) && height.at(i, j) - ceiling > worst.excess_m) {
+          worst = {height.at(i, j) - ceiling, static_cast<int>(o), i, j};
         }
       }
     }
@@ -274,15 +296,53 @@ double worst_slope_excess(const GroundModel& model, const GroundParams& params, 
   return worst;
 }
 
+// The highest any cell may stand after the step from t0 to t1: the highest
+// before it, or the top of an object that may have touched the ground in it
+// (its bounding sphere reaches below that height at one of its poses in the
+// step: the step's ends and the keyframes between, as motion is linear
+// between keyframes; bounding spheres hold in any orientation).
+double height_bound(const GroundModel& model, double highest_before_m, double t0, double t1) {
+  double bound = highest_before_m;
+  for (const ObjectSpec& o : model.objects) {
+    const double r = o.body.V.rowwise().norm().maxCoeff();
+    std::vector<double> times = {t0, t1};
+    for (const Keyframe& k : o.keyframes) {
+      if (k.time_s > t0 && k.time_s < t1) times.push_back(k.time_s);
+    }
+    double low = std::numeric_limits<double>::infinity(), top = -low;
+    for (const double t : times) {
+      low = std::min(low, o.pose_at(t).position_m.z() - r);
+      top = std::max(top, o.pose_at(t).position_m.z() + r);
+    }
+    if (low < highest_before_m) bound = std::max(bound, top);
+  }
+  return bound;
+}
+
 struct Outcome {
   HeightField final_height;
   bool settled = false;
 };
 
+// One step, then the invariants of every step: floor, no spike, finite.
+StepReport checked_step(const RandomCase& c, const GroundModel& model, const GroundParams& params,
+                        UndersideRenderer& renderer, GroundState* state) {
+  const double highest = state->height.max_height_m();
+  const double t0 = state->time_s;
+  const StepReport r = step(model, params, renderer, state);
+  const std::string where = c.summary + ", step " + std::to_string(state->step_index);
+  EXPECT_TRUE(state->height.all_finite()) << where;
+  EXPECT_GE(state->height.min_height_m(), 0.0) << where << ": a height below the base";
+  EXPECT_LE(state->height.max_height_m(), height_bound(model, highest, t0, state->time_s) + 1e-12)
+      << where << ": a cell rose higher than the highest cell before the step (" << highest
+      << " m) and the objects that may have touched the ground";
+  return r;
+}
+
 // Runs the scene's steps, checking after each the invariants that hold at
-// every step, then keeps stepping (objects lifted clear, erosion memory
-// long) until erosion moves nothing. check_ceiling: also that no cell stands
-// above an object's underside after a step.
+// every step, then keeps stepping (objects lifted clear) until no object
+// touches the ground, erosion moves nothing and the memory is empty.
+// check_ceiling: also that no cell stands above an object's underside after a step.
 Outcome run_and_check(const RandomCase& c, bool check_ceiling) {
   const GroundModel model = build_ground_model(c.scene);
   const GroundParams params = default_params(model);
@@ -292,12 +352,12 @@ Outcome run_and_check(const RandomCase& c, bool check_ceiling) {
   const double volume_scale = std::abs(state.ledger.initial_m3) + 1e-15;
   auto check_state = [&](const char* when) {
     const std::string where = c.summary + ", " + when + " step " + std::to_string(state.step_index);
-    EXPECT_TRUE(state.height.all_finite()) << where;
     EXPECT_NEAR(state.ledger.imbalance_m3(state.height.volume_m3()), 0.0, 1e-11 * volume_scale)
         << where << ": initial " << state.ledger.initial_m3 << " final " << state.height.volume_m3() << " compressed "
         << state.ledger.compressed_m3 << " left " << state.ledger.left_grid_m3;
     EXPECT_GE(state.ledger.compressed_m3, 0.0) << where;
     EXPECT_GE(state.ledger.left_grid_m3, 0.0) << where;
+    EXPECT_GE(state.ledger.bedrock_m3, 0.0) << where;
     if (check_ceiling) {
       const CeilingExcess e = worst_ceiling_excess(model, state.height, state.time_s);
       EXPECT_LE(e.excess_m, kCeilingToleranceM) << where << ": " << e.describe();
@@ -305,21 +365,22 @@ Outcome run_and_check(const RandomCase& c, bool check_ceiling) {
   };
   const int steps = model.time.step_count();
   for (int s = 0; s < steps; ++s) {
-    step(model, params, *renderer, &state);
+    checked_step(c, model, params, *renderer, &state);
     check_state("after scripted");
     if (::testing::Test::HasFailure()) return {state.height, false};
   }
   Outcome outcome;
   for (int s = 0; s < kMaxSettleSteps && !outcome.settled; ++s) {
-    const StepReport r = step(model, params, *renderer, &state);
-    outcome.settled = r.erosion.moves == 0 && r.contact_cells == 0;
+    const StepReport r = checked_step(c, model, params, *renderer, &state);
+    outcome.settled = r.erosion.moves == 0 && r.contact_cells == 0 && state.erosion.empty();
+    if (::testing::Test::HasFailure()) return {state.height, false};
   }
   check_state("after settling,");
   outcome.final_height = state.height;
   return outcome;
 }
 
-// Volume balance, finite heights, the slope bound once settled, determinism.
+// Volume balance, finite heights, floor, no spike, the slope bound once settled, determinism.
 TEST(RandomizedInvariants, RandomScenesBalanceSettleAndRepeat) {
   for (const std::uint64_t seed : seeds_to_run()) {
     const RandomCase c = random_case(seed);
@@ -343,6 +404,25 @@ TEST(RandomizedInvariants, RandomScenesStayBelowObjectUndersides) {
   for (const std::uint64_t seed : seeds_to_run()) {
     run_and_check(random_case(seed), true);
     if (::testing::Test::HasFailure()) return;  // the failure names the seed
+  }
+}
+
+// No preferred side (displacement.h): each scene and its mirror image about
+// x, y or the diagonal (by seed) end in mirror images. Without coarse
+// contacts: a coarse block takes the material of its first fine cell
+// (coarse_contact.h), which a mirror moves.
+TEST(RandomizedInvariants, MirroredScenesGiveMirroredHeights) {
+  for (const std::uint64_t seed : seeds_to_run()) {
+    RandomCase c = random_case(seed);
+    const Mirror m = static_cast<Mirror>(seed % 3);
+    c.scene = with_ground_options_changed(std::move(c.scene), [&](GroundModelSpec& o) { o.coarse_factor = 1; });
+    RandomCase twin = c;
+    twin.scene = mirrored(c.scene, m);
+    const Outcome a = run_and_check(c, false), b = run_and_check(twin, false);
+    if (::testing::Test::HasFailure()) return;
+    EXPECT_LE(largest_mirror_difference(a.final_height, b.final_height, m), kMirrorToleranceM)
+        << c.summary << ", mirrored " << (m == Mirror::kX ? "x" : m == Mirror::kY ? "y" : "diagonal");
+    if (::testing::Test::HasFailure()) return;
   }
 }
 

@@ -1,0 +1,62 @@
+// Where displaced material heaps: never higher than what pushed it (or the
+// ground it leans on), never a column in a single cell.
+#include "models/ground/excess_routing.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/models/ground/ground_fixtures.h"
+
+namespace repose {
+namespace {
+
+using namespace repose::testing;
+
+constexpr double kBed = 0.05;
+
+// Runs every step of the scene; the highest any cell stood after a step.
+double highest_at_any_step(const Scene& scene) {
+  const GroundModel model = build_ground_model(scene);
+  const GroundParams params = default_params(model);
+  GroundState state = make_ground_state(model, HeightField(model.grid, kBed));
+  auto renderer = make_cpu_underside_renderer();
+  double highest = 0.0;
+  for (int s = 0; s < model.time.step_count(); ++s) {
+    step(model, params, *renderer, &state);
+    highest = std::max(highest, state.height.max_height_m());
+    EXPECT_GE(state.height.min_height_m(), 0.0);
+  }
+  expect_balanced(state.ledger, state.height.volume_m3());
+  return highest;
+}
+
+// The drag (4 mm cells here): a sphere of 5 cm pressed 2 cm into a
+// 5 cm bed and dragged 0.2 m once raised 0.3 m columns beside it, above its
+// top. Now no cell rises above the sphere's top at any step.
+TEST(ExcessRouting, ADragRaisesNoCellAboveTheObject) {
+  const double r = 0.05, low = kBed + r - 0.02;
+  ObjectSpec ball = sphere(r, {at(0, -0.1, 0, low + 0.025), at(0.3, -0.1, 0, low), at(1.3, 0.1, 0, low),
+                               at(1.5, 0.1, 0, 0.2)});
+  Scene scene = flat_scene(centred_grid(100, 100, 0.004), kBed, sand(), {ball}, 2);
+  scene.time.step_s = 0.02;
+  EXPECT_LE(highest_at_any_step(scene), low + r + 1e-12);
+}
+
+// A material that stands at 90 deg does not erode, so whatever displacement
+// heaps stays: a box pressed 4 cm into it heaps a wall up to the box's top
+// (the crest), then a plateau outwards, not columns of 0.2 m above it.
+TEST(ExcessRouting, AtNinetyDegreesTheHeapStopsAtTheCrest) {
+  Material m = sand();
+  m.repose_angle_rad = 90 * kDeg;
+  ObjectSpec box;
+  box.name = "box";
+  box.shape = ObjectSpec::Shape::kBox;
+  box.half_extents_m = Eigen::Vector3d(0.05, 0.05, 0.04);
+  box.body = make_box(box.half_extents_m);
+  const double centre = kBed;  // bottom 4 cm below the surface, top 4 cm above it
+  box.keyframes = {at(0, 0, 0, 0.2), at(1, 0, 0, centre)};
+  const Scene scene = flat_scene(centred_grid(64, 64, 0.005), kBed, m, {box}, 2);
+  EXPECT_LE(highest_at_any_step(scene), centre + 0.04 + 1e-12);  // the crest: the box's top
+}
+
+}  // namespace
+}  // namespace repose
