@@ -122,3 +122,35 @@ TEST(SimulateSnow, ConservesSnowOverRandomRuns) {
 
 }  // namespace
 }  // namespace repose
+
+namespace repose {
+namespace {
+
+// The extremes: angle 0 and 90 deg, spread 0 and 180 deg, one
+// direction, a single-cell map, no objects: finite, non-negative, conserved.
+TEST(SimulateSnow, ExtremesStayFiniteAndConservative) {
+  for (int n : {1, 9}) {
+    for (bool with_plate : {false, true}) {
+      for (double angle : {0.0, 90 * kDeg}) {
+        for (double spread : {0.0, 180 * kDeg}) {
+          const HeightField ground(centred_grid(n), 0.01);
+          SnowOptions o = testing::vertical_snow_options(1);
+          o.snowfall = SnowfallRate(1e-2);
+          std::vector<TriangleMesh> plates;
+          if (with_plate) plates.push_back(plate(0.01, 0.01, 0.05));
+          const SnowModel model = with_time(plates_over_ground(ground, plates, o), 1.0, 2.0);
+          SnowState state;
+          const SnowRunSummary s = simulate_snow(model, SnowParams{angle, spread}, &state);
+          const std::string where = "n " + std::to_string(n) + " plate " + std::to_string(with_plate) + " angle " +
+                                    std::to_string(angle) + " spread " + std::to_string(spread);
+          for (const ArrayXXdR& d : state.depth_m) EXPECT_TRUE(d.allFinite() && d.minCoeff() >= 0.0) << where;
+          EXPECT_NEAR(s.imbalance_m3, 0.0, 1e-12 * state.ledger.fallen_m3) << where;
+          EXPECT_GT(state.ledger.fallen_m3, 0.0) << where;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace repose
