@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "models/snow/ray_cast_probability.h"
 #include "models/snow/snow_step.h"
 
 namespace repose {
@@ -19,7 +20,10 @@ SnowRunSummary simulate_snow(const SnowModel& model, const SnowParams& params, S
   validate(params);
   SnowRunSummary summary;
   auto start = std::chrono::steady_clock::now();
-  summary.probability = snow_probability_shadow_maps(model, snowfall_directions(model, params));
+  const std::vector<Eigen::Vector3d> directions = snowfall_directions(model, params);
+  summary.probability = model.options.probability == SnowOptions::Probability::kRayCast
+                            ? snow_probability_ray_cast(model, directions)
+                            : snow_probability_shadow_maps(model, directions);
   summary.probability_wall_s = seconds_since(start);
   *state = make_snow_state(model);
   start = std::chrono::steady_clock::now();

@@ -1,7 +1,8 @@
 #pragma once
-// A whole snow run: the probability from the shadow maps once (the paper
-// holds P constant while animating), then time.step_count() steps of
-// snowfall and stabilisation, with timings and the conservation check.
+// A whole snow run: the probability once, from the shadow maps or by ray
+// casting (options.probability; the paper holds P constant while
+// animating), then time.step_count() steps of snowfall and stabilisation,
+// with timings and the conservation check.
 
 #include <functional>
 

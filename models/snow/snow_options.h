@@ -49,6 +49,10 @@ struct SnowOptions {
   // Excess height over the repose slope that is left alone (m). (0, inf)
   double settle_tolerance_m = 1.0e-6;
   SnowRenderer renderer = SnowRenderer::kCpu;
+  // How P is computed: shadow maps (the paper's method) or the ray-cast
+  // baseline of its Table 1 (ray_cast_probability.h), for comparisons.
+  enum class Probability { kShadowMaps, kRayCast };
+  Probability probability = Probability::kShadowMaps;
 };
 
 // Throws InputError naming the field (snow.FIELD) and its rule.
