@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "models/snow/ray_cast_probability.h"
+#include "models/snow/shadow_map.h"
 #include "models/snow/snow_model.h"
 #include "models/snow/snow_probability.h"
 
@@ -77,6 +78,20 @@ void BM_SnowProbabilityRayCastEmbree(benchmark::State& state) {
   report(state, s);
 }
 
+// The method's own floor: rendering the shadow maps alone, without the
+// per-cell comparisons (the target: the probability within 2x of it).
+void BM_ShadowMapRenderOnlyCpu(benchmark::State& state) {
+  const BenchScene s = make_scene(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), SnowRenderer::kCpu);
+  TopDownRenderer renderer(SnowRenderer::kCpu);
+  for (auto _ : state) {
+    for (const Eigen::Vector3d& d : s.directions) {
+      benchmark::DoNotOptimize(render_shadow_map(s.model.occluders, s.model.maps, d, shadow_pixel_m(s.model),
+                                                 s.model.options.shadow_bias_cells, &renderer));
+    }
+  }
+  report(state, s);
+}
+
 void Sizes(benchmark::internal::Benchmark* b) {
   for (int n : {128, 256, 512}) b->Args({n, 32});
   for (int segments : {128, 512}) b->Args({256, segments});
@@ -84,6 +99,7 @@ void Sizes(benchmark::internal::Benchmark* b) {
 
 BENCHMARK(BM_SnowProbabilityShadowMapsCpu)->Apply(Sizes)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SnowProbabilityShadowMapsOsmesa)->Apply(Sizes)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ShadowMapRenderOnlyCpu)->Apply(Sizes)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_SnowProbabilityRayCastEmbree)->Apply(Sizes)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
