@@ -24,15 +24,18 @@ SnowModel build_snow_model(const std::vector<SnowGroupGeometry>& groups, const G
   model.seed = seed;
   model.grid = grid;
   TopDownRenderer renderer(options.renderer);
+  std::vector<std::vector<TriangleMesh>> group_meshes;
   for (const SnowGroupGeometry& g : groups) {
     if (g.ground != nullptr) {
       model.maps.push_back(make_ground_snow_map(g.name, *g.ground, grid));
-      model.occluders.push_back(ground_surface_mesh(*g.ground));
+      group_meshes.push_back({ground_surface_mesh(*g.ground)});
     } else {
       model.maps.push_back(make_object_snow_map(g.name, g.meshes, grid, &renderer));
-      for (const TriangleMesh& m : g.meshes) model.occluders.push_back(m);
+      group_meshes.push_back(g.meshes);
     }
+    for (const TriangleMesh& m : group_meshes.back()) model.occluders.push_back(m);
   }
+  set_snow_ceilings(group_meshes, &model.maps);
   return model;
 }
 

@@ -101,6 +101,44 @@ double arriving(const std::vector<Outflow>& flows, const Grid& g, std::size_t k,
   return sum;
 }
 
+// Per cell of map k, the fraction of the snow sent to it that fits under
+// its ceiling (start-of-pass heights): min(1, room / demand).
+ArrayXXdR accepted_fraction(const std::vector<SnowMap>& maps, const std::vector<ArrayXXdR>& depth,
+                            const std::vector<Outflow>& flows, std::size_t k) {
+  const Grid& g = maps[k].grid();
+  ArrayXXdR accept = ArrayXXdR::Ones(g.ny, g.nx);
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      const double ceiling = maps[k].ceiling_z(i, j);
+      if (!maps[k].covered(i, j) || ceiling == std::numeric_limits<double>::infinity()) continue;
+      const double demand = (arriving(flows, g, k, i, j, 0) + arriving(flows, g, k, i, j, 1)) +
+                            (arriving(flows, g, k, i, j, 2) + arriving(flows, g, k, i, j, 3));
+      const double room = std::max(0.0, ceiling - (maps[k].base_z(i, j) + depth[k](j, i)));
+      if (demand > room) accept(j, i) = room / demand;
+    }
+  }
+  return accept;
+}
+
+// What cell (i, j) of map m really sends (its shares times what each
+// receiver accepts), and what of it leaves the scene.
+double really_sent(const Outflow& flow, const std::vector<ArrayXXdR>& accept, const Grid& g, int i, int j,
+                   double* left) {
+  const auto& targets = flow.target[static_cast<std::size_t>(j) * g.nx + i];
+  std::array<double, 4> part = {0.0, 0.0, 0.0, 0.0};
+  for (int d = 0; d < 4; ++d) {
+    if (targets[d] == kNoTarget) continue;
+    if (targets[d] == kLeavesScene) {
+      part[d] = flow.share_m(j, i);
+      *left += part[d];
+    } else {
+      part[d] = flow.share_m(j, i) * accept[static_cast<std::size_t>(targets[d])](j + kDj[d], i + kDi[d]);
+    }
+  }
+  // never more than the amount computed (k shares of A / k may round above A)
+  return std::min(flow.sent_m(j, i), (part[0] + part[1]) + (part[2] + part[3]));
+}
+
 }  // namespace
 
 PassResult stabilisation_pass(const std::vector<SnowMap>& maps, const StabilisationRule& rule,
@@ -111,27 +149,25 @@ PassResult stabilisation_pass(const std::vector<SnowMap>& maps, const Stabilisat
   const Grid& g = maps.front().grid();
   std::vector<Outflow> flows;
   for (std::size_t m = 0; m < maps.size(); ++m) flows.push_back(outflow_of_map(maps, *depth, m, rule));
-  for (std::size_t m = 0; m < maps.size(); ++m) {
-    result.moving_cells += (flows[m].sent_m > 0.0).count();
-    result.moved_m3 += flows[m].sent_m.sum() * g.cell_area_m2();
-    for (std::size_t c = 0; c < g.cell_count(); ++c) {
-      for (int d = 0; d < 4; ++d) {
-        if (flows[m].target[c][d] == kLeavesScene) {
-          result.left_scene_m3 += flows[m].share_m(static_cast<Eigen::Index>(c / g.nx), c % g.nx) * g.cell_area_m2();
-        }
-      }
-    }
-  }
+  std::vector<ArrayXXdR> accept;
+  for (std::size_t k = 0; k < maps.size(); ++k) accept.push_back(accepted_fraction(maps, *depth, flows, k));
+  double left = 0.0;
   for (std::size_t k = 0; k < maps.size(); ++k) {
     ArrayXXdR& s = (*depth)[k];
     for (int j = 0; j < g.ny; ++j) {
       for (int i = 0; i < g.nx; ++i) {
+        const double sent = flows[k].sent_m(j, i) > 0.0 ? really_sent(flows[k], accept, g, i, j, &left) : 0.0;
         const double in = (arriving(flows, g, k, i, j, 0) + arriving(flows, g, k, i, j, 1)) +
                           (arriving(flows, g, k, i, j, 2) + arriving(flows, g, k, i, j, 3));
-        s(j, i) = (s(j, i) - flows[k].sent_m(j, i)) + in;
+        s(j, i) = (s(j, i) - sent) + in * accept[k](j, i);
+        if (sent > 0.0) {
+          ++result.moving_cells;
+          result.moved_m3 += sent * g.cell_area_m2();
+        }
       }
     }
   }
+  result.left_scene_m3 = left * g.cell_area_m2();
   return result;
 }
 

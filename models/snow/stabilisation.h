@@ -37,8 +37,11 @@
 // so a settled map has no pair steeper than tan(theta) + tolerance / h
 // except where the higher cell holds less than tolerance_m of snow.
 //
-// Departure: no ceiling. Snow on a lower map may pile up into an object of a
-// higher group above it (the paper's maps do the same).
+// Ceilings (a departure, snow_map.h: set_snow_ceilings): snow never rises
+// above the underside of another group over a cell (a table top over the
+// ground, a box standing on it). What a cell receives in a pass is scaled
+// down to the room left under its ceiling at the start of the pass, and the
+// senders keep the rest, so the limit costs no snow.
 
 #include <vector>
 

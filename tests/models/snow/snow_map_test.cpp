@@ -72,3 +72,26 @@ TEST(SnowMap, OsmesaAndCpuMapsAgree) {
 
 }  // namespace
 }  // namespace repose
+
+namespace repose {
+namespace {
+
+// A table top at 5 cm (underside 4 cm) bounds the ground's snow at its
+// underside; a block standing on the ground leaves no room; the table top
+// itself (the ground lies below it) has no ceiling.
+TEST(SnowMap, CeilingsAreTheUndersidesOfOtherGroupsAbove) {
+  const HeightField ground(testing::centred_grid(20));
+  Pose block_pose;
+  block_pose.position_m = Eigen::Vector3d(0.06, 0.06, 0.02);
+  const TriangleMesh block = transformed(make_box(Eigen::Vector3d(0.02, 0.02, 0.02)), block_pose);
+  const SnowModel model = testing::plates_over_ground(ground, {testing::plate(0.03, 0.03, 0.05), block}, SnowOptions{});
+  const SnowMap& g = model.maps[0];
+  EXPECT_NEAR(g.ceiling_z(10, 10), 0.04, 1e-12);     // under the table top
+  EXPECT_EQ(g.ceiling_z(16, 16), 0.0);               // under the block (its bottom on the ground)
+  EXPECT_TRUE(std::isinf(g.ceiling_z(2, 2)));        // open ground
+  EXPECT_TRUE(std::isinf(model.maps[1].ceiling_z(10, 10)));
+  EXPECT_TRUE(std::isinf(model.maps[2].ceiling_z(16, 16)));
+}
+
+}  // namespace
+}  // namespace repose

@@ -212,6 +212,36 @@ TEST(Stabilisation, SnowWithNothingBelowLeavesTheSceneAndIsCounted) {
   EXPECT_NEAR(total(d) + left / model.grid.cell_area_m2(), before, 1e-12 * before);
 }
 
+// Ceilings: snow sliding on the ground never enters a block standing on it,
+// and under a table top never rises above the top's underside; none is lost.
+TEST(Stabilisation, SnowStaysUnderCeilings) {
+  const HeightField ground(centred_grid(16));
+  Pose block_pose;
+  block_pose.position_m = Eigen::Vector3d(0.04, 0.0, 0.02);
+  const TriangleMesh block = transformed(make_box(Eigen::Vector3d(0.02, 0.02, 0.02)), block_pose);
+  const SnowModel model =
+      plates_over_ground(ground, {plate(0.03, 0.03, 0.025, -0.04, 0.0), block}, SnowOptions{});
+  std::vector<ArrayXXdR> d = zero_depths(model);
+  d[0](8, 7) = 0.3;  // a heap on the ground between the table and the block
+  const double before = total(d);
+  double left = 0.0;
+  settle(model, StabilisationRule{std::tan(30 * kDeg), 0.2, 1e-9}, &d, &left);
+  EXPECT_NEAR(total(d), before, 1e-12 * before);
+  const Grid& g = model.grid;
+  double under_table = 0.0;
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      const double ceiling = model.maps[0].ceiling_z(i, j);
+      EXPECT_LE(model.maps[0].base_z(i, j) + d[0](j, i), ceiling + 1e-12) << i << "," << j;
+      if (model.maps[2].covered(i, j)) {
+        EXPECT_EQ(d[0](j, i), 0.0) << i << "," << j;
+      }
+      if (model.maps[1].covered(i, j)) under_table += d[0](j, i);
+    }
+  }
+  EXPECT_GT(under_table, 0.0);  // the heap spread under the table, up to its underside
+}
+
 // Stability limit: on a checkerboard of excess slopes the moved fraction
 // 1/4 settles, 0.3 grows the roughness (the Jacobi bound in stabilisation.h).
 TEST(Stabilisation, MovedFractionAboveOneQuarterDiverges) {
