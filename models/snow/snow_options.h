@@ -55,7 +55,9 @@ struct SnowOptions {
   Probability probability = Probability::kShadowMaps;
 };
 
-// Throws InputError naming the field (snow.FIELD) and its rule.
+// Throws FieldError (an InputError) naming the scene key (snow_section.h:
+// direction_tilt_deg, moved_fraction, ...) and its rule; the section's
+// reader and build_snow_model call this one rule.
 void validate(const SnowOptions& options);
 
 }  // namespace repose

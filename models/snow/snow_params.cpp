@@ -3,20 +3,18 @@
 #include <cmath>
 #include <numbers>
 
-#include <fmt/format.h>
-
-#include "models/core/base/error.h"
+#include "models/core/config/fields.h"
 
 namespace repose {
 
 void validate(const SnowParams& params) {
   const double a = params.repose_angle_rad;
   if (!(std::isfinite(a) && a >= 0.0 && a <= std::numbers::pi / 2)) {
-    throw InputError(fmt::format("snow params: repose_angle_rad = {} is outside [0, pi/2]", a));
+    throw FieldError("repose_angle_deg", "an angle in [0, 90] deg", yaml_degrees(a / kRadPerDeg));
   }
   const double s = params.direction_spread_rad;
   if (!(std::isfinite(s) && s >= 0.0 && s <= std::numbers::pi)) {
-    throw InputError(fmt::format("snow params: direction_spread_rad = {} is outside [0, pi]", s));
+    throw FieldError("spread_deg", "an angle in [0, 180] deg", yaml_degrees(s / kRadPerDeg));
   }
 }
 

@@ -16,7 +16,8 @@ struct SnowParams {
   double direction_spread_rad = 0.17453292519943295;  // 10 deg
 };
 
-// Throws InputError naming the field and its rule.
+// Throws FieldError (an InputError) naming the scene key (repose_angle_deg,
+// spread_deg) and its rule.
 void validate(const SnowParams& params);
 
 }  // namespace repose

@@ -77,7 +77,7 @@ objects:
     half_extents_m: [0.04, 0.04, 0.005]
     motion: [{time_s: 0, position_m: [0, 0, 0.05]}]
 )";
-  const Scene scene = load_scene_from_string(yaml, "/tmp/snow_table.yaml");
+  const Scene scene = load_scene_from_string(yaml, "/tmp/snow_table.yaml", {});
   SnowOptions o;
   o.groups = {{"ground", true, {}}, {"table", false, {"top"}}};
   o.direction_count = 4;

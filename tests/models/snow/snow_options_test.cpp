@@ -31,12 +31,12 @@ TEST(SnowOptions, ValidOptionsPass) { EXPECT_EQ(error_after([](SnowOptions*) {})
 
 TEST(SnowOptions, EachRuleNamesItsField) {
   const std::vector<std::pair<std::string, std::function<void(SnowOptions*)>>> cases = {
-      {"groups is empty", [](SnowOptions* o) { o->groups.clear(); }},
-      {"used twice", [](SnowOptions* o) { o->groups[1].name = "ground"; }},
-      {"lists no objects", [](SnowOptions* o) { o->groups[1].objects.clear(); }},
-      {"cannot list objects", [](SnowOptions* o) { o->groups[0].objects = {"x"}; }},
-      {"more than one group is the ground", [](SnowOptions* o) { o->groups.push_back({"g2", true, {}}); }},
-      {"main_direction.tilt_rad", [](SnowOptions* o) { o->main_direction.tilt_rad = 1.5; }},
+      {"groups: expected at least one group", [](SnowOptions* o) { o->groups.clear(); }},
+      {"'ground' twice", [](SnowOptions* o) { o->groups[1].name = "ground"; }},
+      {"no objects", [](SnowOptions* o) { o->groups[1].objects.clear(); }},
+      {"the ground) without objects", [](SnowOptions* o) { o->groups[0].objects = {"x"}; }},
+      {"at most one ground group", [](SnowOptions* o) { o->groups.push_back({"g2", true, {}}); }},
+      {"direction_tilt_deg", [](SnowOptions* o) { o->main_direction.tilt_rad = 1.5; }},
       {"direction_count", [](SnowOptions* o) { o->direction_count = 0; }},
       {"cell_size_m", [](SnowOptions* o) { o->cell_size_m = -1.0; }},
       {"shadow_oversampling", [](SnowOptions* o) { o->shadow_oversampling = 0; }},

@@ -26,10 +26,10 @@ TEST(SnowParams, DefaultsAndExtremesAreValid) {
 }
 
 TEST(SnowParams, RefusalNamesTheField) {
-  EXPECT_NE(error_of(SnowParams{-0.1, 0.1}).find("repose_angle_rad"), std::string::npos);
-  EXPECT_NE(error_of(SnowParams{1.6, 0.1}).find("repose_angle_rad"), std::string::npos);
-  EXPECT_NE(error_of(SnowParams{0.5, -1e-9}).find("direction_spread_rad"), std::string::npos);
-  EXPECT_NE(error_of(SnowParams{0.5, std::nan("")}).find("direction_spread_rad"), std::string::npos);
+  EXPECT_NE(error_of(SnowParams{-0.1, 0.1}).find("repose_angle_deg"), std::string::npos);
+  EXPECT_NE(error_of(SnowParams{1.6, 0.1}).find("repose_angle_deg"), std::string::npos);
+  EXPECT_NE(error_of(SnowParams{0.5, -1e-9}).find("spread_deg"), std::string::npos);
+  EXPECT_NE(error_of(SnowParams{0.5, std::nan("")}).find("spread_deg"), std::string::npos);
 }
 
 }  // namespace
