@@ -156,6 +156,7 @@ PassResult stabilisation_pass(const std::vector<SnowMap>& maps, const Stabilisat
     ArrayXXdR& s = (*depth)[k];
     for (int j = 0; j < g.ny; ++j) {
       for (int i = 0; i < g.nx; ++i) {
+        if (!maps[k].covered(i, j)) continue;  // neither holds nor receives snow
         const double sent = flows[k].sent_m(j, i) > 0.0 ? really_sent(flows[k], accept, g, i, j, &left) : 0.0;
         const double in = (arriving(flows, g, k, i, j, 0) + arriving(flows, g, k, i, j, 1)) +
                           (arriving(flows, g, k, i, j, 2) + arriving(flows, g, k, i, j, 3));
