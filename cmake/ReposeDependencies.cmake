@@ -15,6 +15,8 @@ pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
 # OSMesa alone: linking libGL before it makes glGetString return NULL.
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 find_package(MPI COMPONENTS C)
+# Embree 3 (libembree-dev): the snow model's ray-cast baseline.
+find_package(embree 3 REQUIRED)
 
 find_program(LIGGGHTS_EXECUTABLE liggghts)
 if(NOT LIGGGHTS_EXECUTABLE)

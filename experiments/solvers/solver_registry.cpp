@@ -3,6 +3,7 @@
 #include "models/core/solver/initial_solver.h"
 #include "models/ground/ground_solver.h"
 #include "models/tearing/tearing_solver.h"
+#include "models/snow/snow_solver.h"
 #include "validation/liggghts/liggghts_solver.h"
 
 namespace repose {
@@ -14,6 +15,7 @@ SolverRegistry make_registry() {
   registry.add(std::make_shared<GroundSolver>());
   registry.add(std::make_shared<LiggghtsSolver>());
   registry.add(std::make_shared<TearingSolver>());
+  registry.add(std::make_shared<SnowSolver>());
   registry.add(std::make_shared<InitialSolver>());
   return registry;
 }

@@ -1,0 +1,21 @@
+#include "models/snow/snow_params.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "models/core/config/fields.h"
+
+namespace repose {
+
+void validate(const SnowParams& params) {
+  const double a = params.repose_angle_rad;
+  if (!(std::isfinite(a) && a >= 0.0 && a <= std::numbers::pi / 2)) {
+    throw FieldError("repose_angle_deg", "an angle in [0, 90] deg", yaml_degrees(a / kRadPerDeg));
+  }
+  const double s = params.direction_spread_rad;
+  if (!(std::isfinite(s) && s >= 0.0 && s <= std::numbers::pi)) {
+    throw FieldError("spread_deg", "an angle in [0, 180] deg", yaml_degrees(s / kRadPerDeg));
+  }
+}
+
+}  // namespace repose

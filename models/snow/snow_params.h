@@ -1,0 +1,23 @@
+#pragma once
+// The calibrated parameters of the snow model (the snow paper, 2.2.2 and
+// 2.4.1): what a fit changes between runs without rebuilding the snow maps.
+//   repose_angle_rad: the snow angle of repose. Stabilisation moves snow
+//     across every 4-neighbour pair steeper than this. [0, pi/2]
+//   direction_spread_rad: standard deviation of each of the two angular
+//     deviations of a snowfall direction from the main direction (the
+//     paper's 2-D normal distribution, snowfall_directions.h). [0, pi]
+// Both are fitted: the angle to cohesive DEM snow, the spread to how far
+// snow reaches under an obstacle.
+
+namespace repose {
+
+struct SnowParams {
+  double repose_angle_rad = 0.7853981633974483;       // 45 deg, the paper's Fig. 8 and 9 scenes
+  double direction_spread_rad = 0.17453292519943295;  // 10 deg
+};
+
+// Throws FieldError (an InputError) naming the scene key (repose_angle_deg,
+// spread_deg) and its rule.
+void validate(const SnowParams& params);
+
+}  // namespace repose
