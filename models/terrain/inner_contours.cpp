@@ -6,6 +6,7 @@
 
 #include "models/core/base/error.h"
 #include "models/terrain/bspline_contour.h"
+#include "models/terrain/polygon_union.h"
 #include "models/terrain/straight_skeleton.h"
 
 namespace repose {
@@ -15,18 +16,22 @@ namespace {
 // a skeleton node this close to a contour adds nothing but a sliver
 constexpr double kNodeMergeFraction = 1e-6;
 
-struct Piece {
-  Polygon2 raw;  // shrunk polygon, before smoothing
-  double level_m = 0.0;
-  double distance_m = 0.0;  // shrink distance
-  bool kept = true;
+struct Child {
+  const KeyContour* key = nullptr;
+  ExteriorSkeleton skirt;
+  double skirt_slope = 0.0;  // tan of the slope falling outward from the child
 };
 
 struct Region {
   const KeyContour* key = nullptr;
-  std::vector<const KeyContour*> children;
-  double tan_slope = 0.0;
-  double level_spacing_m = 0.0;  // shrink distance between levels
+  std::vector<Child> children;
+  double roof_slope = 0.0;       // tan of the slope rising inward from the key
+  double level_spacing_m = 0.0;  // the least distance between neighbouring levels
+};
+
+struct Loop {
+  Polygon2 raw;  // before smoothing
+  double level_m = 0.0;
 };
 
 double first_level_above(double height_m, double interval_m) {
@@ -35,62 +40,44 @@ double first_level_above(double height_m, double interval_m) {
   return level;
 }
 
-enum class PieceFate { kKept, kInsideChild, kDropped };
-
-PieceFate piece_fate(const Piece& piece, const Region& region, const std::vector<Piece>& lower) {
-  for (const KeyContour* child : region.children) {
-    // the child's own contours take over there
-    if (nested_inside(piece.raw, child->polygon_m)) return PieceFate::kInsideChild;
-  }
-  for (const Piece& earlier : lower) {
-    if (!earlier.kept && contains_point(earlier.raw, piece.raw.front())) return PieceFate::kDropped;
-  }
-  const double clearance_m = 0.25 * region.level_spacing_m;
-  for (const KeyContour* child : region.children) {
-    if (boundary_distance_m(piece.raw, child->polygon_m) < clearance_m) return PieceFate::kDropped;
-    if (contains_point(piece.raw, child->polygon_m.front()) && piece.level_m >= child->height_m) {
-      return PieceFate::kDropped;
+// The loops of one level: the parent's shrunk pieces joined with the skirts
+// of the children higher than the level (the ground is the higher of the two).
+std::vector<Polygon2> level_loops(const StraightSkeleton& skeleton, const Region& region, double level_m) {
+  std::vector<Polygon2> polygons;
+  const double shrink_m = (level_m - region.key->height_m) / region.roof_slope;
+  if (shrink_m < skeleton.vanish_time_m()) {
+    for (Polygon2& piece : skeleton.offset(shrink_m)) {
+      // a piece inside a lower child is that child's own ground
+      bool inside_child = false;
+      for (const Child& c : region.children) {
+        inside_child = inside_child || (c.key->height_m <= level_m && nested_inside(piece, c.key->polygon_m));
+      }
+      if (inside_child) continue;
+      // the roof slope keeps the roof under every child (choose_roof_slope)
+      for (const Child& c : region.children) {
+        REPOSE_DEMAND(c.key->height_m > level_m || !boundaries_cross(piece, c.key->polygon_m));
+      }
+      polygons.push_back(std::move(piece));
     }
   }
-  return PieceFate::kKept;
+  for (const Child& c : region.children) {
+    if (c.key->height_m <= level_m) continue;
+    // the skirt slope keeps it inside the parent (choose_skirt_slope)
+    polygons.push_back(c.skirt.offset((c.key->height_m - level_m) / c.skirt_slope));
+  }
+  if (polygons.size() <= 1) return polygons;
+  return union_boundaries(polygons);
 }
 
-std::vector<Piece> shrink_levels(const StraightSkeleton& skeleton, const Region& region,
-                                 const TerrainOptions& options, int* dropped) {
-  std::vector<Piece> pieces;
-  const double h0 = region.key->height_m;
-  for (double level = first_level_above(h0, options.contour_interval_m);; level += options.contour_interval_m) {
-    const double d = (level - h0) / region.tan_slope;
-    if (d >= skeleton.vanish_time_m()) break;
-    const std::size_t before = pieces.size();
-    for (Polygon2& polygon : skeleton.offset(d)) pieces.push_back({std::move(polygon), level, d, true});
-    for (std::size_t i = before; i < pieces.size(); ++i) {
-      const std::vector<Piece> lower(pieces.begin(), pieces.begin() + static_cast<std::ptrdiff_t>(before));
-      const PieceFate fate = piece_fate(pieces[i], region, lower);
-      pieces[i].kept = fate == PieceFate::kKept;
-      if (fate == PieceFate::kDropped) ++*dropped;
+// A node of the parent's skeleton lies on the ground when no child holds it
+// and no child's skirt rises above the roof there.
+bool node_on_ground(const SkeletonNode& node, const Region& region) {
+  const double z = region.key->height_m + region.roof_slope * node.time_m;
+  for (const Child& c : region.children) {
+    if (contains_point(c.key->polygon_m, node.point_m)) return false;
+    if (c.key->height_m > z && contains_point(c.skirt.offset((c.key->height_m - z) / c.skirt_slope), node.point_m)) {
+      return false;
     }
-  }
-  return pieces;
-}
-
-// the innermost kept piece holding p encloses no child, and no dropped piece holds p
-bool node_belongs_to_roof(const Point2& p, const Region& region, const std::vector<Piece>& pieces) {
-  const Piece* innermost = nullptr;
-  for (const Piece& piece : pieces) {
-    if (!contains_point(piece.raw, p)) continue;
-    if (!piece.kept) return false;
-    if (innermost == nullptr || piece.level_m > innermost->level_m) innermost = &piece;
-  }
-  const double clearance_m = 0.25 * region.level_spacing_m;
-  for (const KeyContour* child : region.children) {
-    if (contains_point(child->polygon_m, p)) return false;
-    double gap = std::numeric_limits<double>::infinity();
-    const Polygon2& c = child->polygon_m;
-    for (std::size_t i = 0; i < c.size(); ++i) gap = std::min(gap, point_segment_distance_m(p, c[i], c[(i + 1) % c.size()]));
-    if (gap < clearance_m) return false;
-    const Polygon2& enclosing = innermost != nullptr ? innermost->raw : region.key->polygon_m;
-    if (contains_point(enclosing, c.front())) return false;
   }
   return true;
 }
@@ -103,49 +90,105 @@ double distance_to_boundary_m(const Point2& p, const Polygon2& polygon) {
   return best;
 }
 
-// The largest smoothing tolerance that keeps piece i clear of its neighbours.
-double safe_tolerance_m(std::size_t i, const std::vector<Piece>& kept, const Region& region,
+// The largest smoothing tolerance that keeps loop i clear of its neighbours:
+// the ground rises at most tan(slope) per metre, so loops one level apart are
+// at least a level spacing apart; same-level loops, the key contours and
+// the summit points are measured.
+double safe_tolerance_m(std::size_t i, const std::vector<Loop>& loops, const Region& region,
                         const std::vector<SummitPoint>& summits, double tolerance_m) {
-  const Piece& piece = kept[i];
-  // levels one spacing apart are at least one spacing apart (1-Lipschitz roof);
-  // the key contour itself is piece.distance_m away
-  double gap = std::min(region.level_spacing_m, piece.distance_m);
-  for (std::size_t j = 0; j < kept.size(); ++j) {
-    if (j != i && kept[j].level_m == piece.level_m) gap = std::min(gap, boundary_distance_m(piece.raw, kept[j].raw));
+  const Loop& loop = loops[i];
+  double gap = std::min(region.level_spacing_m, boundary_distance_m(loop.raw, region.key->polygon_m));
+  for (std::size_t j = 0; j < loops.size(); ++j) {
+    if (j != i && loops[j].level_m == loop.level_m) gap = std::min(gap, boundary_distance_m(loop.raw, loops[j].raw));
   }
-  for (const KeyContour* child : region.children) gap = std::min(gap, boundary_distance_m(piece.raw, child->polygon_m));
-  for (const SummitPoint& s : summits) gap = std::min(gap, distance_to_boundary_m(s.point_m, piece.raw));
+  for (const Child& c : region.children) gap = std::min(gap, boundary_distance_m(loop.raw, c.key->polygon_m));
+  for (const SummitPoint& s : summits) gap = std::min(gap, distance_to_boundary_m(s.point_m, loop.raw));
   return std::min(tolerance_m, 0.45 * gap);
+}
+
+// The roof may rise no faster than the lowest child allows: on a child's
+// outline the roof must stay below the child's height, so the roof slope is
+// at most (h_child - h_key) / (largest roof time on the child's outline).
+// The roof is 1-Lipschitz, so sampling the outline every `step` and adding
+// half a step bounds that largest time from above.
+double choose_roof_slope(const StraightSkeleton& skeleton, const KeyContour& key,
+                         const std::vector<const KeyContour*>& children, double tan_slope, double step_m) {
+  double slope = tan_slope;
+  for (const KeyContour* c : children) {
+    double highest_m = 0.0;
+    for (const Point2& p : densified(c->polygon_m, step_m)) highest_m = std::max(highest_m, skeleton.roof_time_m(p));
+    slope = std::min(slope, 0.999 * (c->height_m - key.height_m) / (highest_m + 0.5 * step_m));
+  }
+  return slope;
+}
+
+// The skirt may fall no slower than the room around the child allows: grown
+// down to the parent's height it must stay inside the parent and off every
+// sibling. Starts at the terrain's slope and steepens by 1.25 until it fits.
+double choose_skirt_slope(const ExteriorSkeleton& skirt, const KeyContour& child, const KeyContour& key,
+                          const std::vector<const KeyContour*>& siblings, double tan_slope) {
+  const double rise_m = child.height_m - key.height_m;
+  for (double slope = tan_slope; slope < 1e6 * tan_slope; slope *= 1.25) {
+    const Polygon2 foot = skirt.offset(rise_m / slope);
+    bool fits = !boundaries_cross(foot, key.polygon_m) && contains_point(key.polygon_m, foot.front());
+    for (const KeyContour* other : siblings) {
+      if (other == &child) continue;
+      fits = fits && !boundaries_cross(foot, other->polygon_m) && !contains_point(foot, other->polygon_m.front());
+    }
+    if (fits) return slope;
+  }
+  REPOSE_DEMAND(false);  // nested, non-touching contours always leave room
+  return tan_slope;
+}
+
+Region make_region(const std::vector<KeyContour>& keys, const ContourNesting& nesting, int k,
+                   const StraightSkeleton& skeleton, const TerrainOptions& options) {
+  Region region;
+  region.key = &keys[k];
+  const double tan_slope = std::tan(options.slope_rad);
+  std::vector<const KeyContour*> children;
+  for (int c : nesting.children[k]) children.push_back(&keys[c]);
+  const double step_m = 0.05 * options.contour_interval_m / tan_slope;
+  region.roof_slope = choose_roof_slope(skeleton, keys[k], children, tan_slope, step_m);
+  double steepest = region.roof_slope;
+  for (const KeyContour* c : children) {
+    // skirts are never gentler than the terrain's slope: this reach suffices
+    ExteriorSkeleton skirt(c->polygon_m, 1.01 * (c->height_m - keys[k].height_m) / tan_slope);
+    const double skirt_slope = choose_skirt_slope(skirt, *c, keys[k], children, tan_slope);
+    steepest = std::max(steepest, skirt_slope);
+    region.children.push_back({c, std::move(skirt), skirt_slope});
+  }
+  // the ground is the higher of slopes at most `steepest`: levels one
+  // interval apart are at least interval / steepest apart
+  region.level_spacing_m = options.contour_interval_m / steepest;
+  return region;
 }
 
 void add_region(const std::vector<KeyContour>& keys, const ContourNesting& nesting, int k,
                 const TerrainOptions& options, ContourSet* out) {
-  Region region;
-  region.key = &keys[k];
-  for (int c : nesting.children[k]) region.children.push_back(&keys[c]);
-  region.tan_slope = std::tan(options.slope_rad);
-  region.level_spacing_m = options.contour_interval_m / region.tan_slope;
-
-  const StraightSkeleton skeleton(region.key->polygon_m);
-  std::vector<Piece> pieces = shrink_levels(skeleton, region, options, &out->dropped_pieces);
-  std::vector<Piece> kept;
-  for (Piece& p : pieces) {
-    if (p.kept) kept.push_back(p);
+  const StraightSkeleton skeleton(keys[k].polygon_m);
+  const Region region = make_region(keys, nesting, k, skeleton, options);
+  double top_m = region.key->height_m + region.roof_slope * skeleton.vanish_time_m();
+  for (const Child& c : region.children) top_m = std::max(top_m, c.key->height_m);
+  std::vector<Loop> loops;
+  for (double level = first_level_above(region.key->height_m, options.contour_interval_m); level < top_m;
+       level += options.contour_interval_m) {
+    for (Polygon2& loop : level_loops(skeleton, region, level)) loops.push_back({std::move(loop), level});
   }
   std::vector<SummitPoint> summits;
   const double merge_m = kNodeMergeFraction * region.level_spacing_m;
   for (const SkeletonNode& node : skeleton.nodes()) {
-    if (!node_belongs_to_roof(node.point_m, region, pieces)) continue;
+    if (!node_on_ground(node, region)) continue;
     bool on_contour = false;
-    for (const Piece& p : kept) on_contour = on_contour || distance_to_boundary_m(node.point_m, p.raw) < merge_m;
-    if (!on_contour) summits.push_back({node.point_m, region.key->height_m + region.tan_slope * node.time_m});
+    for (const Loop& l : loops) on_contour = on_contour || distance_to_boundary_m(node.point_m, l.raw) < merge_m;
+    if (!on_contour) summits.push_back({node.point_m, region.key->height_m + region.roof_slope * node.time_m});
   }
   out->contours.push_back({densified(region.key->polygon_m, options.sample_spacing_m), region.key->height_m, k, true, 0.0});
-  for (std::size_t i = 0; i < kept.size(); ++i) {
-    const double tolerance_m = safe_tolerance_m(i, kept, region, summits, options.smoothing_tolerance_m);
-    Polygon2 sampled = tolerance_m > merge_m ? smoothed_contour(kept[i].raw, tolerance_m, options.sample_spacing_m)
-                                             : densified(kept[i].raw, options.sample_spacing_m);
-    out->contours.push_back({std::move(sampled), kept[i].level_m, k, false, tolerance_m});
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    const double tolerance_m = safe_tolerance_m(i, loops, region, summits, options.smoothing_tolerance_m);
+    Polygon2 sampled = tolerance_m > merge_m ? smoothed_contour(loops[i].raw, tolerance_m, options.sample_spacing_m)
+                                             : densified(loops[i].raw, options.sample_spacing_m);
+    out->contours.push_back({std::move(sampled), loops[i].level_m, k, false, tolerance_m});
   }
   out->summits.insert(out->summits.end(), summits.begin(), summits.end());
 }

@@ -7,14 +7,19 @@
 // nodes give the ridge and summit points above the last contour.
 //
 // Nested key contours (an extension of the paper, which starts from one
-// outer polygon): K's shrunk polygons stop where they would meet a key
-// contour inside K (a "child"): a shrunk piece is dropped when it comes
-// within a quarter of the level spacing of a child, lies inside one, lies
-// in a dropped piece of a lower level, or encloses a child no higher than
-// itself. Between the last kept piece and the child the mesh interpolates:
-// where the key contours agree with the slope (concentric circles of a
-// cone) the result is exact; where they do not, the ground between them is
-// steeper or flatter than slope_rad, as the key contours demand.
+// outer polygon): inside key contour K the ground is the higher of K's roof
+// (rising inward) and the "skirt" of every key contour C nested in K
+// (falling outward from C's height, by C's exterior skeleton). A contour
+// level is the union of K's shrunk pieces and the children's grown outlines
+// (CGAL Boolean union), so contours wrap around the inner key contours and
+// meet them exactly. For the ground to pass through every key contour, the
+// roof rises no faster than the lowest point of each child's outline allows
+// and each skirt falls steeply enough to reach K's height before K or a
+// sibling: the slopes start at slope_rad and are lowered (roof) or raised
+// (skirt) only as far as the key contours demand. Concentric key contours
+// that agree with slope_rad give a uniform slope (a cone from circles).
+// Where a concave child's growing arms enclose a pocket, it is filled (no
+// closed depressions).
 //
 // Every generated contour is then smoothed (bspline_contour.h) with a
 // tolerance below 0.45 of its gap to every neighbouring contour and summit
@@ -44,7 +49,6 @@ struct SummitPoint {
 struct ContourSet {
   std::vector<TerrainContour> contours;
   std::vector<SummitPoint> summits;
-  int dropped_pieces = 0;  // shrunk pieces dropped near nested key contours
 };
 
 // keys and nesting as validate_key_contours returned them.

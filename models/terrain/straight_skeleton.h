@@ -39,12 +39,44 @@ class StraightSkeleton {
   // The polygon shrunk by distance_m (> 0): zero or more simple,
   // counter-clockwise polygons (split events give several).
   std::vector<Polygon2> offset(double distance_m) const;
+  // The roof over p: the distance at which the shrinking boundary passes p
+  // (the distance from p to the line of the edge whose skeleton face holds
+  // it); 0 outside the polygon.
+  double roof_time_m(const Point2& p) const;
+
+ private:
+  struct Face {
+    Polygon2 outline;
+    Point2 edge_from, edge_to;  // the polygon edge the face belongs to
+  };
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::vector<SkeletonNode> nodes_;
+  std::vector<Face> faces_;
+  double vanish_time_m_ = 0.0;
+};
+
+// Outward offsets of a simple polygon by its exterior straight skeleton
+// (mitred corners: the dilation in the skeleton's own distance, the same
+// distance the interior roof uses).
+class ExteriorSkeleton {
+ public:
+  // polygon: simple, counter-clockwise; offsets up to max_distance_m (> 0).
+  ExteriorSkeleton(const Polygon2& polygon, double max_distance_m);
+  ~ExteriorSkeleton();
+  ExteriorSkeleton(ExteriorSkeleton&&) noexcept;
+  ExteriorSkeleton& operator=(ExteriorSkeleton&&) noexcept;
+
+  double max_distance_m() const { return max_distance_m_; }
+  // The outer boundary of the polygon grown by distance_m in (0,
+  // max_distance_m), counter-clockwise. Pockets the growth encloses (inner
+  // boundaries, where a concave polygon's arms grow together) are filled.
+  Polygon2 offset(double distance_m) const;
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
-  std::vector<SkeletonNode> nodes_;
-  double vanish_time_m_ = 0.0;
+  double max_distance_m_ = 0.0;
 };
 
 }  // namespace repose

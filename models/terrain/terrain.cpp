@@ -26,7 +26,6 @@ Terrain build_terrain(std::vector<KeyContour> keys, const TerrainOptions& option
   s.key_contour_count = static_cast<int>(terrain.keys.size());
   s.contour_count = static_cast<int>(terrain.contours.contours.size());
   s.summit_point_count = static_cast<int>(terrain.contours.summits.size());
-  s.dropped_pieces = terrain.contours.dropped_pieces;
   s.triangle_count = static_cast<int>(terrain.mesh.F.rows());
   s.min_height_m = terrain.mesh.V.col(2).minCoeff();
   s.max_height_m = terrain.mesh.V.col(2).maxCoeff();

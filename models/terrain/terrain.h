@@ -19,7 +19,6 @@ struct TerrainSummary {
   int key_contour_count = 0;
   int contour_count = 0;  // key and generated
   int summit_point_count = 0;
-  int dropped_pieces = 0;  // see inner_contours.h
   int triangle_count = 0;
   double min_height_m = 0.0;
   double max_height_m = 0.0;

@@ -94,3 +94,32 @@ TEST(StraightSkeleton, SplitEventGivesTwoPieces) {
 
 }  // namespace
 }  // namespace repose
+
+namespace repose {
+namespace {
+
+TEST(StraightSkeleton, RoofTimeIsTheDistanceToTheNearestEdgeOfARectangle) {
+  const StraightSkeleton s(test::rectangle_polygon(0, 0, 6, 2));
+  EXPECT_NEAR(s.roof_time_m(Point2(3.0, 0.5)), 0.5, 1e-12);
+  EXPECT_NEAR(s.roof_time_m(Point2(0.25, 1.0)), 0.25, 1e-12);
+  EXPECT_NEAR(s.roof_time_m(Point2(5.5, 1.2)), 0.5, 1e-12);
+  EXPECT_EQ(s.roof_time_m(Point2(7.0, 1.0)), 0.0);
+}
+
+TEST(StraightSkeleton, RoofTimeMatchesTheOffsets) {
+  // a point on the polygon shrunk by d has roof time d
+  std::mt19937_64 rng(11);
+  const Polygon2 star = test::random_star_polygon(&rng, 10.0, 18);
+  const StraightSkeleton s(star);
+  for (double d : {0.4, 1.3, 2.2}) {
+    for (const Polygon2& piece : s.offset(d)) {
+      for (std::size_t i = 0; i < piece.size(); ++i) {
+        const Point2 mid = 0.5 * (piece[i] + piece[(i + 1) % piece.size()]);
+        EXPECT_NEAR(s.roof_time_m(mid), d, 1e-9);
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace repose
