@@ -47,9 +47,14 @@ Polygon2 bspline_control_points(const Polygon2& polygon, double tolerance_m) {
   return control;
 }
 
-Polygon2 sample_closed_bspline(const Polygon2& control, double spacing_m) {
+namespace {
+
+// The curve evaluated finely: every span at least kSamplesPerSpan times and
+// at most spacing / 8 apart, so thinning has points to choose from.
+constexpr int kSamplesPerSpan = 8;
+
+Polygon2 dense_curve(const Polygon2& control, double spacing_m) {
   const std::size_t n = control.size();
-  REPOSE_DEMAND(n >= 3 && spacing_m > 0.0);
   Polygon2 out;
   for (std::size_t i = 0; i < n; ++i) {
     const Point2& p0 = control[(i + n - 1) % n];
@@ -59,19 +64,48 @@ Polygon2 sample_closed_bspline(const Polygon2& control, double spacing_m) {
     // the derivative of a cubic span is a quadratic B-spline of the three
     // control differences, so the span is no longer than the longest of them
     const double span_bound = std::max({(p1 - p0).norm(), (p2 - p1).norm(), (p3 - p2).norm()});
-    const int samples = std::max(1, static_cast<int>(std::ceil(span_bound / spacing_m)));
-    for (int k = 0; k < samples; ++k) {
-      const Point2 p = bspline_point(p0, p1, p2, p3, static_cast<double>(k) / samples);
-      // collinear control points repeat the same point when cuts are tiny
-      if (out.empty() || (p - out.back()).norm() > 1e-9 * spacing_m) out.push_back(p);
-    }
+    const int samples = std::max(kSamplesPerSpan, static_cast<int>(std::ceil(8.0 * span_bound / spacing_m)));
+    for (int k = 0; k < samples; ++k) out.push_back(bspline_point(p0, p1, p2, p3, static_cast<double>(k) / samples));
   }
-  while (out.size() > 1 && (out.back() - out.front()).norm() <= 1e-9 * spacing_m) out.pop_back();
+  return out;
+}
+
+// dense[i..j] (cyclic indices, j > i) stays within max_deviation_m of the chord
+bool chord_fits(const Polygon2& dense, std::size_t i, std::size_t j, double max_deviation_m) {
+  const std::size_t n = dense.size();
+  const Point2& a = dense[i % n];
+  const Point2& b = dense[j % n];
+  for (std::size_t k = i + 1; k < j; ++k) {
+    if (point_segment_distance_m(dense[k % n], a, b) > max_deviation_m) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+Polygon2 sample_closed_bspline(const Polygon2& control, double spacing_m, double max_deviation_m) {
+  REPOSE_DEMAND(control.size() >= 3 && spacing_m > 0.0 && max_deviation_m > 0.0);
+  const Polygon2 dense = dense_curve(control, spacing_m);
+  const std::size_t n = dense.size();
+  // greedy thinning: from each kept point, the farthest point whose chord is
+  // no longer than spacing_m and no farther than max_deviation_m from the curve
+  Polygon2 out;
+  std::size_t i = 0;
+  while (i < n) {
+    out.push_back(dense[i]);
+    std::size_t j = i + 1;
+    while (j + 1 <= n && (dense[(j + 1) % n] - dense[i]).norm() <= spacing_m &&
+           chord_fits(dense, i, j + 1, max_deviation_m)) {
+      ++j;
+    }
+    i = j;
+  }
   return out;
 }
 
 Polygon2 smoothed_contour(const Polygon2& polygon, double tolerance_m, double spacing_m) {
-  return sample_closed_bspline(bspline_control_points(polygon, tolerance_m), spacing_m);
+  return sample_closed_bspline(bspline_control_points(polygon, tolerance_m), spacing_m,
+                               kChordDeviationFraction * tolerance_m);
 }
 
 }  // namespace repose

@@ -11,8 +11,9 @@
 // edges keep their end control points; each span of the curve lies in the
 // convex hull of four consecutive control points, which lie on at most two
 // adjacent edges within a of the corner, so the curve stays within
-// `tolerance_m` of the polygon. Callers choose the tolerance below half the
-// gap to the neighbouring contours, so smoothed contours never cross.
+// `tolerance_m` of the polygon, and its sampled chords within 1.2 times it.
+// Callers choose the tolerance below 0.4 of the gap to the neighbouring
+// contours (0.48 with the chords), so smoothed contours never cross.
 
 #include "models/terrain/polygon_2d.h"
 
@@ -21,11 +22,18 @@ namespace repose {
 // The control points described above (closed sequence).
 Polygon2 bspline_control_points(const Polygon2& polygon, double tolerance_m);
 
-// Evaluates the closed uniform cubic B-spline of `control` with enough
-// samples per span that no chord is longer than spacing_m (at least one per span).
-Polygon2 sample_closed_bspline(const Polygon2& control, double spacing_m);
+// Points on the closed uniform cubic B-spline of `control`: the curve is
+// evaluated finely, then thinned so that every chord is at most spacing_m
+// long and within max_deviation_m of the curve (points far closer than the
+// spacing where the control points crowd would give the mesh slivers).
+Polygon2 sample_closed_bspline(const Polygon2& control, double spacing_m, double max_deviation_m);
 
-// Both steps: a smoothed, sampled contour within tolerance_m of polygon.
+// Chords of a smoothed contour stay within this fraction of the tolerance
+// of the curve, so the sampled contour lies within (1 + fraction) *
+// tolerance_m of the polygon.
+inline constexpr double kChordDeviationFraction = 0.2;
+
+// Both steps: a smoothed, sampled contour within 1.2 tolerance_m of polygon.
 Polygon2 smoothed_contour(const Polygon2& polygon, double tolerance_m, double spacing_m);
 
 }  // namespace repose

@@ -15,6 +15,8 @@ namespace {
 
 // a skeleton node this close to a contour adds nothing but a sliver
 constexpr double kNodeMergeFraction = 1e-6;
+// summit points closer than this fraction of the sample spacing are one
+constexpr double kSummitMergeFraction = 0.1;
 
 struct Child {
   const KeyContour* key = nullptr;
@@ -103,7 +105,8 @@ double safe_tolerance_m(std::size_t i, const std::vector<Loop>& loops, const Reg
   }
   for (const Child& c : region.children) gap = std::min(gap, boundary_distance_m(loop.raw, c.key->polygon_m));
   for (const SummitPoint& s : summits) gap = std::min(gap, distance_to_boundary_m(s.point_m, loop.raw));
-  return std::min(tolerance_m, 0.45 * gap);
+  // 0.4: the sampled contour lies within 1.2 tolerances of its loop (bspline_contour.h)
+  return std::min(tolerance_m, 0.4 * gap);
 }
 
 // The roof may rise no faster than the lowest child allows: on a child's
@@ -139,6 +142,24 @@ double choose_skirt_slope(const ExteriorSkeleton& skirt, const KeyContour& child
   }
   REPOSE_DEMAND(false);  // nested, non-touching contours always leave room
   return tan_slope;
+}
+
+// Skeleton nodes crowd (a regular polygon's nodes all meet at its centre,
+// to round-off): of nodes closer than merge_m keep the highest, which is
+// the summit (ties: the lower x, then y, so the choice is symmetric).
+std::vector<SummitPoint> merged_summits(std::vector<SummitPoint> points, double merge_m) {
+  std::sort(points.begin(), points.end(), [](const SummitPoint& a, const SummitPoint& b) {
+    if (a.height_m != b.height_m) return a.height_m > b.height_m;
+    if (a.point_m.x() != b.point_m.x()) return a.point_m.x() < b.point_m.x();
+    return a.point_m.y() < b.point_m.y();
+  });
+  std::vector<SummitPoint> kept;
+  for (const SummitPoint& p : points) {
+    bool near = false;
+    for (const SummitPoint& k : kept) near = near || (k.point_m - p.point_m).norm() < merge_m;
+    if (!near) kept.push_back(p);
+  }
+  return kept;
 }
 
 Region make_region(const std::vector<KeyContour>& keys, const ContourNesting& nesting, int k,
@@ -183,6 +204,7 @@ void add_region(const std::vector<KeyContour>& keys, const ContourNesting& nesti
     for (const Loop& l : loops) on_contour = on_contour || distance_to_boundary_m(node.point_m, l.raw) < merge_m;
     if (!on_contour) summits.push_back({node.point_m, region.key->height_m + region.roof_slope * node.time_m});
   }
+  summits = merged_summits(std::move(summits), kSummitMergeFraction * options.sample_spacing_m);
   out->contours.push_back({densified(region.key->polygon_m, options.sample_spacing_m), region.key->height_m, k, true, 0.0});
   for (std::size_t i = 0; i < loops.size(); ++i) {
     const double tolerance_m = safe_tolerance_m(i, loops, region, summits, options.smoothing_tolerance_m);

@@ -22,7 +22,7 @@
 // closed depressions).
 //
 // Every generated contour is then smoothed (bspline_contour.h) with a
-// tolerance below 0.45 of its gap to every neighbouring contour and summit
+// tolerance below 0.4 of its gap to every neighbouring contour and summit
 // point, so smoothed contours never cross (the gaps follow from the roof
 // being 1-Lipschitz: levels d apart are at least d apart in the plane).
 
