@@ -1,6 +1,7 @@
 #include "models/terrain/terrain.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "models/core/base/error.h"
 #include "models/terrain/contour_triangulation.h"
