@@ -5,16 +5,14 @@
 
 #include <fmt/format.h>
 
-#include "models/core/base/error.h"
+#include "models/core/config/fields.h"
 
 namespace repose {
 
 namespace {
 
 void require_positive(double value, const char* field) {
-  if (!(std::isfinite(value) && value > 0.0)) {
-    throw InputError(fmt::format("terrain: {} = {} must be finite and > 0", field, value));
-  }
+  if (!(std::isfinite(value) && value > 0.0)) throw FieldError(field, "a finite number > 0", fmt::format("{}", value));
 }
 
 }  // namespace
@@ -25,7 +23,7 @@ void TerrainOptions::validate() const {
   require_positive(sample_spacing_m, "sample_spacing_m");
   require_positive(cell_size_m, "cell_size_m");
   if (!(slope_rad > 0.0 && slope_rad < std::numbers::pi / 2)) {
-    throw InputError(fmt::format("terrain: slope_rad = {} must lie in (0, pi/2) (slope_deg in (0, 90))", slope_rad));
+    throw FieldError("slope_deg", "a number in (0, 90)", fmt::format("{}", slope_rad * 180.0 / std::numbers::pi));
   }
 }
 

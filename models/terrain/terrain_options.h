@@ -21,8 +21,8 @@ struct TerrainOptions {
   // Cell size of the height field sampled from the mesh.
   double cell_size_m = 1.0;
 
-  // Throws InputError naming the field and the rule: every length > 0 and
-  // finite, slope_rad in (0, pi/2).
+  // Throws FieldError (an InputError) naming the scene key and the rule:
+  // every length > 0 and finite, slope_deg in (0, 90).
   void validate() const;
 };
 

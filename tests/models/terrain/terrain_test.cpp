@@ -170,7 +170,7 @@ TEST(Terrain, InvalidOptionsNameTheField) {
     build_terrain(cone_contours(0.5), o);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("slope_rad"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("slope_deg"), std::string::npos) << e.what();
   }
 }
 
