@@ -33,7 +33,7 @@ struct CalibrateOptions {
 
 std::string joined_command_line(int argc, char** argv) {
   std::string text;
-  for (int k = 0; k < argc; ++k) text += (k ? " " : "") + std::string(argv[k]);
+  for (const std::string& a : recorded_command_line({argv, argv + argc})) text += (text.empty() ? "" : " ") + a;
   return text;
 }
 

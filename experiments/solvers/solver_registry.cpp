@@ -2,6 +2,7 @@
 
 #include "models/core/solver/initial_solver.h"
 #include "models/ground/ground_solver.h"
+#include "models/tearing/tearing_solver.h"
 #include "models/terrain/terrain_solver.h"
 #include "validation/liggghts/liggghts_solver.h"
 
@@ -13,6 +14,7 @@ SolverRegistry make_registry() {
   SolverRegistry registry;
   registry.add(std::make_shared<GroundSolver>());
   registry.add(std::make_shared<LiggghtsSolver>());
+  registry.add(std::make_shared<TearingSolver>());
   registry.add(std::make_shared<TerrainSolver>());
   registry.add(std::make_shared<InitialSolver>());
   return registry;
