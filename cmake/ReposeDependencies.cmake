@@ -9,6 +9,8 @@ find_package(CLI11 REQUIRED)
 find_package(PNG REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(Ceres REQUIRED)
+# CGAL 5.5 (header-only): straight skeleton, constrained Delaunay, convex partition.
+find_package(CGAL REQUIRED)
 # CMake's own FindBullet: Debian's BulletConfig.cmake is broken (relative paths).
 find_package(Bullet REQUIRED MODULE)
 pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)

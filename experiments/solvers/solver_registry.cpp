@@ -4,6 +4,7 @@
 #include "models/ground/ground_solver.h"
 #include "models/tearing/tearing_solver.h"
 #include "models/snow/snow_solver.h"
+#include "models/terrain/terrain_solver.h"
 #include "validation/liggghts/liggghts_solver.h"
 
 namespace repose {
@@ -16,6 +17,7 @@ SolverRegistry make_registry() {
   registry.add(std::make_shared<LiggghtsSolver>());
   registry.add(std::make_shared<TearingSolver>());
   registry.add(std::make_shared<SnowSolver>());
+  registry.add(std::make_shared<TerrainSolver>());
   registry.add(std::make_shared<InitialSolver>());
   return registry;
 }

@@ -315,4 +315,23 @@ void write_obj(const std::string& path, const TriangleMesh& mesh) {
   write_file(path, out);
 }
 
+void write_ply(const std::string& path, const TriangleMesh& mesh) {
+  std::string out = fmt::format(
+      "ply\nformat binary_little_endian 1.0\ncomment repose triangle mesh\n"
+      "element vertex {}\nproperty double x\nproperty double y\nproperty double z\n"
+      "element face {}\nproperty list uchar int vertex_indices\nend_header\n",
+      mesh.V.rows(), mesh.F.rows());
+  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
+    for (int d = 0; d < 3; ++d) {
+      const std::uint64_t bits = std::bit_cast<std::uint64_t>(mesh.V(v, d));
+      for (int k = 0; k < 8; ++k) out.push_back(static_cast<char>((bits >> (8 * k)) & 0xff));
+    }
+  }
+  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
+    out.push_back('\x03');
+    for (int d = 0; d < 3; ++d) put_u32(out, static_cast<std::uint32_t>(mesh.F(f, d)));
+  }
+  write_file(path, out);
+}
+
 }  // namespace repose

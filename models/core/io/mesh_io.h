@@ -25,5 +25,8 @@ TriangleMesh read_mesh(const std::string& path);
 void write_stl(const std::string& path, const TriangleMesh& mesh);
 // OBJ with coordinates printed round-trip exact.
 void write_obj(const std::string& path, const TriangleMesh& mesh);
+// Binary little-endian PLY: vertices as float64 x, y, z, faces as a uchar
+// count and int32 indices (MeshLab, Blender, ParaView read it).
+void write_ply(const std::string& path, const TriangleMesh& mesh);
 
 }  // namespace repose

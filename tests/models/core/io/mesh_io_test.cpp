@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -145,6 +146,33 @@ TEST_F(MeshIo, ObjRoundTripIsExact) {
   const TriangleMesh back = read_mesh(p);
   EXPECT_EQ(back.V, capsule.V);
   EXPECT_EQ(back.F, capsule.F);
+}
+
+TEST_F(MeshIo, PlyHoldsTheHeaderCountsAndEveryVertexBitExact) {
+  const TriangleMesh cube = make_box(Eigen::Vector3d(0.5, 0.25, 1.0 / 3.0));
+  write_ply(path("cube.ply"), cube);
+  std::ifstream in(path("cube.ply"), std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string end = "end_header\n";
+  const std::size_t body = bytes.find(end) + end.size();
+  ASSERT_NE(bytes.find(end), std::string::npos);
+  EXPECT_NE(bytes.find("element vertex " + std::to_string(cube.V.rows()) + "\n"), std::string::npos);
+  EXPECT_NE(bytes.find("element face " + std::to_string(cube.F.rows()) + "\n"), std::string::npos);
+  ASSERT_EQ(bytes.size(), body + 24 * cube.V.rows() + 13 * cube.F.rows());
+  for (Eigen::Index v = 0; v < cube.V.rows(); ++v) {
+    for (int d = 0; d < 3; ++d) {
+      double x;
+      std::memcpy(&x, bytes.data() + body + 24 * v + 8 * d, 8);
+      EXPECT_EQ(x, cube.V(v, d));
+    }
+  }
+  const std::size_t faces = body + 24 * cube.V.rows();
+  for (Eigen::Index f = 0; f < cube.F.rows(); ++f) {
+    EXPECT_EQ(bytes[faces + 13 * f], 3);
+    std::int32_t i;
+    std::memcpy(&i, bytes.data() + faces + 13 * f + 1 + 4 * 2, 4);
+    EXPECT_EQ(i, cube.F(f, 2));
+  }
 }
 
 }  // namespace

@@ -1,0 +1,56 @@
+#pragma once
+// Moving elements laid on the terrain in layers (seed paper 003, sec. 4 and
+// fig. 4: spheres placed on the Delaunay triangles, their shape, friction
+// and bounciness changed by layer to build strata, "placed so that they do
+// not overlap horizontally or vertically", since overlapping elements would
+// spring apart at the start).
+//
+// Departure from the paper: the paper computes positions inside each
+// triangle (points dividing its edges); here each layer is a square lattice
+// over the source region (offset by half a spacing on odd rows so rows
+// nest), and each sphere is lowered vertically until it touches the terrain
+// or a sphere of an earlier row. Lattice spacing 2 r (1 + gap) keeps a row
+// apart; lowering keeps rows apart; so no two elements overlap by
+// construction, and the first row rests on the surface.
+
+#include <string>
+#include <vector>
+
+#include "models/terrain/terrain_surface.h"
+
+namespace repose {
+
+struct ElementLayer {
+  std::string name;
+  double radius_m = 0.5;
+  int rows = 1;               // rows of spheres stacked in this layer
+  double friction = 0.5;      // Coulomb coefficient, >= 0
+  double restitution = 0.2;   // in [0, 1]
+};
+
+struct ElementSource {
+  Polygon2 region_m;                  // where the elements lie (xy), simple
+  std::vector<ElementLayer> layers;   // bottom layer first
+  double gap_fraction = 0.01;         // clearance between elements, times the smaller radius
+
+  // Throws InputError naming the field: a simple region of >= 3 vertices,
+  // at least one layer, radius_m > 0, rows >= 1, friction >= 0, restitution
+  // in [0, 1], gap_fraction in [0, 1).
+  void validate() const;
+};
+
+struct PlacedElement {
+  Eigen::Vector3d centre_m;
+  double radius_m = 0.0;
+  int layer = 0;  // index into ElementSource::layers
+};
+
+struct ElementLayout {
+  std::vector<PlacedElement> elements;
+  int skipped_off_terrain = 0;  // lattice points with no terrain below
+};
+
+// Deterministic: the lattice is anchored at the region's bounding-box corner.
+ElementLayout place_element_layers(const TerrainSurface& surface, const ElementSource& source);
+
+}  // namespace repose

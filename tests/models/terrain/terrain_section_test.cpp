@@ -1,0 +1,86 @@
+#include "models/terrain/terrain_section.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "models/core/base/error.h"
+
+namespace repose {
+namespace {
+
+namespace fs = std::filesystem;
+
+TerrainScene read(const std::string& text, const std::string& file = "scene.yaml") {
+  const YamlValue root = parse_yaml(text, file);
+  return read_terrain_section(root.map({"terrain"}).required("terrain", "a terrain section"));
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    read(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kSquare = "[[0, 0], [100, 0], [100, 100], [0, 100]]";
+
+TEST(TerrainSection, ReadsContoursOptionsElementsAndBuildings) {
+  const TerrainScene s = read(std::string(R"(
+terrain:
+  key_contours:
+    - {name: foot, height_m: 5, points_m: )") + kSquare + R"(}
+  slope_deg: 20
+  contour_interval_m: 2.5
+  elements:
+    region_m: [[10, 10], [30, 10], [30, 30]]
+    layers: [{name: bed, radius_m: 0.5, rows: 2, friction: 0.7, restitution: 0.1}]
+  buildings:
+    - {name: house, footprint_m: [[60, 60], [70, 60], [70, 70], [60, 70]], storeys: 2}
+)");
+  ASSERT_EQ(s.key_contours.size(), 1u);
+  EXPECT_EQ(s.key_contours[0].name, "foot");
+  EXPECT_DOUBLE_EQ(s.key_contours[0].height_m, 5.0);
+  EXPECT_NEAR(s.options.slope_rad, 20.0 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_DOUBLE_EQ(s.options.contour_interval_m, 2.5);
+  EXPECT_DOUBLE_EQ(s.options.sample_spacing_m, TerrainOptions().sample_spacing_m);  // default
+  ASSERT_TRUE(s.elements.has_value());
+  EXPECT_EQ(s.elements->layers[0].rows, 2);
+  EXPECT_DOUBLE_EQ(s.elements->layers[0].friction, 0.7);
+  ASSERT_EQ(s.buildings.size(), 1u);
+  EXPECT_EQ(s.buildings[0].storeys, 2);
+}
+
+TEST(TerrainSection, ErrorsNameTheKey) {
+  const std::string unknown = error_of(std::string("terrain:\n  slope: 3\n  key_contours: [{height_m: 0, points_m: ") +
+                                       kSquare + "}]\n");
+  EXPECT_NE(unknown.find("slope"), std::string::npos) << unknown;
+  const std::string neither = error_of("terrain:\n  slope_deg: 30\n");
+  EXPECT_NE(neither.find("exactly one of key_contours and key_contours_file"), std::string::npos) << neither;
+  const std::string steep = error_of(std::string("terrain:\n  slope_deg: 90\n  key_contours: [{height_m: 0, points_m: ") +
+                                     kSquare + "}]\n");
+  EXPECT_NE(steep.find("terrain.slope_deg"), std::string::npos) << steep;
+  const std::string restitution = error_of(std::string("terrain:\n  key_contours: [{height_m: 0, points_m: ") + kSquare +
+                                           "}]\n  elements: {region_m: [[1,1],[2,1],[2,2]], layers: [{radius_m: 1, "
+                                           "restitution: 2}]}\n");
+  EXPECT_NE(restitution.find("restitution"), std::string::npos) << restitution;
+}
+
+TEST(TerrainSection, ContourFileIsTakenFromTheScenesFolder) {
+  const fs::path dir = fs::temp_directory_path() / ("repose_terrain_section_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "hills.geojson") << R"({"type": "FeatureCollection", "features": [
+    {"type": "Feature", "properties": {"name": "foot", "height_m": 3},
+     "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]}}]})";
+  const TerrainScene s = read("terrain:\n  key_contours_file: hills.geojson\n", (dir / "scene.yaml").string());
+  ASSERT_EQ(s.key_contours.size(), 1u);
+  EXPECT_EQ(s.key_contours[0].name, "foot");
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace repose
