@@ -1,0 +1,130 @@
+#include "validation/rigid/rigid_setup.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "models/core/base/error.h"
+#include "validation/liggghts/liggghts_script.h"
+
+namespace repose {
+
+namespace {
+
+// uniform in [0, 1) from the top 53 bits: the same on every standard library
+double unit_draw(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+double largest_radius_m(const DemSpec& dem) { return dem.grain_radius_m * (1.0 + dem.radius_spread); }
+
+RigidContactLaw contact_law(const DemSpec& dem) {
+  return {dem.friction, dem.restitution, dem.rolling_friction};
+}
+
+// The highest point an object reaches: its body's farthest vertex from the
+// body origin above each keyframe's position (any orientation in between).
+double object_top_m(const ObjectSpec& object) {
+  double reach = 0.0;
+  for (Eigen::Index v = 0; v < object.body.V.rows(); ++v) reach = std::max(reach, object.body.V.row(v).norm());
+  double top = 0.0;
+  for (const Keyframe& k : object.keyframes) top = std::max(top, k.pose.position_m.z() + reach);
+  return top;
+}
+
+// Floor (top face z = 0) and four side walls on the grid's edges, up to z_top.
+std::vector<StaticBox> ground_box(const DemSpec& dem, const Grid& grid, double z_top_m) {
+  const double t = std::max(10.0 * largest_radius_m(dem), 0.01);  // wall thickness
+  const double x0 = grid.origin_x_m, x1 = x0 + grid.extent_x_m();
+  const double y0 = grid.origin_y_m, y1 = y0 + grid.extent_y_m();
+  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+  const double hx = 0.5 * grid.extent_x_m() + t, hy = 0.5 * grid.extent_y_m() + t, hz = 0.5 * z_top_m;
+  const double floor_mu_r = dem.floor == DemSpec::Floor::kRough ? dem.floor_rolling_friction : dem.rolling_friction;
+  const double mu_r = dem.rolling_friction;
+  return {
+      {{cx, cy, -0.5 * t}, {hx, hy, 0.5 * t}, floor_mu_r},
+      {{x0 - 0.5 * t, cy, hz}, {0.5 * t, hy, hz}, mu_r},
+      {{x1 + 0.5 * t, cy, hz}, {0.5 * t, hy, hz}, mu_r},
+      {{cx, y0 - 0.5 * t, hz}, {hx, 0.5 * t, hz}, mu_r},
+      {{cx, y1 + 0.5 * t, hz}, {hx, 0.5 * t, hz}, mu_r},
+  };
+}
+
+RigidWorldSpec world_of(const RigidInputs& in, GrainSet grains, double z_top_m) {
+  RigidWorldSpec w;
+  w.grains = std::move(grains);
+  w.density_kg_m3 = in.dem.density_kg_m3;
+  w.gravity_m_s2 = in.dem.gravity_m_s2;
+  w.law = contact_law(in.dem);
+  w.walls = ground_box(in.dem, in.grid, z_top_m);
+  w.bounds = {in.grid.origin_x_m, in.grid.origin_x_m + in.grid.extent_x_m(), in.grid.origin_y_m,
+              in.grid.origin_y_m + in.grid.extent_y_m(), z_top_m};
+  return w;
+}
+
+double grains_top_m(const GrainSet& grains) {
+  double top = 0.0;
+  for (Eigen::Index g = 0; g < grains.size(); ++g) top = std::max(top, grains.position_m(g, 2) + grains.radius_m(g));
+  return top;
+}
+
+}  // namespace
+
+RigidInputs rigid_inputs(const Scene& scene) {
+  if (!scene.dem) throw InputError(fmt::format("{}: the rigid references need a dem section", scene.source_path));
+  if (scene.dem->initial != DemSpec::Initial::kBed) {
+    throw InputError(fmt::format("{}: dem.initial: the Bullet and ODE references support 'bed' only (not 'column' yet)",
+                                 scene.source_path));
+  }
+  return {*scene.dem, scene.ground.grid, scene.objects, scene.time, scene.seed};
+}
+
+long rigid_grain_count(const DemSpec& dem, const Grid& grid, const RigidOptions& options) {
+  const double volume = grid.extent_x_m() * grid.extent_y_m() * dem.bed_depth_m * options.packing_fraction;
+  return std::lround(volume / mean_grain_volume_m3(dem));
+}
+
+GrainSet grain_lattice(const DemSpec& dem, const Grid& grid, const RigidOptions& options, std::uint64_t seed) {
+  const double r_max = largest_radius_m(dem);
+  const double spacing = 2.0 * r_max * (1.0 + options.lattice_gap_fraction);
+  const double jitter = 0.9 * options.lattice_gap_fraction * r_max;  // below half the gap: no overlaps
+  const int nx = static_cast<int>(std::floor((grid.extent_x_m() - 2.0 * r_max) / spacing)) + 1;
+  const int ny = static_cast<int>(std::floor((grid.extent_y_m() - 2.0 * r_max) / spacing)) + 1;
+  if (grid.extent_x_m() < 2.0 * r_max || grid.extent_y_m() < 2.0 * r_max) {
+    throw InputError(fmt::format("ground: the grid ({} x {} m) is narrower than one grain ({} m across)",
+                                 grid.extent_x_m(), grid.extent_y_m(), 2.0 * r_max));
+  }
+  const double x_first = grid.origin_x_m + 0.5 * (grid.extent_x_m() - (nx - 1) * spacing);
+  const double y_first = grid.origin_y_m + 0.5 * (grid.extent_y_m() - (ny - 1) * spacing);
+  const std::vector<double> radii = grain_radii_m(dem);
+  const long count = rigid_grain_count(dem, grid, options);
+  std::mt19937_64 rng(seed);
+  GrainSet grains;
+  grains.position_m.resize(count, 3);
+  grains.radius_m.resize(count);
+  for (long g = 0; g < count; ++g) {
+    const long layer = g / (static_cast<long>(nx) * ny), in_layer = g % (static_cast<long>(nx) * ny);
+    const Eigen::Vector3d lattice(x_first + static_cast<double>(in_layer % nx) * spacing,
+                                  y_first + static_cast<double>(in_layer / nx) * spacing,
+                                  r_max + jitter + static_cast<double>(layer) * spacing);
+    grains.radius_m(g) = radii[rng() % radii.size()];
+    for (int a = 0; a < 3; ++a) grains.position_m(g, a) = lattice[a] + jitter * (2.0 * unit_draw(rng) - 1.0);
+  }
+  return grains;
+}
+
+RigidWorldSpec settling_world(const RigidInputs& in, const RigidOptions& options) {
+  GrainSet grains = grain_lattice(in.dem, in.grid, options, in.seed);
+  const double top = grains_top_m(grains) + 4.0 * largest_radius_m(in.dem);
+  return world_of(in, std::move(grains), top);
+}
+
+RigidWorldSpec run_world(const RigidInputs& in, const GrainSet& settled) {
+  double top = grains_top_m(settled);
+  for (const ObjectSpec& o : in.objects) top = std::max(top, object_top_m(o));
+  RigidWorldSpec w = world_of(in, settled, top + 4.0 * largest_radius_m(in.dem));
+  w.objects = in.objects;
+  return w;
+}
+
+}  // namespace repose
