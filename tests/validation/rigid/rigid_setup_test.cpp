@@ -1,0 +1,111 @@
+#include "validation/rigid/rigid_setup.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "models/core/base/error.h"
+#include "validation/liggghts/liggghts_script.h"
+
+namespace repose {
+namespace {
+
+RigidInputs bed(std::uint64_t seed) {
+  RigidInputs in;
+  in.grid = Grid{10, 8, 0.004, -0.01, 0.02};
+  in.dem.bed_depth_m = 0.012;
+  in.seed = seed;
+  return in;
+}
+
+TEST(RigidSetup, TheLatticeHoldsTheLiggghtsBedsGrainCountWithoutOverlapsInsideTheBox) {
+  const RigidInputs in = bed(1);
+  const RigidOptions options;
+  const RigidWorldSpec w = settling_world(in, options);
+  const GrainSet& g = w.grains;
+  const double volume = in.grid.extent_x_m() * in.grid.extent_y_m() * in.dem.bed_depth_m * options.packing_fraction;
+  EXPECT_EQ(g.size(), std::lround(volume / mean_grain_volume_m3(in.dem)));
+  for (Eigen::Index a = 0; a < g.size(); ++a) {
+    const auto p = g.position_m.row(a);
+    const double r = g.radius_m(a);
+    EXPECT_GE(p.x() - r, w.bounds.x_min_m);
+    EXPECT_LE(p.x() + r, w.bounds.x_max_m);
+    EXPECT_GE(p.y() - r, w.bounds.y_min_m);
+    EXPECT_LE(p.y() + r, w.bounds.y_max_m);
+    EXPECT_GE(p.z() - r, 0.0);
+    EXPECT_LE(p.z() + r, w.bounds.z_top_m);
+    for (Eigen::Index b = a + 1; b < g.size(); ++b) {
+      ASSERT_GT((g.position_m.row(b) - p).norm(), r + g.radius_m(b)) << "grains " << a << " and " << b;
+    }
+  }
+}
+
+TEST(RigidSetup, RadiiAreDrawnFromTheLiggghtsDistributionAndTheSeedDecides) {
+  const RigidOptions options;
+  const GrainSet a = grain_lattice(bed(1).dem, bed(1).grid, options, 1);
+  const GrainSet b = grain_lattice(bed(1).dem, bed(1).grid, options, 1);
+  const GrainSet c = grain_lattice(bed(1).dem, bed(1).grid, options, 2);
+  EXPECT_EQ(a.position_m, b.position_m);
+  EXPECT_EQ(a.radius_m, b.radius_m);
+  EXPECT_NE(a.radius_m, c.radius_m);
+  const std::vector<double> radii = grain_radii_m(bed(1).dem);
+  std::set<double> seen(a.radius_m.begin(), a.radius_m.end());
+  EXPECT_EQ(seen, std::set<double>(radii.begin(), radii.end()));
+}
+
+TEST(RigidSetup, TheGroundBoxIsAFloorAtZeroAndFourWallsOnTheGridsEdges) {
+  const RigidInputs in = bed(1);
+  const RigidWorldSpec w = settling_world(in, RigidOptions{});
+  ASSERT_EQ(w.walls.size(), 5u);
+  const StaticBox& floor = w.walls[0];
+  EXPECT_DOUBLE_EQ(floor.centre_m.z() + floor.half_extents_m.z(), 0.0);
+  EXPECT_DOUBLE_EQ(w.walls[1].centre_m.x() + w.walls[1].half_extents_m.x(), in.grid.origin_x_m);
+  EXPECT_DOUBLE_EQ(w.walls[2].centre_m.x() - w.walls[2].half_extents_m.x(), in.grid.origin_x_m + in.grid.extent_x_m());
+  EXPECT_DOUBLE_EQ(w.walls[3].centre_m.y() + w.walls[3].half_extents_m.y(), in.grid.origin_y_m);
+  EXPECT_DOUBLE_EQ(w.walls[4].centre_m.y() - w.walls[4].half_extents_m.y(), in.grid.origin_y_m + in.grid.extent_y_m());
+}
+
+TEST(RigidSetup, ARoughFloorTakesItsOwnRollingFriction) {
+  RigidInputs in = bed(1);
+  in.dem.floor = DemSpec::Floor::kRough;
+  in.dem.floor_rolling_friction = 0.7;
+  const RigidWorldSpec w = settling_world(in, RigidOptions{});
+  EXPECT_DOUBLE_EQ(w.walls[0].rolling_friction, 0.7);
+  EXPECT_DOUBLE_EQ(w.walls[1].rolling_friction, in.dem.rolling_friction);
+}
+
+TEST(RigidSetup, TheRunsBoxReachesAboveTheHighestObject) {
+  RigidInputs in = bed(1);
+  ObjectSpec o;
+  o.name = "high";
+  o.body = make_sphere(0.01);
+  Keyframe k;
+  k.pose.position_m = {0.0, 0.03, 0.2};
+  o.keyframes = {k};
+  in.objects = {o};
+  const RigidWorldSpec w = run_world(in, grain_lattice(in.dem, in.grid, RigidOptions{}, 1));
+  EXPECT_GE(w.bounds.z_top_m, 0.21);
+  EXPECT_EQ(w.objects.size(), 1u);
+}
+
+TEST(RigidSetup, AGridNarrowerThanAGrainIsRefused) {
+  RigidInputs in = bed(1);
+  in.grid = Grid{1, 1, 0.003, 0.0, 0.0};
+  EXPECT_THROW(grain_lattice(in.dem, in.grid, RigidOptions{}, 1), InputError);
+}
+
+TEST(RigidSetup, AColumnSceneIsRefusedNamingTheKey) {
+  Scene s;
+  s.dem = DemSpec{};
+  s.dem->initial = DemSpec::Initial::kColumn;
+  try {
+    rigid_inputs(s);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("dem.initial"), std::string::npos);
+  }
+  EXPECT_THROW(rigid_inputs(Scene{}), InputError);
+}
+
+}  // namespace
+}  // namespace repose
