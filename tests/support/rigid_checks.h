@@ -112,7 +112,7 @@ inline void expect_bed_settles(const RigidEngine& engine) {
   const RigidInputs in = tiny_bed(7);
   const RigidBed bed = settled_rigid_bed(engine, in, cache.path.string());
   EXPECT_FALSE(bed.from_cache);
-  EXPECT_EQ(bed.grains.size(), rigid_grain_count(in.dem, in.grid, engine.rigid));
+  EXPECT_EQ(bed.grains.size(), rigid_grain_count(in, engine.rigid));
   EXPECT_GT(bed.grains.size(), 50);
   EXPECT_TRUE(lost_grains(bed.grains, settling_world(in, engine.rigid).bounds).empty());
   EXPECT_TRUE(bed.settle.settled);

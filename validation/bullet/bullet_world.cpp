@@ -119,7 +119,8 @@ BulletWorld::BulletWorld(const RigidWorldSpec& spec, const BulletOptions& option
   for (const StaticBox& wall : spec.walls) {
     btCollisionShape* box = own(new btBoxShape(bt(wall.half_extents_m)));
     box->setMargin(options.shape_margin_fraction * grain_radius_m_);
-    add_body(box, 0.0, btTransform(btQuaternion::getIdentity(), bt(wall.centre_m)), spec.law, wall.rolling_friction);
+    add_body(box, 0.0, btTransform(btQuaternion(btVector3(0, 0, 1), wall.yaw_rad), bt(wall.centre_m)), spec.law,
+             wall.rolling_friction);
   }
   for (const ObjectSpec& object : spec.objects) {
     auto& state = motion_states_.emplace_back(new btDefaultMotionState(bt(object.pose_at(0.0))));

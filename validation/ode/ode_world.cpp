@@ -108,6 +108,9 @@ OdeWorld::OdeWorld(const RigidWorldSpec& spec, const OdeOptions& options) : opti
     const Eigen::Vector3d size = 2.0 * wall.half_extents_m;
     dGeomID geom = dCreateBox(space_, size.x(), size.y(), size.z());
     dGeomSetPosition(geom, wall.centre_m.x(), wall.centre_m.y(), wall.centre_m.z());
+    dMatrix3 turn;
+    dRFromAxisAndAngle(turn, 0, 0, 1, wall.yaw_rad);
+    dGeomSetRotation(geom, turn);
     attach(geom, {false, 0.0, wall.rolling_friction});
   }
   for (const ObjectSpec& object : spec.objects) {

@@ -11,14 +11,20 @@
 //   height_initial.npy, height_final.npy, material_per_area_final.npy,
 //   grains_initial.npy, grains_final.npy (#G by 4: x y z r), and
 //   ENGINE_manifest.json (engine, version, options, grain count, steps,
-//   particle-steps per CPU second, wall and CPU times, mass_held_kg).
+//   particle-steps per CPU second, wall and CPU times, mass_held_kg, and
+//   for a column scene its runout and pile flank angles, as LIGGGHTS writes them);
+//   a column scene also writes runout.csv (the front every dem.dump_interval_s)
+//   and, for a cylinder, pile_flank_angles.csv.
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "models/core/geometry/height_field.h"
+#include "validation/particles/column_collapse.h"
 #include "validation/particles/grain_set.h"
+#include "validation/particles/particle_observables.h"
 #include "validation/particles/surface_height.h"
 #include "validation/rigid/rigid_bed_cache.h"
 #include "validation/rigid/rigid_engine.h"
@@ -29,6 +35,8 @@ namespace repose {
 struct RigidReferenceOptions {
   std::string cache_dir;  // empty: default_cache_dir() (liggghts_bed.h)
   SurfaceHeightOptions surface;
+  ColumnCollapseOptions column;
+  FlankAngleOptions flank;
 };
 
 struct RigidReferenceResult {
@@ -46,6 +54,8 @@ struct RigidReferenceResult {
   // Per object (scene order): its name and the mass (kg) of the grains it
   // holds at the end (mass_held_by_object_kg), the object at pose_at(duration).
   std::vector<std::pair<std::string, double>> mass_held_kg;
+  std::optional<ColumnCollapse> column;  // a column scene: its runout
+  std::optional<FlankAngles> pile;       // a cylinder column: the final pile's flank angles
 };
 
 // Throws InputError for options that break their rules and

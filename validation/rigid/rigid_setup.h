@@ -11,10 +11,12 @@
 // objects (as for LIGGGHTS), which join for the run.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "models/core/config/scene.h"
 #include "models/core/geometry/grid.h"
+#include "validation/particles/column_geometry.h"
 #include "validation/particles/grain_set.h"
 #include "validation/rigid/rigid_options.h"
 #include "validation/rigid/rigid_world.h"
@@ -29,22 +31,26 @@ struct RigidInputs {
   std::vector<ObjectSpec> objects;
   TimeSpec time;
   std::uint64_t seed = 0;
+  std::optional<ColumnGeometry> column;  // dem.initial: column
 };
 
-// Throws InputError for a scene without a dem section, or whose grains
-// start as a column (not supported by the rigid references yet).
+// Throws InputError for a scene without a dem section, or a column that
+// does not fit the grid (column_geometry.h).
 RigidInputs rigid_inputs(const Scene& scene);
 
-// Grains that fill the grid area up to dem.bed_depth_m at packing_fraction
-// (the LIGGGHTS bed's count).
-long rigid_grain_count(const DemSpec& dem, const Grid& grid, const RigidOptions& options);
+// Grains that fill the grid area up to dem.bed_depth_m (a column: its
+// footprint up to column_height_m) at packing_fraction (the LIGGGHTS bed's count).
+long rigid_grain_count(const RigidInputs& in, const RigidOptions& options);
 
-// The grains before settling: a loose lattice over the grid, from the floor
-// up, radii drawn from grain_radii_m(dem) (liggghts_script.h). Throws
-// InputError when the grid is narrower than one grain.
-GrainSet grain_lattice(const DemSpec& dem, const Grid& grid, const RigidOptions& options, std::uint64_t seed);
+// The grains before settling: a loose lattice over the grid (a column: over
+// its footprint, inside the gate), from the floor up, radii drawn from
+// grain_radii_m(dem) (liggghts_script.h). Throws InputError when the region
+// is narrower than one grain.
+GrainSet grain_lattice(const RigidInputs& in, const RigidOptions& options);
 
-// The world to settle: the lattice in the ground box, no objects.
+// The world to settle: the lattice in the ground box (a column: behind its
+// gate, a wall at x = gate_x_m for a slot, a ring of 32 boxes around a
+// cylinder, removed at t = 0 as in LIGGGHTS), no objects.
 RigidWorldSpec settling_world(const RigidInputs& in, const RigidOptions& options);
 // The world of the run: settled grains, the ground box (high enough for
 // the objects), the objects kinematic.

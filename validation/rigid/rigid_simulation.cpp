@@ -3,6 +3,7 @@
 #include <time.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -54,17 +55,20 @@ RigidPhaseSummary settle(RigidWorld& world, double threshold_j, double check_int
   return s;
 }
 
-RigidPhaseSummary run_motion(RigidWorld& world, const std::vector<ObjectSpec>& objects, double duration_s) {
+RigidPhaseSummary run_motion(RigidWorld& world, const std::vector<ObjectSpec>& objects, double duration_s,
+                             double frame_interval_s, std::vector<RigidFrame>* frames) {
   const PhaseClock clock;
   RigidPhaseSummary s;
   const double dt = world.time_step_s();
   const long steps = std::lround(std::ceil(duration_s / dt - 1e-9));
+  const long steps_per_frame = frame_interval_s > 0.0 ? std::max(1L, std::lround(frame_interval_s / dt)) : steps;
   std::vector<Pose> poses(objects.size());
   for (; s.steps < steps; ++s.steps) {
     const double t_end = static_cast<double>(s.steps + 1) * dt;
     for (std::size_t k = 0; k < objects.size(); ++k) poses[k] = objects[k].pose_at(t_end);
     world.set_object_poses(poses);
     world.step();
+    if (frames && ((s.steps + 1) % steps_per_frame == 0 || s.steps + 1 == steps)) frames->push_back({t_end, world.grains()});
   }
   s.simulated_s = static_cast<double>(s.steps) * dt;
   s.kinetic_energy_j = world.kinetic_energy_j();

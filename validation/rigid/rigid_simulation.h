@@ -26,9 +26,16 @@ struct RigidPhaseSummary {
 // threshold_j, or max_time_s has passed (settled = false then).
 RigidPhaseSummary settle(RigidWorld& world, double threshold_j, double check_interval_s, double max_time_s);
 
+struct RigidFrame {
+  double time_s = 0.0;
+  GrainSet grains;
+};
+
 // Steps ceil(duration_s / time step) times; before each step the objects
-// are placed at ObjectSpec::pose_at(end of that step).
-RigidPhaseSummary run_motion(RigidWorld& world, const std::vector<ObjectSpec>& objects, double duration_s);
+// are placed at ObjectSpec::pose_at(end of that step). With frames, the
+// grains are recorded every frame_interval_s (to the nearest step) and at the end.
+RigidPhaseSummary run_motion(RigidWorld& world, const std::vector<ObjectSpec>& objects, double duration_s,
+                             double frame_interval_s = 0.0, std::vector<RigidFrame>* frames = nullptr);
 
 // The grains that left the ground box (centre beyond a side wall or below
 // the floor by more than its radius) or are not finite; empty when none.

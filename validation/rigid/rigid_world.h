@@ -36,11 +36,12 @@ struct RigidContactLaw {
   double rolling_friction = 0.1;  // mu_r (dimensionless)
 };
 
-// A static box of the ground box. The floor's top face is z = 0.
+// A static box of the ground box (or of a column's gate). The floor's top face is z = 0.
 struct StaticBox {
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d half_extents_m = Eigen::Vector3d::Zero();
   double rolling_friction = 0.1;  // mu_r against grains
+  double yaw_rad = 0.0;           // turned about the vertical axis through its centre
 };
 
 // The inside of the ground box: grains outside it are lost.

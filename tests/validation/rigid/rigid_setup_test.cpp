@@ -25,6 +25,7 @@ TEST(RigidSetup, TheLatticeHoldsTheLiggghtsBedsGrainCountWithoutOverlapsInsideTh
   const GrainSet& g = w.grains;
   const double volume = in.grid.extent_x_m() * in.grid.extent_y_m() * in.dem.bed_depth_m * options.packing_fraction;
   EXPECT_EQ(g.size(), std::lround(volume / mean_grain_volume_m3(in.dem)));
+  EXPECT_EQ(g.size(), rigid_grain_count(in, options));
   for (Eigen::Index a = 0; a < g.size(); ++a) {
     const auto p = g.position_m.row(a);
     const double r = g.radius_m(a);
@@ -42,9 +43,9 @@ TEST(RigidSetup, TheLatticeHoldsTheLiggghtsBedsGrainCountWithoutOverlapsInsideTh
 
 TEST(RigidSetup, RadiiAreDrawnFromTheLiggghtsDistributionAndTheSeedDecides) {
   const RigidOptions options;
-  const GrainSet a = grain_lattice(bed(1).dem, bed(1).grid, options, 1);
-  const GrainSet b = grain_lattice(bed(1).dem, bed(1).grid, options, 1);
-  const GrainSet c = grain_lattice(bed(1).dem, bed(1).grid, options, 2);
+  const GrainSet a = grain_lattice(bed(1), options);
+  const GrainSet b = grain_lattice(bed(1), options);
+  const GrainSet c = grain_lattice(bed(2), options);
   EXPECT_EQ(a.position_m, b.position_m);
   EXPECT_EQ(a.radius_m, b.radius_m);
   EXPECT_NE(a.radius_m, c.radius_m);
@@ -83,7 +84,7 @@ TEST(RigidSetup, TheRunsBoxReachesAboveTheHighestObject) {
   k.pose.position_m = {0.0, 0.03, 0.2};
   o.keyframes = {k};
   in.objects = {o};
-  const RigidWorldSpec w = run_world(in, grain_lattice(in.dem, in.grid, RigidOptions{}, 1));
+  const RigidWorldSpec w = run_world(in, grain_lattice(in, RigidOptions{}));
   EXPECT_GE(w.bounds.z_top_m, 0.21);
   EXPECT_EQ(w.objects.size(), 1u);
 }
@@ -91,19 +92,47 @@ TEST(RigidSetup, TheRunsBoxReachesAboveTheHighestObject) {
 TEST(RigidSetup, AGridNarrowerThanAGrainIsRefused) {
   RigidInputs in = bed(1);
   in.grid = Grid{1, 1, 0.003, 0.0, 0.0};
-  EXPECT_THROW(grain_lattice(in.dem, in.grid, RigidOptions{}, 1), InputError);
+  EXPECT_THROW(grain_lattice(in, RigidOptions{}), InputError);
 }
 
-TEST(RigidSetup, AColumnSceneIsRefusedNamingTheKey) {
+Scene column_scene(DemSpec::ColumnShape shape) {
   Scene s;
+  s.ground.grid = Grid{25, 20, 0.004, 0.0, 0.0};
   s.dem = DemSpec{};
   s.dem->initial = DemSpec::Initial::kColumn;
-  try {
-    rigid_inputs(s);
-    FAIL();
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("dem.initial"), std::string::npos);
+  s.dem->column_shape = shape;
+  s.dem->column_width_m = 0.03;
+  s.dem->column_height_m = 0.02;
+  return s;
+}
+
+TEST(RigidSetup, AColumnIsLaidOutBehindItsGateWithTheLiggghtsCount) {
+  for (auto shape : {DemSpec::ColumnShape::kSlot, DemSpec::ColumnShape::kCylinder}) {
+    const RigidInputs in = rigid_inputs(column_scene(shape));
+    ASSERT_TRUE(in.column.has_value());
+    const RigidOptions options;
+    const RigidWorldSpec w = settling_world(in, options);
+    const double volume = in.column->footprint_m2 * in.dem.column_height_m * options.packing_fraction;
+    EXPECT_EQ(w.grains.size(), std::lround(volume / mean_grain_volume_m3(in.dem)));
+    for (Eigen::Index g = 0; g < w.grains.size(); ++g) {
+      const Eigen::Vector2d xy(w.grains.position_m(g, 0), w.grains.position_m(g, 1));
+      const double r = w.grains.radius_m(g);
+      if (shape == DemSpec::ColumnShape::kSlot) {
+        EXPECT_LE(xy.x() + r, in.column->gate_x_m);
+      } else {
+        EXPECT_LE((xy - in.column->axis_xy_m).norm() + r, in.column->width_m * std::cos(M_PI / 32));
+      }
+    }
+    // the gate is there while settling, gone in the run
+    EXPECT_GT(w.walls.size(), 5u);
+    EXPECT_EQ(run_world(in, w.grains).walls.size(), 5u);
   }
+}
+
+TEST(RigidSetup, AColumnThatDoesNotFitTheGridIsRefused) {
+  Scene s = column_scene(DemSpec::ColumnShape::kSlot);
+  s.dem->column_width_m = 0.2;
+  EXPECT_THROW(rigid_inputs(s), InputError);
   EXPECT_THROW(rigid_inputs(Scene{}), InputError);
 }
 
