@@ -7,6 +7,7 @@ find_package(yaml-cpp REQUIRED)
 find_package(fmt REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(PNG REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
 find_package(Ceres REQUIRED)
 # CMake's own FindBullet: Debian's BulletConfig.cmake is broken (relative paths).
 find_package(Bullet REQUIRED MODULE)

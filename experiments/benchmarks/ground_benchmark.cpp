@@ -42,7 +42,7 @@ class DragRun {
   explicit DragRun(const DragCase& c) {
     Scene scene;
     scene.ground.grid = Grid{c.grid_cells, c.grid_cells, kCell, -0.5 * c.grid_cells * kCell, -0.5 * c.grid_cells * kCell};
-    material_preset("sand", &scene.ground.material);
+    scene.ground.material = "sand";
     ObjectSpec ball;
     ball.name = "ball";
     ball.radius_m = c.radius_m;
@@ -60,10 +60,10 @@ class DragRun {
     scene.objects = {ball};
     scene.time.step_s = 1.0;
     scene.time.duration_s = steps_;
-    scene.ground_model.sweep = c.sweep;
-    scene.ground_model.substeps = c.substeps;
-    scene.ground_model.coarse_factor = c.coarse_factor;
-    scene.ground_model.collision = c.collision;
+    scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.sweep = c.sweep; });
+    scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.substeps = c.substeps; });
+    scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.coarse_factor = c.coarse_factor; });
+    scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.collision = c.collision; });
     model_ = build_ground_model(scene);
     params_ = default_params(model_);
     renderer_ = c.collision == GroundModelSpec::Collision::kCpu ? make_cpu_underside_renderer()

@@ -12,6 +12,8 @@
 #include "experiments/cli/commands.h"
 #include "experiments/runner/manifest.h"
 #include "experiments/runner/progress_printer.h"
+#include "experiments/solvers/solver_registry.h"
+#include "models/core/run/repository_path.h"
 #include "models/core/run/build_info.h"
 #include "models/core/run/output_directory.h"
 #include "validation/calibration/calibration_figures.h"
@@ -42,11 +44,13 @@ void calibrate(const CalibrateOptions& options, int argc, char** argv) {
   // the calibration is loaded before anything is written: a bad file writes nothing
   CalibrationSpec spec;
   manifest.time_stage("load_calibration", [&] { spec = load_calibration(options.calibration_path); });
-  OutputDirectory out = OutputDirectory::open(options.out_dir, options.force);
   ProgressPrinter progress;
-
+  // every scene, reference and parameter is checked before the folder is made
   std::unique_ptr<CalibrationProblem> problem;
-  manifest.time_stage("references", [&] { problem = std::make_unique<CalibrationProblem>(spec, progress.callback()); });
+  manifest.time_stage("references", [&] {
+    problem = std::make_unique<CalibrationProblem>(spec, solver_registry(), progress.callback());
+  });
+  OutputDirectory out = OutputDirectory::open(options.out_dir, options.force);
   CalibrationFit fit;
   manifest.time_stage("fit", [&] { fit = fit_calibration(*problem, progress.callback()); });
   std::optional<Ladder> ladder;
@@ -58,7 +62,7 @@ void calibrate(const CalibrateOptions& options, int argc, char** argv) {
   const auto path = [&](const std::string& name) { return out.path(name); };
   std::vector<std::string> files;
   manifest.time_stage("write_results", [&] {
-    for (const auto& group : {write_calibration_json(outputs, path), write_calibrated_materials(outputs, path),
+    for (const auto& group : {write_calibration_json(outputs, path), write_calibrated_parameters(outputs, path),
                               write_calibration_figure_data(outputs, path)}) {
       files.insert(files.end(), group.begin(), group.end());
     }
@@ -73,13 +77,12 @@ void calibrate(const CalibrateOptions& options, int argc, char** argv) {
   files.insert(files.end(), figures.names.begin(), figures.names.end());
   files.push_back("report.md");
   for (const std::string& f : files) manifest.add_file(f);
-  manifest.set_results([&](JsonWriter& json) {
-    json.key("calibration").string(problem->spec().source_path);
-    json.key("initial_cost").number(fit.initial_cost);
-    json.key("final_cost").number(fit.final_cost);
-    json.key("seed").unsigned_integer(problem->spec().solver.seed);
-    json.key("heuristic_runs").integer(fit.heuristic_runs);
-  });
+  manifest.set_results({{"calibration", repository_relative(problem->spec().source_path)},
+                        {"solver", problem->spec().fitted_solver},
+                        {"initial_cost", fit.initial_cost},
+                        {"final_cost", fit.final_cost},
+                        {"seed", problem->spec().solver.seed},
+                        {"heuristic_runs", fit.heuristic_runs}});
   manifest.add_file("manifest.json");
   manifest.write(out.path("manifest.json"));
   out.commit();
@@ -90,7 +93,7 @@ void calibrate(const CalibrateOptions& options, int argc, char** argv) {
 
 void add_calibrate_command(CLI::App& app, int argc, char** argv) {
   CLI::App* command = app.add_subcommand(
-      "calibrate", "Fit the ground model's parameters to reference runs and write a calibration folder (report.md first)");
+      "calibrate", "Fit a solver's parameters to reference runs and write a calibration folder (report.md first)");
   auto options = std::make_shared<CalibrateOptions>();
   command->add_option("calibration", options->calibration_path, "Calibration file (YAML)")->required();
   command->add_option("--out,-o", options->out_dir, "Folder to write (refused if not empty, unless --force)")->required();

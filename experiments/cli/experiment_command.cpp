@@ -5,7 +5,7 @@
 #include <string>
 
 #include "experiments/cli/commands.h"
-#include "experiments/cli/solvers.h"
+#include "experiments/solvers/solver_registry.h"
 #include "experiments/runner/experiment.h"
 #include "experiments/runner/run_experiment.h"
 
@@ -20,12 +20,12 @@ struct ExperimentCommandOptions {
 
 void run(const ExperimentCommandOptions& options, int argc, char** argv) {
   // The whole experiment (every scene, every override) is checked before anything runs.
-  const Experiment experiment = load_experiment(options.experiment_path, solver_names());
+  const Experiment experiment = load_experiment(options.experiment_path, solver_registry());
   ExperimentOptions run_options;
   run_options.out_dir = options.out_dir;
   run_options.force = options.force;
   run_options.command_line.assign(argv, argv + argc);
-  const ExperimentOutcome outcome = run_experiment(experiment, run_options);
+  const ExperimentOutcome outcome = run_experiment(experiment, solver_registry(), run_options);
   std::printf("wrote %s\n", outcome.folder.c_str());
 }
 

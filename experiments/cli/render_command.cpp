@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "experiments/cli/commands.h"
+#include "experiments/solvers/solver_registry.h"
 #include "experiments/figures/render_height.h"
 #include "models/core/base/error.h"
 #include "models/core/config/initial_height.h"
@@ -123,7 +124,7 @@ void render(const RenderOptions& options) {
     if (options.cell_size_m != 0.0) {
       throw InputError("--cell-size-m: only for .npy inputs; a scene gives its own cell size");
     }
-    const Scene scene = load_scene(options.input_path);
+    const Scene scene = load_scene(options.input_path, solver_registry().sections());
     render_height_png(options.image_path, make_initial_height(scene), &scene, 0.0, overrides);
   } else {
     throw InputError(

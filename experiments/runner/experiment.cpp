@@ -22,7 +22,7 @@ const std::vector<std::string> kRunKeys = {"name", "scene", "solver", "overrides
 struct Context {
   std::string file;
   fs::path directory;
-  const std::vector<std::string>& solvers;
+  const SolverRegistry& registry;
 };
 
 // A run name becomes a folder name: letters, digits, '_', '.', '-', not starting with '.'.
@@ -61,8 +61,9 @@ std::string read_scene_path(const Context& ctx, const YamlValue& value) {
 
 std::string read_solver(const Context& ctx, const YamlMap& map) {
   const auto value = map.get("solver");
-  if (!value) return ctx.solvers.front();
-  return ctx.solvers[value->choice(ctx.solvers)];
+  const std::vector<std::string> names = ctx.registry.names();
+  if (!value) return names.front();
+  return names[value->choice(names)];
 }
 
 // An override with where it came from, for messages.
@@ -92,21 +93,36 @@ std::vector<SceneOverride> plain_overrides(const std::vector<LocatedOverride>& o
 // Loads the run's scene with its overrides; an error names the experiment
 // file (at the override to blame, or at the scene key), the override and the scene.
 Scene load_run_scene(const std::string& scene_path, const std::vector<LocatedOverride>& overrides,
-                     const YamlValue& scene_value) {
+                     const YamlValue& scene_value, const SectionTypes& sections) {
   const std::vector<SceneOverride> plain = plain_overrides(overrides);
   try {
-    return load_scene_with_overrides(scene_path, plain);
+    return load_scene_with_overrides(scene_path, plain, sections);
   } catch (const InputError&) {
     // Only on failure: the first prefix of the overrides that fails names the override to blame.
     for (std::size_t k = 0; k <= plain.size(); ++k) {
       try {
-        load_scene_with_overrides(scene_path, {plain.begin(), plain.begin() + static_cast<std::ptrdiff_t>(k)});
+        load_scene_with_overrides(scene_path, {plain.begin(), plain.begin() + static_cast<std::ptrdiff_t>(k)},
+                                  sections);
       } catch (const InputError& e) {
         if (k == 0) scene_value.fail("a scene that loads", e.what());
         overrides[k - 1].source.fail(fmt::format("an override that scene {} accepts", scene_path), e.what());
       }
     }
     throw;
+  }
+}
+
+// The run's solver must be able to run its scene (its sections present, the
+// scene compiles), so that a bad experiment fails before anything runs.
+void check_solver_runs(const Context& ctx, const ExperimentRun& run, const YamlMap& map) {
+  const Solver& solver = ctx.registry.get(run.solver);
+  std::string why;
+  const YamlValue at = map.get("solver") ? *map.get("solver") : map.self();
+  if (!solver.can_run(run.scene, &why)) at.fail(fmt::format("a solver that can run {}", run.scene_path), why);
+  try {
+    solver.compile(run.scene);
+  } catch (const InputError& e) {
+    at.fail(fmt::format("a solver that can run {}", run.scene_path), e.what());
   }
 }
 
@@ -119,7 +135,8 @@ ExperimentRun read_run(const Context& ctx, const YamlValue& value) {
   run.solver = read_solver(ctx, map);
   const auto overrides = read_overrides(ctx, map);
   run.overrides = plain_overrides(overrides);
-  run.scene = load_run_scene(run.scene_path, overrides, scene_value);
+  run.scene = load_run_scene(run.scene_path, overrides, scene_value, ctx.registry.sections());
+  check_solver_runs(ctx, run, map);
   return run;
 }
 
@@ -146,7 +163,8 @@ std::vector<ExperimentRun> read_sweep(const Context& ctx, const YamlValue& value
     auto located = overrides;
     located.push_back({{key, v.node()}, v});
     run.overrides = plain_overrides(located);
-    run.scene = load_run_scene(scene_path, located, scene_value);
+    run.scene = load_run_scene(scene_path, located, scene_value, ctx.registry.sections());
+    check_solver_runs(ctx, run, map);
     runs.push_back(std::move(run));
   }
   return runs;
@@ -196,13 +214,13 @@ Experiment read_experiment(const Context& ctx, const YamlValue& root) {
 }  // namespace
 
 Experiment load_experiment_from_string(const std::string& yaml, const std::string& pretend_path,
-                                       const std::vector<std::string>& solvers) {
-  REPOSE_DEMAND(!solvers.empty());
-  const Context ctx{pretend_path, fs::absolute(fs::path(pretend_path)).parent_path().lexically_normal(), solvers};
+                                       const SolverRegistry& registry) {
+  REPOSE_DEMAND(!registry.solvers().empty());
+  const Context ctx{pretend_path, fs::absolute(fs::path(pretend_path)).parent_path().lexically_normal(), registry};
   return read_experiment(ctx, parse_yaml(yaml, pretend_path));
 }
 
-Experiment load_experiment(const std::string& path, const std::vector<std::string>& solvers) {
+Experiment load_experiment(const std::string& path, const SolverRegistry& registry) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path + ": no such experiment file");
   if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not an experiment file");
@@ -210,7 +228,7 @@ Experiment load_experiment(const std::string& path, const std::vector<std::strin
   if (!in) throw InputError(path + ": cannot be read");
   std::ostringstream text;
   text << in.rdbuf();
-  return load_experiment_from_string(text.str(), path, solvers);
+  return load_experiment_from_string(text.str(), path, registry);
 }
 
 std::string experiment_to_yaml(const Experiment& e) {

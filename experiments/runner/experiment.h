@@ -8,7 +8,7 @@
 //   runs:
 //     - name: no_sweep                 # a folder name: letters, digits, _ . -
 //       scene: scenes/ground_drag_sweep.yaml
-//       solver: ground                 # ground | liggghts | initial (default ground)
+//       solver: ground                 # a solver of the registry (default: its first, ground)
 //       overrides: {ground_model.sweep: false}   # optional scene keys, see scene_override.h
 //   sweeps:                            # optional: one run template, one key, several values
 //     - name: cell                     # runs cell_0.004, cell_0.008, ...
@@ -30,6 +30,7 @@
 
 #include "experiments/runner/scene_override.h"
 #include "models/core/config/scene.h"
+#include "models/core/solver/solver_registry.h"
 
 namespace repose {
 
@@ -51,10 +52,11 @@ struct Experiment {
   std::string plot_path;    // resolved, empty when none
 };
 
-// `solvers` are the solver names a run may name (the first is the default).
-Experiment load_experiment(const std::string& path, const std::vector<std::string>& solvers);
+// Runs may name the registry's solvers (the first is the default); every
+// run's scene loads with the registry's sections and its solver can run it.
+Experiment load_experiment(const std::string& path, const SolverRegistry& registry);
 Experiment load_experiment_from_string(const std::string& yaml, const std::string& pretend_path,
-                                       const std::vector<std::string>& solvers);
+                                       const SolverRegistry& registry);
 
 // The resolved experiment (absolute paths, sweeps expanded) as YAML, for the
 // experiment manifest.

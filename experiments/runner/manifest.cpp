@@ -1,18 +1,20 @@
 #include "experiments/runner/manifest.h"
 
 #include <ctime>
+#include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
-#include "models/core/io/json_writer.h"
-#include "models/core/config/scene_loader.h"
 #include "models/core/base/sha256.h"
+#include "models/core/config/scene_loader.h"
+#include "models/core/run/repository_path.h"
 
 namespace repose::cli {
 namespace {
+
+namespace fs = std::filesystem;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -29,17 +31,11 @@ std::string utc_now_iso8601() {
   return text;
 }
 
-void write_build_json(JsonWriter& json, const BuildInfo& build) {
-  json.begin_object();
-  json.key("repose_version").string(REPOSE_VERSION);
-  json.key("git_commit").string(build.git_commit);
-  json.key("git_dirty").boolean(build.git_dirty);
-  json.key("compiler").string(build.compiler);
-  json.key("build_type").string(build.build_type);
-  json.key("libraries").begin_object();
-  for (const auto& library : build.libraries) json.key(library.name).string(library.version);
-  json.end_object();
-  json.end_object();
+nlohmann::json build_json(const BuildInfo& build) {
+  nlohmann::json libraries = nlohmann::json::object();
+  for (const auto& library : build.libraries) libraries[library.name] = library.version;
+  return {{"repose_version", REPOSE_VERSION}, {"git_commit", build.git_commit}, {"git_dirty", build.git_dirty},
+          {"compiler", build.compiler},       {"build_type", build.build_type}, {"libraries", libraries}};
 }
 
 Manifest::Manifest(int argc, char** argv) : Manifest(std::vector<std::string>(argv, argv + argc)) {}
@@ -47,25 +43,15 @@ Manifest::Manifest(int argc, char** argv) : Manifest(std::vector<std::string>(ar
 Manifest::Manifest(std::vector<std::string> command_line)
     : command_line_(std::move(command_line)),
       start_time_utc_(utc_now_iso8601()),
-      start_(std::chrono::steady_clock::now()) {
-  build_ = build_info();
-}
-
-std::string Manifest::results_json() const {
-  std::ostringstream text;
-  JsonWriter json(text);
-  json.begin_object();
-  if (results_) results_(json);
-  json.end_object();
-  return text.str();
-}
+      start_(std::chrono::steady_clock::now()),
+      build_(build_info()) {}
 
 void Manifest::set_scene(const Scene& scene) {
-  scene_path_ = scene.source_path;
-  scene_sha256_ = sha256_hex_of_file(scene.source_path);
-  scene_name_ = scene.name;
-  scene_yaml_ = scene_to_yaml(scene);
-  seed_ = scene.seed;
+  scene_ = {{"path", repository_relative(scene.source_path)},
+            {"sha256", sha256_hex_of_file(scene.source_path)},
+            {"name", scene.name},
+            {"seed", scene.seed},
+            {"resolved_yaml", scene_to_yaml(scene)}};
 }
 
 void Manifest::time_stage(const std::string& name, const std::function<void()>& stage) {
@@ -74,46 +60,36 @@ void Manifest::time_stage(const std::string& name, const std::function<void()>& 
   stages_.push_back({name, seconds_since(start)});
 }
 
+void Manifest::set_run(const Run& run) {
+  stages_built_ = run.stages;
+  results_ = results_json(run);
+  run_ = run;
+}
+
 void Manifest::write(const std::string& path) const {
+  const fs::path folder = fs::path(path).parent_path();
+  nlohmann::json stages = nlohmann::json::array();
+  for (const auto& stage : stages_) stages.push_back({{"name", stage.name}, {"wall_s", stage.wall_s}});
+  nlohmann::json files = nlohmann::json::array();
+  for (const auto& name : files_) {
+    if (name == fs::path(path).filename() || fs::exists(folder / name)) files.push_back(name);
+  }
+  const nlohmann::json json = {{"format", "repose-run-manifest"},
+                               {"format_version", 2},
+                               {"start_time_utc", start_time_utc_},
+                               {"command_line", command_line_},
+                               {"solver", solver_},
+                               {"scene", scene_},
+                               {"build", build_json(build_)},
+                               {"stages", stages},
+                               {"stages_built", stages_built_},
+                               {"results", results_},
+                               {"run", run_},
+                               {"total_wall_s", seconds_since(start_)},
+                               {"files", files}};
   std::ofstream file(path, std::ios::binary);
   if (!file) throw std::runtime_error(fmt::format("{}: cannot write the manifest", path));
-  JsonWriter json(file);
-  json.begin_object();
-  json.key("format").string("repose-run-manifest");
-  json.key("format_version").integer(1);
-  json.key("start_time_utc").string(start_time_utc_);
-  json.key("command_line").begin_array();
-  for (const auto& argument : command_line_) json.string(argument);
-  json.end_array();
-  json.key("solver").string(solver_);
-
-  json.key("scene").begin_object();
-  json.key("path").string(scene_path_);
-  json.key("sha256").string(scene_sha256_);
-  json.key("name").string(scene_name_);
-  json.key("seed").unsigned_integer(seed_);
-  json.key("resolved_yaml").string(scene_yaml_);
-  json.end_object();
-
-  json.key("build");
-  write_build_json(json, build_);
-
-  json.key("stages").begin_array();
-  for (const auto& stage : stages_) {
-    json.begin_object().key("name").string(stage.name).key("wall_s").number(stage.wall_s).end_object();
-  }
-  json.end_array();
-  json.key("stages_built").begin_array();
-  for (const auto& name : stages_built_) json.string(name);
-  json.end_array();
-  json.key("results").begin_object();
-  if (results_) results_(json);
-  json.end_object();
-  json.key("total_wall_s").number(seconds_since(start_));
-  json.key("files").begin_array();
-  for (const auto& name : files_) json.string(name);
-  json.end_array();
-  json.end_object();
+  file << json.dump(2) << "\n";
   file.close();
   if (!file) throw std::runtime_error(fmt::format("{}: writing the manifest failed", path));
 }

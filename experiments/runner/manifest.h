@@ -1,15 +1,18 @@
 #pragma once
 // The manifest of a run folder (manifest.json): what was run, from what, with
 // what, and how long each stage took, so a result can be traced and redone.
+// Paths inside the repository are recorded relative to it.
 
 #include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "models/core/run/build_info.h"
-#include "models/core/io/json_writer.h"
+#include <nlohmann/json.hpp>
+
 #include "models/core/config/scene.h"
+#include "models/core/run/build_info.h"
+#include "models/core/solver/run.h"
 
 namespace repose::cli {
 
@@ -22,7 +25,7 @@ struct StageTime {
 std::string utc_now_iso8601();
 
 // The build as a JSON object: repose version, git commit, compiler, library versions.
-void write_build_json(JsonWriter& json, const BuildInfo& build);
+nlohmann::json build_json(const BuildInfo& build);
 
 class Manifest {
  public:
@@ -37,32 +40,28 @@ class Manifest {
   void time_stage(const std::string& name, const std::function<void()>& stage);
   // A file of the run folder, by its name inside the folder.
   void add_file(const std::string& name) { files_.push_back(name); }
-  // The modules the scene built (e.g. "collision:cpu", "sweep", "erosion").
-  void set_stages_built(std::vector<std::string> names) { stages_built_ = std::move(names); }
-  // The solver's own results, written as the members of a "results" object.
-  void set_results(std::function<void(JsonWriter&)> write_members) { results_ = std::move(write_members); }
+  // The solver's run: its modules built, its results (measures as nested
+  // objects, details) and the run itself (measures with units, timings).
+  void set_run(const Run& run);
+  // Results of a command that is not one solver run (calibrate).
+  void set_results(nlohmann::json results) { results_ = std::move(results); }
+  const nlohmann::json& results() const { return results_; }
 
-  // The results as a JSON object ("{}" when the solver set none), for
-  // experiment summaries.
-  std::string results_json() const;
-
-  // Writes the manifest as JSON (with the build information and the total wall time).
+  // Writes the manifest as JSON (with the build information and the total
+  // wall time). Only files that exist in the manifest's folder are listed.
   void write(const std::string& path) const;
 
  private:
   std::vector<std::string> command_line_;
   std::string start_time_utc_;
   std::chrono::steady_clock::time_point start_;
-  std::string scene_path_;
-  std::string scene_sha256_;
-  std::string scene_name_;
-  std::string scene_yaml_;
-  std::uint64_t seed_ = 0;
+  nlohmann::json scene_ = nlohmann::json::object();
   std::string solver_;
   std::vector<StageTime> stages_;
   std::vector<std::string> files_;
   std::vector<std::string> stages_built_;
-  std::function<void(JsonWriter&)> results_;
+  nlohmann::json results_ = nlohmann::json::object();
+  nlohmann::json run_ = nlohmann::json::object();
   BuildInfo build_;
 };
 

@@ -13,14 +13,14 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
+#include <nlohmann/json.hpp>
 
 #include "experiments/runner/manifest.h"
 #include "experiments/runner/progress_printer.h"
 #include "experiments/runner/run_scene.h"
 #include "models/core/run/build_info.h"
 #include "models/core/base/error.h"
-#include "models/core/io/json_writer.h"
+#include "models/core/run/repository_path.h"
 #include "models/core/run/output_directory.h"
 #include "models/core/base/sha256.h"
 
@@ -48,18 +48,18 @@ void log_line(const ExperimentOptions& options, const std::string& line) {
 }
 
 // One repeat of one run into DIR/RUN_NAME (committed only when `keep`);
-// returns the wall time and the solver's results as JSON.
-std::pair<double, std::string> run_once(const Experiment& experiment, const ExperimentRun& run,
-                                        const ExperimentOptions& options, OutputDirectory& out, bool keep) {
+// returns the wall time and the solver's run.
+std::pair<double, Run> run_once(const Experiment& experiment, const ExperimentRun& run, const Solver& solver,
+                                const ExperimentOptions& options, OutputDirectory& out, bool keep) {
   const auto start = Clock::now();
   try {
     OutputDirectory run_out = OutputDirectory::open(out.path(run.name), true);
     cli::Manifest manifest(options.command_line);
     cli::ProgressPrinter printer;
     const ProgressFn quiet = [](double, std::string_view) {};
-    cli::run_scene(run.scene, run.solver, run_out, manifest, options.solver_progress ? printer.callback() : quiet);
+    Run result = cli::run_scene(run.scene, solver, run_out, manifest, options.solver_progress ? printer.callback() : quiet);
     if (keep) run_out.commit();
-    return {seconds_since(start), manifest.results_json()};
+    return {seconds_since(start), std::move(result)};
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: run '{}' failed: {}", experiment.source_path, run.name, e.what()));
   } catch (const std::exception& e) {
@@ -67,8 +67,8 @@ std::pair<double, std::string> run_once(const Experiment& experiment, const Expe
   }
 }
 
-ExperimentRunOutcome run_repeated(const Experiment& experiment, std::size_t index, const ExperimentOptions& options,
-                                  OutputDirectory& out) {
+ExperimentRunOutcome run_repeated(const Experiment& experiment, std::size_t index, const SolverRegistry& registry,
+                                  const ExperimentOptions& options, OutputDirectory& out) {
   const ExperimentRun& run = experiment.runs[index];
   ExperimentRunOutcome outcome{run.name, run.solver, {}, 0.0, {}};
   std::vector<std::vector<double>> measure_values(experiment.measures.size());
@@ -78,10 +78,11 @@ ExperimentRunOutcome run_repeated(const Experiment& experiment, std::size_t inde
                                   experiment.repeat > 1 ? fmt::format(", repeat {}/{}", r + 1, experiment.repeat)
                                                         : std::string()));
     const bool last = r + 1 == experiment.repeat;
-    const auto [wall_s, results] = run_once(experiment, run, options, out, last);
+    const auto [wall_s, result] = run_once(experiment, run, registry.get(run.solver), options, out, last);
     outcome.wall_s.push_back(wall_s);
     for (std::size_t m = 0; m < experiment.measures.size(); ++m) {
-      if (auto value = json_number_at(results, experiment.measures[m])) measure_values[m].push_back(*value);
+      const auto it = result.measures.find(experiment.measures[m]);
+      if (it != result.measures.end() && std::isfinite(it->second.value)) measure_values[m].push_back(it->second.value);
     }
   }
   outcome.wall_s_median = median(outcome.wall_s);
@@ -98,7 +99,7 @@ void check_measures_found(const Experiment& experiment, const std::vector<Experi
   for (std::size_t m = 0; m < experiment.measures.size(); ++m) {
     const bool found = std::any_of(runs.begin(), runs.end(), [&](const auto& r) { return r.measures[m].has_value(); });
     if (!found) {
-      throw InputError(fmt::format("{}: measures: '{}' is a number in no run's results (see results in a run's "
+      throw InputError(fmt::format("{}: measures: '{}' is a measure of no run (see run.measures in a run's "
                                    "manifest.json)",
                                    experiment.source_path, experiment.measures[m]));
     }
@@ -172,95 +173,58 @@ struct ManifestInputs {
   std::vector<std::string> files;
 };
 
+nlohmann::json run_json(const ExperimentRun& run, const ExperimentRunOutcome& outcome, const Experiment& experiment) {
+  nlohmann::json measures = nlohmann::json::object();
+  for (std::size_t m = 0; m < experiment.measures.size(); ++m) {
+    measures[experiment.measures[m]] = outcome.measures[m] ? nlohmann::json(*outcome.measures[m]) : nlohmann::json();
+  }
+  return {{"name", run.name},
+          {"solver", run.solver},
+          {"scene", repository_relative(run.scene_path)},
+          {"scene_sha256", sha256_hex_of_file(run.scene_path)},
+          {"seed", run.scene.seed},
+          {"wall_s", outcome.wall_s},
+          {"wall_s_median", outcome.wall_s_median},
+          {"measures", measures}};
+}
+
 void write_experiment_manifest(const std::string& path, const Experiment& experiment, const ExperimentOptions& options,
                                const std::vector<ExperimentRunOutcome>& runs, const ManifestInputs& inputs) {
-  const BuildInfo build = build_info();
+  nlohmann::json run_list = nlohmann::json::array();
+  for (std::size_t k = 0; k < runs.size(); ++k) run_list.push_back(run_json(experiment.runs[k], runs[k], experiment));
+  const nlohmann::json json = {
+      {"format", "repose-experiment-manifest"},
+      {"format_version", 2},
+      {"start_time_utc", inputs.start_time_utc},
+      {"command_line", options.command_line},
+      {"experiment",
+       {{"path", repository_relative(experiment.source_path)},
+        {"sha256", sha256_hex_of_file(experiment.source_path)},
+        {"name", experiment.name},
+        {"description", experiment.description},
+        {"repeat", experiment.repeat},
+        {"resolved_yaml", experiment_to_yaml(experiment)}}},
+      {"build", cli::build_json(build_info())},
+      {"runs", run_list},
+      {"total_wall_s", seconds_since(inputs.start)},
+      {"files", inputs.files}};
   std::ofstream file(path, std::ios::binary);
-  JsonWriter json(file);
-  json.begin_object();
-  json.key("format").string("repose-experiment-manifest");
-  json.key("format_version").integer(1);
-  json.key("start_time_utc").string(inputs.start_time_utc);
-  json.key("command_line").begin_array();
-  for (const auto& argument : options.command_line) json.string(argument);
-  json.end_array();
-  json.key("experiment").begin_object();
-  json.key("path").string(experiment.source_path);
-  json.key("sha256").string(sha256_hex_of_file(experiment.source_path));
-  json.key("name").string(experiment.name);
-  json.key("description").string(experiment.description);
-  json.key("repeat").integer(experiment.repeat);
-  json.key("resolved_yaml").string(experiment_to_yaml(experiment));
-  json.end_object();
-  json.key("build");
-  cli::write_build_json(json, build);
-  json.key("runs").begin_array();
-  for (std::size_t k = 0; k < runs.size(); ++k) {
-    const ExperimentRun& run = experiment.runs[k];
-    json.begin_object();
-    json.key("name").string(run.name);
-    json.key("solver").string(run.solver);
-    json.key("scene").string(run.scene_path);
-    json.key("scene_sha256").string(sha256_hex_of_file(run.scene_path));
-    json.key("seed").unsigned_integer(run.scene.seed);
-    json.key("wall_s").begin_array();
-    for (double t : runs[k].wall_s) json.number(t);
-    json.end_array();
-    json.key("wall_s_median").number(runs[k].wall_s_median);
-    json.key("measures").begin_object();
-    for (std::size_t m = 0; m < experiment.measures.size(); ++m) {
-      json.key(experiment.measures[m]);
-      if (runs[k].measures[m]) json.number(*runs[k].measures[m]); else json.null();
-    }
-    json.end_object();
-    json.end_object();
-  }
-  json.end_array();
-  json.key("total_wall_s").number(seconds_since(inputs.start));
-  json.key("files").begin_array();
-  for (const auto& name : inputs.files) json.string(name);
-  json.end_array();
-  json.end_object();
+  file << json.dump(2) << "\n";
   file.close();
   if (!file) throw std::runtime_error(path + ": writing the experiment manifest failed");
 }
 
 }  // namespace
 
-std::optional<double> json_number_at(const std::string& json_object, const std::string& dotted_key) {
-  // JSON is YAML (flow style), so yaml-cpp reads it.
-  YAML::Node node;
-  try {
-    node = YAML::Load(json_object);
-  } catch (const YAML::Exception&) {
-    return std::nullopt;
-  }
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t dot = dotted_key.find('.', start);
-    const std::string key = dotted_key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (!node.IsMap() || !node[key]) return std::nullopt;
-    node.reset(node[key]);
-    if (dot == std::string::npos) break;
-    start = dot + 1;
-  }
-  if (!node.IsScalar()) return std::nullopt;
-  try {
-    const double value = node.as<double>();
-    return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
-  } catch (const YAML::Exception&) {
-    return std::nullopt;
-  }
-}
-
-ExperimentOutcome run_experiment(const Experiment& experiment, const ExperimentOptions& options) {
+ExperimentOutcome run_experiment(const Experiment& experiment, const SolverRegistry& registry,
+                                 const ExperimentOptions& options) {
   ManifestInputs inputs{cli::utc_now_iso8601(), Clock::now(), {}};
   OutputDirectory out = OutputDirectory::open(options.out_dir, options.force);
   log_line(options, fmt::format("experiment {}: {} run(s){}", experiment.name, experiment.runs.size(),
                                 experiment.repeat > 1 ? fmt::format(", each {} times", experiment.repeat) : ""));
   ExperimentOutcome outcome;
   for (std::size_t k = 0; k < experiment.runs.size(); ++k) {
-    outcome.runs.push_back(run_repeated(experiment, k, options, out));
+    outcome.runs.push_back(run_repeated(experiment, k, registry, options, out));
   }
   check_measures_found(experiment, outcome.runs);
   write_summary_csv(out.path("summary.csv"), experiment, outcome.runs);

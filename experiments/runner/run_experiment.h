@@ -3,7 +3,8 @@
 //
 //   DIR/RUN_NAME/      the run folder of each run, as `repose run` writes it
 //   DIR/summary.csv    one row per run: name, solver, wall_s (median over
-//                      repeats), then each measure (median over repeats)
+//                      repeats), then each measure of the runs (Run::measures,
+//                      median over repeats)
 //   DIR/manifest.json  the experiment file's SHA-256, the resolved experiment,
 //                      the build (git commit, library versions), per-run
 //                      scenes, seeds and wall times, and the file list
@@ -43,10 +44,8 @@ struct ExperimentOutcome {
   std::vector<ExperimentRunOutcome> runs;
 };
 
-ExperimentOutcome run_experiment(const Experiment& experiment, const ExperimentOptions& options);
+ExperimentOutcome run_experiment(const Experiment& experiment, const SolverRegistry& registry,
+                                 const ExperimentOptions& options);
 
-// The number at a dotted key ("volume.imbalance_m3") of a JSON object's text;
-// nothing when absent, null or not a number.
-std::optional<double> json_number_at(const std::string& json_object, const std::string& dotted_key);
 
 }  // namespace repose

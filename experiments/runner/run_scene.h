@@ -1,21 +1,19 @@
 #pragma once
 // One scene run into a run folder, shared by `repose run` and the experiment
-// runner: the initial state (height_initial.npy/.png), the solver's results,
-// and manifest.json. The caller opens and commits the folder.
-
-#include <string>
+// runner: the solver compiled and run with the scene's own parameter values,
+// every field it produced written as NAME.npy (and height fields as
+// NAME.png), and manifest.json last. The caller opens and commits the folder.
 
 #include "experiments/runner/manifest.h"
-#include "models/core/run/output_directory.h"
 #include "models/core/base/progress.h"
 #include "models/core/config/scene.h"
+#include "models/core/run/output_directory.h"
+#include "models/core/solver/solver.h"
 
 namespace repose::cli {
 
-// Runs `solver` (a name from solvers()) on `scene` and writes everything into
-// `out`, manifest.json last. The manifest gets the scene, the solver and the
-// stage times; its results are the solver's.
-void run_scene(const Scene& scene, const std::string& solver, OutputDirectory& out, Manifest& manifest,
-               const ProgressFn& progress);
+// The manifest gets the scene, the solver, the stage times and the run.
+Run run_scene(const Scene& scene, const Solver& solver, OutputDirectory& out, Manifest& manifest,
+              const ProgressFn& progress);
 
 }  // namespace repose::cli

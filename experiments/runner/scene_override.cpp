@@ -106,7 +106,8 @@ void apply_scene_override(YAML::Node& root, const SceneOverride& override_) {
   }
 }
 
-Scene load_scene_with_overrides(const std::string& scene_path, const std::vector<SceneOverride>& overrides) {
+Scene load_scene_with_overrides(const std::string& scene_path, const std::vector<SceneOverride>& overrides,
+                                const SectionTypes& sections) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(scene_path, ec)) throw InputError(scene_path + ": no such scene file");
   std::ifstream in(scene_path, std::ios::binary);
@@ -115,7 +116,7 @@ Scene load_scene_with_overrides(const std::string& scene_path, const std::vector
   text << in.rdbuf();
   YAML::Node root = parse_yaml(text.str(), scene_path).node();
   for (const SceneOverride& o : overrides) apply_scene_override(root, o);
-  return load_scene_from_node(root, scene_path);
+  return load_scene_from_node(root, scene_path, sections);
 }
 
 }  // namespace repose

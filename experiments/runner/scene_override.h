@@ -16,6 +16,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "models/core/config/scene.h"
+#include "models/core/config/scene_section.h"
 
 namespace repose {
 
@@ -31,6 +32,7 @@ void apply_scene_override(YAML::Node& root, const SceneOverride& override_);
 
 // Reads the scene file, applies the overrides in order and loads it strictly.
 // Errors are the scene loader's (naming the scene file) or apply_scene_override's.
-Scene load_scene_with_overrides(const std::string& scene_path, const std::vector<SceneOverride>& overrides);
+Scene load_scene_with_overrides(const std::string& scene_path, const std::vector<SceneOverride>& overrides,
+                                const SectionTypes& sections);
 
 }  // namespace repose

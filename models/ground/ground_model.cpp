@@ -6,24 +6,11 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/ground/ground_section.h"
 
 namespace repose {
 
 namespace {
-
-void validate_options(const GroundModelSpec& o) {
-  if (o.substeps < 1) throw InputError(fmt::format("ground_model.substeps = {}: must be >= 1", o.substeps));
-  if (o.coarse_factor < 1) {
-    throw InputError(fmt::format("ground_model.coarse_factor = {}: must be >= 1", o.coarse_factor));
-  }
-  if (o.erosion_memory_steps < 0 || o.erosion_memory_steps > 65000) {
-    throw InputError(
-        fmt::format("ground_model.erosion_memory_steps = {}: must be in [0, 65000]", o.erosion_memory_steps));
-  }
-  if (!(o.max_substep_angle_rad > 0.0)) {
-    throw InputError(fmt::format("ground_model.max_substep_angle_rad = {}: must be > 0", o.max_substep_angle_rad));
-  }
-}
 
 // Cell index range [first, last] whose centres lie in [lo, hi] along one axis.
 void centre_range(double lo, double hi, double origin, double h, int n, int* first, int* last) {
@@ -34,7 +21,7 @@ void centre_range(double lo, double hi, double origin, double h, int n, int* fir
 }  // namespace
 
 GroundModel make_plain_ground_model(const Grid& grid, const Material& material, const GroundModelSpec& options) {
-  validate_options(options);
+  validate(options);
   GroundModel model;
   model.grid = grid;
   model.materials = {material};
@@ -45,15 +32,14 @@ GroundModel make_plain_ground_model(const Grid& grid, const Material& material, 
 
 GroundModel build_ground_model(const Scene& scene) {
   const GroundSpec& ground = scene.ground;
-  if (ground.regions.size() > 254) {
-    throw InputError(fmt::format("{}: ground.regions: {} regions, at most 254 are supported", scene.source_path,
-                                 ground.regions.size()));
-  }
-  GroundModel model = make_plain_ground_model(ground.grid, ground.material, scene.ground_model);
+  // material_index is 8-bit: the ground's material and at most 254 regions
+  REPOSE_DEMAND(ground.regions.size() <= 254 && "the ground model's section reader refuses more");
+  const GroundModelSection& section = ground_model_section(scene);
+  GroundModel model = make_plain_ground_model(ground.grid, section.material(ground.material), section.options);
   const Grid& g = model.grid;
   for (std::size_t r = 0; r < ground.regions.size(); ++r) {
     const MaterialRegion& region = ground.regions[r];
-    model.materials.push_back(region.material);
+    model.materials.push_back(section.material(region.material));
     int i0, i1, j0, j1;
     centre_range(region.x_min_m, region.x_max_m, g.origin_x_m, g.cell_size_m, g.nx, &i0, &i1);
     centre_range(region.y_min_m, region.y_max_m, g.origin_y_m, g.cell_size_m, g.ny, &j0, &j1);

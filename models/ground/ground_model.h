@@ -9,7 +9,8 @@
 #include <vector>
 
 #include "models/core/geometry/grid.h"
-#include "models/core/config/material.h"
+#include "models/ground/ground_section.h"
+#include "models/ground/material.h"
 #include "models/core/config/scene.h"
 #include "models/ground/swept_mesh.h"
 
@@ -33,9 +34,9 @@ struct GroundModel {
   int material_at(std::int64_t cell_index) const { return material_index[static_cast<std::size_t>(cell_index)]; }
 };
 
-// Throws InputError for options the model cannot run (more than 254
-// regions, substeps < 1, coarse_factor < 1, erosion_memory_steps outside
-// [0, 65000], max_substep_angle_rad <= 0).
+// The scene's ground-model section gives the options and the materials
+// (ground_section.h; its reader has checked them). Throws FieldError for
+// options changed in code that break validate(GroundModelSpec).
 GroundModel build_ground_model(const Scene& scene);
 
 // A model of a grid alone (no objects), all cells of one material: for

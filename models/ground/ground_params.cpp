@@ -6,21 +6,12 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/config/fields.h"
 #include "models/ground/ground_model.h"
 
 namespace repose {
 
 GroundParams default_params(const GroundModel& model) { return GroundParams{model.materials}; }
-
-namespace {
-
-void check(bool ok, std::size_t index, const Material& m, const char* field, double value, const char* rule) {
-  if (ok) return;
-  throw InputError(fmt::format("ground params: materials[{}] ({}): {} = {} is outside {}", index, m.name, field,
-                               value, rule));
-}
-
-}  // namespace
 
 void validate(const GroundParams& params, const GroundModel& model) {
   if (params.materials.size() != model.materials.size()) {
@@ -29,12 +20,11 @@ void validate(const GroundParams& params, const GroundModel& model) {
   }
   for (std::size_t k = 0; k < params.materials.size(); ++k) {
     const Material& m = params.materials[k];
-    check(m.alpha >= 0.0 && m.alpha <= 1.0, k, m, "alpha", m.alpha, "[0, 1]");
-    check(m.repose_angle_rad > 0.0 && m.repose_angle_rad <= std::numbers::pi / 2, k, m, "repose_angle_rad",
-          m.repose_angle_rad, "(0, pi/2]");
-    check(m.sigma > 0.0 && m.sigma <= kSigmaMax, k, m, "sigma", m.sigma,
-          "(0, 0.25] (erosion diverges above 1/4, see ground_params.h)");
-    check(m.erosion_iterations >= 1, k, m, "erosion_iterations", m.erosion_iterations, "[1, inf)");
+    try {
+      validate(m);  // the one rule the scene loader applies too
+    } catch (const FieldError& e) {
+      throw InputError(fmt::format("ground params: materials[{}] ({}): {}", k, m.name, e.what()));
+    }
   }
 }
 

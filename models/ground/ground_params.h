@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "models/core/config/material.h"
+#include "models/ground/material.h"
 
 namespace repose {
 
@@ -24,7 +24,7 @@ struct GroundModel;
 // ErosionStability.*). Below it any overshoot flips the pair's excess
 // negative, which stops the flux, so the scheme settles. The paper's 0.2
 // lies under the limit. Values above it are refused, not clamped (the
-// constant, kSigmaMax, is in models/core/config/material.h so the scene loader
+// constant, kSigmaMax, is in models/ground/material.h so the scene loader
 // refuses them too).
 
 struct GroundParams {

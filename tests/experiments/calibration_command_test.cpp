@@ -1,6 +1,6 @@
 // `repose calibrate` end to end on the synthetic calibration (fast): the run
 // folder holds calibration.json, a material.yaml that a scene accepts as its
-// ground.material, the report and figure data; a malformed file writes nothing.
+// parameters.yaml, the report and figure data; a malformed file writes nothing.
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -8,8 +8,10 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include "models/core/config/scene_loader.h"
+#include "experiments/solvers/solver_registry.h"
 
 namespace repose {
 namespace {
@@ -40,7 +42,7 @@ fs::path fresh_dir(const std::string& name) {
 TEST(CalibrationCommand, WritesTheRunFolder) {
   const fs::path out = fresh_dir("ok");
   ASSERT_EQ(run("calibrate " + kDir + "/synthetic.yaml --out " + out.string()), 0);
-  for (const char* name : {"calibration.json", "material.yaml", "report.md", "manifest.json",
+  for (const char* name : {"calibration.json", "parameters.yaml", "report.md", "manifest.json",
                            "data/calib_indent_reference.npy", "data/calib_indent_heuristic_fitted.npy"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
@@ -49,17 +51,12 @@ TEST(CalibrationCommand, WritesTheRunFolder) {
                           "\"rmse_initial_m\"", "\"rmse_fitted_m\"", "\"iterations\"", "\"termination\"", "\"wall_time_s\""}) {
     EXPECT_NE(json.find(key), std::string::npos) << key;
   }
-  // material.yaml is a ground.material map as it stands
-  std::string material;
-  std::istringstream lines(read(out / "material.yaml"));
-  for (std::string line; std::getline(lines, line);) material += "    " + line + "\n";
-  const Scene scene = load_scene_from_string(
-      "time: {step_s: 0.1, duration_s: 0.1}\n"
-      "ground:\n  extent_m: [0.1, 0.1]\n  cell_size_m: 0.01\n  initial_height: {kind: flat, height_m: 0.01}\n"
-      "  material:\n" + material,
-      (out / "scene.yaml").string());
-  EXPECT_NEAR(scene.ground.material.alpha, 0.7, 0.02);
-  EXPECT_NEAR(scene.ground.material.sigma, 0.15, 0.02);
+  // parameters.yaml: the fitted values by full name, in their units (the
+  // synthetic reference's are alpha 0.7, 35 deg, sigma 0.15)
+  const YAML::Node fitted = YAML::LoadFile((out / "parameters.yaml").string());
+  EXPECT_NEAR(fitted["ground.sand.alpha"].as<double>(), 0.7, 0.02);
+  EXPECT_NEAR(fitted["ground.sand.repose_angle_deg"].as<double>(), 35.0, 1.0);
+  EXPECT_NEAR(fitted["ground.sand.sigma"].as<double>(), 0.15, 0.02);
   fs::remove_all(out);
 }
 

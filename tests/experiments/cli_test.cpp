@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "models/core/config/initial_height.h"
+#include "experiments/solvers/solver_registry.h"
 #include "models/core/io/npy_io.h"
 #include "models/core/io/png_io.h"
 #include "models/core/config/scene_loader.h"
@@ -176,7 +177,7 @@ TEST(Cli, RunWritesManifestAndInitialHeights) {
   ASSERT_TRUE(fs::exists(out / "height_initial.npy"));
   EXPECT_TRUE(fs::exists(out / "height_initial.png"));
 
-  const Scene scene = load_scene(scene_path.string());
+  const Scene scene = load_scene(scene_path.string(), solver_registry().sections());
   const ArrayXXdR written = read_npy_2d((out / "height_initial.npy").string());
   const HeightField expected = make_initial_height(scene);
   ASSERT_EQ(written.rows(), expected.ny());
@@ -208,7 +209,8 @@ TEST(Cli, RunWritesManifestAndInitialHeights) {
   EXPECT_EQ(seed, "7");
   EXPECT_EQ(subcommand, "run");
   EXPECT_NE(stages.find("load_scene"), std::string::npos) << stages;
-  EXPECT_NE(stages.find("initial_height"), std::string::npos) << stages;
+  EXPECT_NE(stages.find("compile_ground"), std::string::npos) << stages;
+  EXPECT_NE(stages.find("write_height_initial_npy"), std::string::npos) << stages;
 }
 
 TEST(Cli, RunRefusesNonEmptyFolderUnlessForced) {

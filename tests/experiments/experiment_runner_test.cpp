@@ -17,7 +17,9 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "experiments/cli/solvers.h"
+#include "experiments/solvers/solver_registry.h"
+#include "models/ground/ground_section.h"
+#include "models/ground/ground_solver.h"
 #include "experiments/runner/experiment.h"
 #include "experiments/runner/run_experiment.h"
 #include "experiments/runner/scene_override.h"
@@ -80,7 +82,7 @@ struct ExperimentDir {
   }
 };
 
-Experiment load(const fs::path& path) { return load_experiment(path.string(), cli::solver_names()); }
+Experiment load(const fs::path& path) { return load_experiment(path.string(), solver_registry()); }
 
 // The InputError message of loading, or "" when it loads.
 std::string load_error(const fs::path& path) {
@@ -163,15 +165,16 @@ measures: [steps]
   ASSERT_EQ(e.runs.size(), 4u);
   EXPECT_EQ(e.runs[0].name, "plain");
   EXPECT_EQ(e.runs[0].solver, "ground");  // the default solver
-  EXPECT_TRUE(e.runs[0].scene.ground_model.sweep);
+  EXPECT_TRUE(ground_model_section(e.runs[0].scene).options.sweep);
   EXPECT_EQ(e.runs[1].solver, "initial");
-  EXPECT_FALSE(e.runs[1].scene.ground_model.sweep);
-  EXPECT_NE(e.runs[1].scene.ground.material.alpha, e.runs[0].scene.ground.material.alpha);  // mud, not sand
+  EXPECT_FALSE(ground_model_section(e.runs[1].scene).options.sweep);
+  EXPECT_EQ(e.runs[1].scene.ground.material, "mud");
+  EXPECT_EQ(e.runs[0].scene.ground.material, "sand");
   EXPECT_EQ(e.runs[2].name, "sub_2");
   EXPECT_EQ(e.runs[3].name, "sub_5");
-  EXPECT_EQ(e.runs[2].scene.ground_model.substeps, 2);
-  EXPECT_EQ(e.runs[3].scene.ground_model.substeps, 5);
-  EXPECT_FALSE(e.runs[3].scene.ground_model.sweep);
+  EXPECT_EQ(ground_model_section(e.runs[2].scene).options.substeps, 2);
+  EXPECT_EQ(ground_model_section(e.runs[3].scene).options.substeps, 5);
+  EXPECT_FALSE(ground_model_section(e.runs[3].scene).options.sweep);
   EXPECT_EQ(e.runs[0].scene_path, (setup.dir.path / "scenes" / "press.yaml").lexically_normal().string());
   // The resolved experiment names every run and its overrides.
   const std::string resolved = experiment_to_yaml(e);
@@ -248,17 +251,6 @@ TEST(ExperimentFile, RejectsBadNamesDuplicatesNoRunsAndUnknownSolvers) {
 
 // ---- running
 
-TEST(JsonNumberAt, FindsNestedNumbersAndNothingElse) {
-  const std::string json = R"({"steps": 5, "volume": {"final_m3": 1.5e-05, "name": "x", "bad": null}})";
-  EXPECT_EQ(json_number_at(json, "steps"), 5.0);
-  EXPECT_EQ(json_number_at(json, "volume.final_m3"), 1.5e-05);
-  EXPECT_FALSE(json_number_at(json, "volume.name"));
-  EXPECT_FALSE(json_number_at(json, "volume.bad"));
-  EXPECT_FALSE(json_number_at(json, "volume"));
-  EXPECT_FALSE(json_number_at(json, "volume.final_m3.x"));
-  EXPECT_FALSE(json_number_at(json, "nothing"));
-}
-
 TEST(RunExperiment, WritesEveryRunTheSummaryTheManifestAndTheFigures) {
   ExperimentDir setup(R"(name: small
 repeat: 2
@@ -282,7 +274,7 @@ open(os.path.join(folder, "figure.txt"), "w").write(str(len(rows) - 1))
 )");
   const fs::path out = setup.dir.path / "out";
   const Experiment e = load(setup.experiment);
-  const ExperimentOutcome outcome = run_experiment(e, quiet_options(out));
+  const ExperimentOutcome outcome = run_experiment(e, solver_registry(), quiet_options(out));
   EXPECT_EQ(fs::path(outcome.folder), out);
   ASSERT_EQ(outcome.runs.size(), 4u);
   for (const auto& run : outcome.runs) {
@@ -293,7 +285,8 @@ open(os.path.join(folder, "figure.txt"), "w").write(str(len(rows) - 1))
   for (const char* ground_run : {"press", "sub_1", "sub_3"}) {
     EXPECT_TRUE(fs::is_regular_file(out / ground_run / "height_final.npy")) << ground_run;
   }
-  EXPECT_FALSE(fs::exists(out / "start" / "height_final.npy"));  // the initial solver does not step
+  // the initial solver does not step: its final surface is its initial one
+  EXPECT_EQ(read_all(out / "start" / "height_final.npy"), read_all(out / "start" / "height_initial.npy"));
   // steps is a result of the ground solver only: 5 steps of 0.02 s.
   EXPECT_EQ(outcome.runs[0].measures[0], 5.0);
   EXPECT_FALSE(outcome.runs[1].measures[0].has_value());
@@ -331,17 +324,46 @@ open(os.path.join(folder, "figure.txt"), "w").write(str(len(rows) - 1))
   }
 }
 
-TEST(RunExperiment, AFailedRunFailsTheExperimentNamingItAndWritesNothing) {
+// A solver that compiles every scene and fails when it runs.
+class FailingSolver final : public Solver {
+ public:
+  std::string name() const override { return "failing"; }
+  std::string description() const override { return "fails when it runs (tests)"; }
+  std::unique_ptr<CompiledSolver> compile(const Scene&) const override {
+    class Compiled final : public CompiledSolver {
+     public:
+      const std::vector<ParameterInfo>& parameters() const override { return parameters_; }
+      Run run(const std::vector<double>&, const RunOptions&) const override { throw InputError("the run went wrong"); }
+
+     private:
+      std::vector<ParameterInfo> parameters_;
+    };
+    return std::make_unique<Compiled>();
+  }
+};
+
+TEST(ExperimentFile, ASolverThatCannotRunItsSceneIsRefusedWhenLoading) {
   // The liggghts solver needs the scene's dem section, which press.yaml lacks.
   ExperimentDir setup("runs:\n  - {name: fine, scene: scenes/press.yaml}\n  - {name: broken, scene: scenes/press.yaml, "
               "solver: liggghts}\n");
+  const std::string error = load_error(setup.experiment);
+  EXPECT_NE(error.find("runs[1].solver: expected a solver that can run"), std::string::npos) << error;
+  EXPECT_NE(error.find("no 'dem' section"), std::string::npos) << error;
+}
+
+TEST(RunExperiment, AFailedRunFailsTheExperimentNamingItAndWritesNothing) {
+  SolverRegistry registry;
+  registry.add(std::make_shared<GroundSolver>()).add(std::make_shared<FailingSolver>());
+  ExperimentDir setup("runs:\n  - {name: fine, scene: scenes/press.yaml}\n  - {name: broken, scene: scenes/press.yaml, "
+              "solver: failing}\n");
   const fs::path out = setup.dir.path / "out";
-  const Experiment e = load(setup.experiment);
+  const Experiment e = load_experiment(setup.experiment.string(), registry);
   try {
-    run_experiment(e, quiet_options(out));
+    run_experiment(e, registry, quiet_options(out));
     FAIL() << "the experiment should fail";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("run 'broken' failed"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("run 'broken' failed: the run went wrong"), std::string::npos)
+        << error.what();
   }
   EXPECT_FALSE(fs::exists(out));
   for (const auto& entry : fs::directory_iterator(setup.dir.path)) {
@@ -356,12 +378,12 @@ TEST(RunExperiment, AFailingPlotOrAnUnknownMeasureLeavesAnOldFolderAsItWas) {
   write(out / "old.txt", "old");
   ExperimentOptions options = quiet_options(out);
   options.force = true;
-  EXPECT_THROW(run_experiment(load(setup.experiment), options), std::runtime_error);
+  EXPECT_THROW(run_experiment(load(setup.experiment), solver_registry(), options), std::runtime_error);
   EXPECT_EQ(read_all(out / "old.txt"), "old");
 
   ExperimentDir measure("measures: [no_such_result]\nruns:\n  - {name: a, scene: scenes/press.yaml}\n");
   try {
-    run_experiment(load(measure.experiment), options);
+    run_experiment(load(measure.experiment), solver_registry(), options);
     FAIL() << "an unknown measure should fail";
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("no_such_result"), std::string::npos) << error.what();

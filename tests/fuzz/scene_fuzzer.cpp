@@ -12,6 +12,7 @@
 #include <string>
 
 #include "models/core/base/error.h"
+#include "experiments/solvers/solver_registry.h"
 #include "models/core/io/npy_io.h"
 #include "models/core/io/png_io.h"
 #include "models/core/config/scene_loader.h"
@@ -51,7 +52,7 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    (void)repose::load_scene_from_string(text, scene_dir() + "/scene.yaml");
+    (void)repose::load_scene_from_string(text, scene_dir() + "/scene.yaml", repose::solver_registry().sections());
   } catch (const repose::InputError&) {
   }
   return 0;

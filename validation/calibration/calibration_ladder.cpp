@@ -6,12 +6,13 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include "models/core/base/error.h"
 #include "models/core/io/npy_io.h"
 #include "models/core/config/scene_loader.h"
-#include "models/ground/simulate_ground.h"
+#include "models/ground/ground_section.h"
+#include "validation/calibration/reference_cost.h"
+#include "validation/particles/dem_section.h"
 #include "validation/observables/calibration_observables.h"
 
 namespace repose {
@@ -32,15 +33,6 @@ HeightField onto(const HeightField& field, const Grid& target) {
                                                         : resample_bilinear(field, target);
 }
 
-double manifest_number(const std::string& directory, const char* key) {
-  const std::string path = (fs::path(directory) / "liggghts_manifest.json").string();
-  try {
-    return YAML::LoadFile(path)[key].as<double>();
-  } catch (const YAML::Exception& e) {
-    throw InputError(fmt::format("{}: no number {} ({})", path, key, e.what()));
-  }
-}
-
 std::string millimetres(double m) { return fmt::format("{:.3g} mm", m * 1e3); }
 
 struct LiggghtsRun {
@@ -48,9 +40,11 @@ struct LiggghtsRun {
   HeightField final_height;
 };
 
-LiggghtsRun load_liggghts_rung(const LadderReference& ref) {
-  const Scene scene = load_scene(ref.scene_path);
-  if (!scene.dem) throw InputError(ref.scene_path + ": a ladder LIGGGHTS scene needs a dem section (its grain size)");
+LiggghtsRun load_liggghts_rung(const LadderReference& ref, const SectionTypes& sections) {
+  const Scene scene = load_scene(ref.scene_path, sections);
+  if (dem_of(scene) == nullptr) {
+    throw InputError(ref.scene_path + ": a ladder LIGGGHTS scene needs a dem section (its grain size)");
+  }
   const std::string path = (fs::path(ref.directory) / "height_final.npy").string();
   const ArrayXXdR a = read_npy_2d(path);
   const Grid& grid = scene.ground.grid;
@@ -61,10 +55,12 @@ LiggghtsRun load_liggghts_rung(const LadderReference& ref) {
   LiggghtsRun run;
   run.final_height = HeightField(grid, a);
   run.rung.kind = "liggghts";
-  run.rung.resolution_m = 2.0 * scene.dem->grain_radius_m;
+  run.rung.resolution_m = 2.0 * dem_of(scene)->grain_radius_m;
   run.rung.label = "LIGGGHTS d = " + millimetres(run.rung.resolution_m);
-  run.rung.wall_time_s = manifest_number(ref.directory, "wall_time_s");
-  run.rung.cpu_time_s = manifest_number(ref.directory, "cpu_time_s");
+  const auto cost = read_run_cost(ref.directory);
+  if (!cost) throw InputError(ref.directory + ": a ladder reference folder without its cost (liggghts_manifest.json)");
+  run.rung.wall_time_s = cost->wall_s;
+  run.rung.cpu_time_s = cost->cpu_s;
   return run;
 }
 
@@ -82,17 +78,30 @@ Grid regridded(const Grid& grid, double h, const std::string& source) {
   return g;
 }
 
-// The fastest of `repeats` runs, and the result.
-double timed_run(const GroundModel& model, const GroundParams& params, const HeightField& initial, int repeats,
-                 HeightField* result) {
+// The fastest of `repeats` runs of the calibrated solver on `scene` (its
+// parameters by name from the prepared scene's values), and the result.
+double timed_run(const CalibrationProblem& problem, const PreparedScene& prepared, const Scene& scene,
+                 const std::vector<double>& values, int repeats, HeightField* result) {
+  const auto solver = problem.solver().compile(scene);
+  std::vector<double> solver_values = solver->default_values();
+  const std::vector<double> prepared_values = problem.solver_values(prepared, values);
+  for (std::size_t k = 0; k < prepared_values.size(); ++k) {
+    solver_values[solver->parameter_index(prepared.solver->parameters()[k].name)] = prepared_values[k];
+  }
   double best = std::numeric_limits<double>::infinity();
   for (int r = 0; r < repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
-    GroundRun run = simulate_ground(model, params, initial);
+    Run run = solver->run(solver_values, RunOptions{});
     best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    *result = std::move(run.final_height);
+    *result = run.field("height_final");
   }
   return best;
+}
+
+Scene with_initial(Scene scene, const HeightField& initial) {
+  scene.ground.initial.kind = InitialHeight::Kind::kGiven;
+  scene.ground.initial.given = std::make_shared<const HeightField>(initial);
+  return scene;
 }
 
 }  // namespace
@@ -106,7 +115,7 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
   ladder.scene = s.entry.name;
 
   std::vector<LiggghtsRun> runs;
-  for (const LadderReference& ref : spec.liggghts) runs.push_back(load_liggghts_rung(ref));
+  for (const LadderReference& ref : spec.liggghts) runs.push_back(load_liggghts_rung(ref, problem.registry().sections()));
   std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.rung.resolution_m < b.rung.resolution_m; });
   Yardstick yard{"the scene's reference", s.reference_final};
   if (!runs.empty()) {
@@ -121,7 +130,6 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
   const double own = s.scene.ground.grid.cell_size_m;
   if (std::none_of(sizes.begin(), sizes.end(), [&](double h) { return std::abs(h - own) <= 1e-9 * own; })) sizes.push_back(own);
   std::sort(sizes.begin(), sizes.end(), std::greater<>());
-  const GroundParams params = problem.params_for(s, values);
   std::optional<double> own_time;
   std::size_t done = 0;
   const std::size_t total = sizes.size() + (spec.multires ? 1 : 0);
@@ -129,14 +137,13 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
     report(progress, static_cast<double>(done++) / total, "ladder: ground model at " + millimetres(h));
     Scene scene = s.scene;
     scene.ground.grid = regridded(s.scene.ground.grid, h, problem.spec().source_path);
-    const GroundModel model = build_ground_model(scene);
-    const HeightField initial = onto(s.initial, scene.ground.grid);
+    scene = with_initial(std::move(scene), onto(s.initial, scene.ground.grid));
     HeightField result;
     LadderRung rung;
-    rung.kind = "ground";
+    rung.kind = problem.solver().name();
     rung.resolution_m = h;
-    rung.label = "ground " + millimetres(h);
-    rung.wall_time_s = timed_run(model, params, initial, spec.timing_repeats, &result);
+    rung.label = problem.solver().name() + " " + millimetres(h);
+    rung.wall_time_s = timed_run(problem, s, scene, values, spec.timing_repeats, &result);
     rung.rmse_m = surface_rmse_m(onto(result, yard_grid), yard.final_height, region);
     if (std::abs(h - own) <= 1e-9 * own) own_time = rung.wall_time_s;
     ladder.rungs.push_back(rung);
@@ -145,14 +152,15 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
     report(progress, static_cast<double>(done++) / total, "ladder: multi-resolution ground model");
     Scene scene = s.scene;
     for (ObjectSpec& o : scene.objects) o.simple = true;
-    scene.ground_model.coarse_factor = spec.multires_coarse_factor;
-    const GroundModel model = build_ground_model(scene);
+    GroundModelSpec options = ground_model_section(scene).options;
+    options.coarse_factor = spec.multires_coarse_factor;
+    scene = with_ground_options(std::move(scene), options);
     HeightField result;
     LadderRung rung;
     rung.kind = "ground-multires";
     rung.resolution_m = own;
     rung.label = fmt::format("ground multires {} / {}", millimetres(own), millimetres(own * spec.multires_coarse_factor));
-    rung.wall_time_s = timed_run(model, params, s.initial, spec.timing_repeats, &result);
+    rung.wall_time_s = timed_run(problem, s, scene, values, spec.timing_repeats, &result);
     rung.rmse_m = surface_rmse_m(onto(result, yard_grid), yard.final_height, region);
     ladder.rungs.push_back(rung);
   }

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/config/fields.h"
 #include "models/core/config/yaml_reader.h"
 
 namespace repose {
@@ -18,7 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 const Range kCoordinate = Range::closed(-1.0e6, 1.0e6);
 
 struct Context {
@@ -40,48 +40,7 @@ std::string existing(const Context& ctx, const YamlValue& value, bool directory,
   return path;
 }
 
-// ---- one field list per options struct, driving the allowed keys and reading
-
-class FieldNames {
- public:
-  std::vector<std::string> names;
-  void number(const char* key, double&, const Range&) { names.emplace_back(key); }
-  void integer(const char* key, int&, const IntRange&) { names.emplace_back(key); }
-  void boolean(const char* key, bool&) { names.emplace_back(key); }
-  void seed(const char* key, std::uint64_t&) { names.emplace_back(key); }
-  template <class E>
-  void choice(const char* key, E&, const std::vector<std::pair<std::string, E>>&) {
-    names.emplace_back(key);
-  }
-};
-
-class FieldReader {
- public:
-  explicit FieldReader(const YamlMap& map) : map_(map) {}
-  void number(const char* key, double& x, const Range& r) {
-    if (auto v = map_.get(key)) x = v->number(r);
-  }
-  void integer(const char* key, int& x, const IntRange& r) {
-    if (auto v = map_.get(key)) x = static_cast<int>(v->integer(r));
-  }
-  void boolean(const char* key, bool& b) {
-    if (auto v = map_.get(key)) b = v->boolean();
-  }
-  void seed(const char* key, std::uint64_t& s) {
-    if (auto v = map_.get(key)) s = v->unsigned_integer();
-  }
-  template <class E>
-  void choice(const char* key, E& e, const std::vector<std::pair<std::string, E>>& table) {
-    auto v = map_.get(key);
-    if (!v) return;
-    std::vector<std::string> words;
-    for (const auto& [word, value] : table) words.push_back(word);
-    e = table[v->choice(words)].second;
-  }
-
- private:
-  const YamlMap& map_;
-};
+// ---- field lists (models/core/config/fields.h)
 
 template <class Visitor>
 void solver_fields(Visitor& v, CalibrationSolverSpec& s) {
@@ -100,15 +59,6 @@ void ladder_fields(Visitor& v, LadderSpec& l) {
   v.boolean("multires", l.multires);
   v.integer("multires_coarse_factor", l.multires_coarse_factor, IntRange{2, 16});
   v.integer("timing_repeats", l.timing_repeats, IntRange{1, 100});
-}
-
-template <class Spec, class Fields>
-std::vector<std::string> keys_of(Fields fields, std::vector<std::string> extra) {
-  FieldNames names;
-  Spec spec;
-  fields(names, spec);
-  extra.insert(extra.end(), names.names.begin(), names.names.end());
-  return extra;
 }
 
 // ---- pieces
@@ -155,12 +105,27 @@ ObservableSpec read_observable(const YamlValue& value) {
   return o;
 }
 
+std::string location_of(const YamlValue& value) {
+  return fmt::format("{}:{}:{}", value.file(), value.node().Mark().line + 1, value.node().Mark().column + 1);
+}
+
+// "ground.sand.alpha" -> ("ground", "sand.alpha")
+std::pair<std::string, std::string> split_parameter_name(const YamlValue& value) {
+  const std::string full = value.string();
+  const std::size_t dot = full.find('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == full.size()) {
+    value.fail("a parameter named solver.parameter (e.g. ground.sand.alpha)");
+  }
+  return {full.substr(0, dot), full.substr(dot + 1)};
+}
+
 ReferenceSpec read_reference(const Context& ctx, const YamlValue& value) {
   const YamlMap map = value.map({"data", "liggghts", "heuristic"});
   int count = 0;
   for (const char* key : {"data", "liggghts", "heuristic"}) count += map.has(key) ? 1 : 0;
   if (count != 1) value.fail("exactly one of data, liggghts, heuristic", count == 0 ? "none" : "several");
   ReferenceSpec r;
+  r.location = location_of(value);
   if (auto data = map.get("data")) {
     r.kind = ReferenceSpec::Kind::kData;
     r.directory = existing(ctx, *data, true, "a folder of a reference run (height_initial.npy, height_final.npy)");
@@ -172,11 +137,14 @@ ReferenceSpec read_reference(const Context& ctx, const YamlValue& value) {
     r.directory = resolve(ctx, run->string());
   } else {
     r.kind = ReferenceSpec::Kind::kHeuristic;
-    const YamlMap h = map.get("heuristic")->map({"material", "alpha", "repose_angle_deg", "sigma"});
-    r.material = h.string_or("material", "");
-    if (auto v = h.get("alpha")) r.alpha = v->number(Range::closed(0.0, 1.0));
-    if (auto v = h.get("repose_angle_deg")) r.repose_angle_rad = v->number(Range::left_open(0.0, 90.0)) * kDeg;
-    if (auto v = h.get("sigma")) r.sigma = v->number(Range::left_open(0.0, kSigmaMax));
+    const YamlValue h = *map.get("heuristic");
+    if (!h.is_map()) h.fail("a map from parameter names (solver.parameter) to values");
+    for (const auto& entry : h.node()) {
+      const YamlValue key(h.file(), entry.first, h.path());
+      const YamlValue item(h.file(), entry.second, h.path() + "." + entry.first.Scalar());
+      split_parameter_name(key);
+      r.values.emplace_back(key.string(), item.number(Range::any()));
+    }
   }
   return r;
 }
@@ -196,51 +164,30 @@ CalibrationScene read_scene_entry(const Context& ctx, const YamlValue& value) {
   return s;
 }
 
-struct FieldLimits {
-  ParameterSpec::Field field;
-  const char* name;
-  Range range;          // in file units
-  double scale;         // file units -> SI
-  double default_lower, default_upper, default_step;  // file units
-};
-
-const std::vector<FieldLimits>& field_limits() {
-  using F = ParameterSpec::Field;
-  static const std::vector<FieldLimits> limits = {
-      {F::kAlpha, "alpha", Range::closed(0.0, 1.0), 1.0, 0.0, 1.0, 0.05},
-      {F::kReposeAngle, "repose_angle_deg", Range::left_open(0.0, 90.0), kDeg, 5.0, 85.0, 2.0},
-      {F::kSigma, "sigma", Range::left_open(0.0, kSigmaMax), 1.0, 0.01, kSigmaMax, 0.02}};
-  return limits;
-}
-
 ParameterSpec read_parameter(const YamlValue& value) {
-  const YamlMap map = value.map({"material", "name", "initial", "bounds", "step", "fixed"});
-  std::vector<std::string> names;
-  for (const FieldLimits& f : field_limits()) names.emplace_back(f.name);
-  const FieldLimits& f = field_limits()[map.required("name", "one of alpha, repose_angle_deg, sigma").choice(names)];
+  const YamlMap map = value.map({"name", "initial", "bounds", "step", "fixed"});
   ParameterSpec p;
-  p.field = f.field;
-  p.material = map.string_or("material", p.material);
+  std::tie(p.solver, p.name) = split_parameter_name(map.required("name", "a parameter named solver.parameter"));
+  p.location = location_of(value);
   p.fixed = map.boolean_or("fixed", false);
-  double lower = f.default_lower, upper = f.default_upper;
   if (auto b = map.get("bounds")) {
-    const Eigen::Vector2d v = b->vec2(f.range);
+    const Eigen::Vector2d v = b->vec2(Range::any());
     if (!(v[0] < v[1])) b->fail("bounds [lower, upper] with lower < upper", fmt::format("[{}, {}]", v[0], v[1]));
-    lower = v[0];
-    upper = v[1];
+    p.file_lower = v[0];
+    p.file_upper = v[1];
   }
-  const double initial = map.number("initial", Range::closed(lower, upper));
-  const double step = map.number_or("step", Range::left_open(0.0, 0.5 * (upper - lower)), f.default_step);
-  p.initial = initial * f.scale;
-  p.lower = lower * f.scale;
-  p.upper = upper * f.scale;
-  p.step = std::min(step, 0.5 * (upper - lower)) * f.scale;
+  const Range within = p.file_lower ? Range::closed(*p.file_lower, *p.file_upper) : Range::any();
+  p.file_initial = map.number("initial", within);
+  if (map.has("step")) {
+    p.file_step = map.number("step", p.file_lower ? Range::left_open(0.0, 0.5 * (*p.file_upper - *p.file_lower))
+                                                  : Range::positive());
+  }
   return p;
 }
 
 LadderSpec read_ladder(const Context& ctx, const YamlValue& value) {
   const auto fields = [](auto& v, LadderSpec& l) { ladder_fields(v, l); };
-  const YamlMap map = value.map(keys_of<LadderSpec>(fields, {"scene", "heuristic_cell_sizes_m", "liggghts"}));
+  const YamlMap map = value.map(field_keys<LadderSpec>(fields, {"scene", "heuristic_cell_sizes_m", "liggghts"}));
   LadderSpec l;
   FieldReader reader(map);
   ladder_fields(reader, l);
@@ -283,12 +230,21 @@ CalibrationSpec read_calibration(const Context& ctx, const YamlValue& root, cons
     }
     spec.parameters.push_back(param);
   }
+  spec.fitted_solver = spec.parameters.front().solver;
+  for (std::size_t k = 0; k < spec.parameters.size(); ++k) {
+    if (spec.parameters[k].solver != spec.fitted_solver) {
+      parameters.list()[k].fail(fmt::format("a parameter of solver {} (a calibration fits one solver, named by the "
+                                            "first parameter)",
+                                            spec.fitted_solver),
+                                spec.parameters[k].label());
+    }
+  }
   if (std::all_of(spec.parameters.begin(), spec.parameters.end(), [](const ParameterSpec& p) { return p.fixed; })) {
     parameters.fail("at least one parameter that is not fixed", "all fixed");
   }
   if (auto s = map.get("solver")) {
     const auto fields = [](auto& v, CalibrationSolverSpec& x) { solver_fields(v, x); };
-    const YamlMap solver = s->map(keys_of<CalibrationSolverSpec>(fields, {}));
+    const YamlMap solver = s->map(field_keys<CalibrationSolverSpec>(fields, {}));
     FieldReader reader(solver);
     solver_fields(reader, spec.solver);
   }
@@ -300,17 +256,6 @@ CalibrationSpec read_calibration(const Context& ctx, const YamlValue& root, cons
 }
 
 }  // namespace
-
-const char* parameter_field_name(ParameterSpec::Field field) {
-  switch (field) {
-    case ParameterSpec::Field::kAlpha: return "alpha";
-    case ParameterSpec::Field::kReposeAngle: return "repose_angle_deg";
-    case ParameterSpec::Field::kSigma: return "sigma";
-  }
-  return "?";
-}
-
-std::string ParameterSpec::label() const { return material + "." + parameter_field_name(field); }
 
 CalibrationSpec load_calibration_from_string(const std::string& yaml, const std::string& pretend_path) {
   const Context ctx{fs::absolute(fs::path(pretend_path)).parent_path().lexically_normal()};

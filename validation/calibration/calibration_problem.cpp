@@ -9,15 +9,15 @@
 #include <thread>
 
 #include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include "models/core/base/error.h"
 #include "models/core/config/initial_height.h"
 #include "models/core/io/npy_io.h"
 #include "models/core/config/scene_loader.h"
-#include "models/ground/simulate_ground.h"
+#include "validation/calibration/calibration_parameters.h"
+#include "validation/calibration/reference_cost.h"
 #include "validation/observables/calibration_observables.h"
-#include "validation/liggghts/liggghts_reference.h"
+#include "validation/particles/dem_section.h"
 
 namespace repose {
 
@@ -35,52 +35,57 @@ HeightField read_field(const std::string& path, const Grid& grid, const std::str
   return HeightField(grid, a);
 }
 
-// A number of a run's liggghts_manifest.json (JSON is read as YAML).
-std::optional<double> manifest_number(const std::string& directory, const std::string& key) {
-  const fs::path path = fs::path(directory) / "liggghts_manifest.json";
-  if (!fs::exists(path)) return std::nullopt;
-  try {
-    const YAML::Node node = YAML::LoadFile(path.string());
-    if (node[key] && node[key].IsScalar()) return node[key].as<double>();
-  } catch (const YAML::Exception& e) {
-    throw InputError(fmt::format("{}: cannot be read as JSON: {}", path.string(), e.what()));
-  }
-  return std::nullopt;
+// The scene starting from a given ground (the reference's initial surface).
+Scene starting_from(Scene scene, const HeightField& initial) {
+  scene.ground.initial.kind = InitialHeight::Kind::kGiven;
+  scene.ground.initial.given = std::make_shared<const HeightField>(initial);
+  return scene;
 }
 
-void set_field(Material& m, ParameterSpec::Field field, double value) {
-  switch (field) {
-    case ParameterSpec::Field::kAlpha: m.alpha = value; break;
-    case ParameterSpec::Field::kReposeAngle: m.repose_angle_rad = value; break;
-    case ParameterSpec::Field::kSigma: m.sigma = value; break;
+// The values of the solver's parameters, by full name (solver.parameter) in
+// their units, over its defaults.
+std::vector<double> named_values(const CompiledSolver& solver, const std::string& solver_name,
+                                 const ReferenceSpec& ref) {
+  std::vector<double> values = solver.default_values();
+  for (const auto& [full, value] : ref.values) {
+    const std::string prefix = solver_name + ".";
+    if (!full.starts_with(prefix)) {
+      throw InputError(fmt::format("{}: heuristic: {} is not a parameter of the calibrated solver {}", ref.location,
+                                   full, solver_name));
+    }
+    try {
+      const std::size_t k = solver.parameter_index(full.substr(prefix.size()));
+      values[k] = value * solver.parameters()[k].si_per_unit;
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: heuristic: {}", ref.location, e.what()));
+    }
   }
+  return values;
 }
 
-void load_reference(PreparedScene& s, const ProgressFn& progress) {
+void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solver& fitted,
+                    const ProgressFn& progress) {
   const Grid& grid = s.scene.ground.grid;
   const ReferenceSpec& ref = s.entry.reference;
   if (ref.kind == ReferenceSpec::Kind::kHeuristic) {
-    s.initial = make_initial_height(s.scene);
-    GroundParams params = default_params(s.model);
-    for (Material& m : params.materials) {
-      if (!ref.material.empty() && m.name != ref.material) continue;
-      if (ref.alpha) m.alpha = *ref.alpha;
-      if (ref.repose_angle_rad) m.repose_angle_rad = *ref.repose_angle_rad;
-      if (ref.sigma) m.sigma = *ref.sigma;
-    }
-    s.reference_final = simulate_ground(s.model, params, s.initial).final_height;
+    const auto solver = fitted.compile(s.scene);
+    const Run run = solver->run(named_values(*solver, fitted.name(), ref), RunOptions{});
+    s.initial = run.field("height_initial");
+    s.reference_final = run.field("height_final");
     return;
   }
   if (ref.kind == ReferenceSpec::Kind::kLiggghts && !fs::exists(fs::path(ref.directory) / "height_final.npy")) {
     report(progress, 0.0, fmt::format("LIGGGHTS reference of {} into {} (minutes)", s.entry.name, ref.directory));
     fs::create_directories(ref.directory);
-    LiggghtsReferenceOptions options;
-    run_liggghts_reference(s.scene, ref.directory, options);
+    const auto liggghts = registry.get("liggghts").compile(s.scene);
+    liggghts->run(liggghts->default_values(), RunOptions{progress, ref.directory});
   }
   s.initial = read_field((fs::path(ref.directory) / "height_initial.npy").string(), grid, "the reference's initial surface");
   s.reference_final = read_field((fs::path(ref.directory) / "height_final.npy").string(), grid, "the reference's final surface");
-  s.reference_wall_time_s = manifest_number(ref.directory, "wall_time_s");
-  s.reference_cpu_time_s = manifest_number(ref.directory, "cpu_time_s");
+  if (const auto cost = read_run_cost(ref.directory)) {
+    s.reference_wall_time_s = cost->wall_s;
+    s.reference_cpu_time_s = cost->cpu_s;
+  }
 }
 
 // Runs task(k) for k in [0, count) on up to `threads` threads; the first
@@ -113,16 +118,23 @@ void parallel_for(std::size_t count, int threads, const std::function<void(std::
 
 }  // namespace
 
-CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const ProgressFn& progress) : spec_(std::move(spec)) {
+CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistry& registry, const ProgressFn& progress)
+    : spec_(std::move(spec)), registry_(&registry), solver_(registry.find(spec_.fitted_solver)) {
+  if (solver_ == nullptr) {
+    throw InputError(fmt::format("{}: parameters: {} names an unknown solver '{}' (known: {})",
+                                 spec_.parameters.front().location, spec_.parameters.front().label(),
+                                 spec_.fitted_solver, fmt::join(registry.names(), ", ")));
+  }
   for (std::size_t k = 0; k < spec_.scenes.size(); ++k) {
     PreparedScene s;
     s.entry = spec_.scenes[k];
-    s.scene = load_scene(s.entry.scene_path);
+    s.scene = load_scene(s.entry.scene_path, registry.sections());
     if (s.entry.name.empty()) s.entry.name = s.scene.name;
     report(progress, static_cast<double>(k) / spec_.scenes.size(), "reference of " + s.entry.name);
-    s.model = build_ground_model(s.scene);
-    if (s.scene.dem) s.grain_diameter_m = 2.0 * s.scene.dem->grain_radius_m;
-    load_reference(s, progress);
+    if (const DemSpec* dem = dem_of(s.scene)) s.grain_diameter_m = 2.0 * dem->grain_radius_m;
+    load_reference(s, registry, *solver_, progress);
+    s.scene = starting_from(std::move(s.scene), s.initial);
+    s.solver = solver_->compile(s.scene);
     for (const ObservableSpec& o : s.entry.observables) {
       s.reference_values.push_back(observe(o, s.initial, s.reference_final));
       s.residual_count += s.reference_values.back().size();
@@ -136,18 +148,7 @@ CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const ProgressFn& p
     }
     scenes_.push_back(std::move(s));
   }
-  for (std::size_t p = 0; p < spec_.parameters.size(); ++p) {
-    const ParameterSpec& param = spec_.parameters[p];
-    if (!param.fixed) free_.push_back(p);
-    const bool used = std::any_of(scenes_.begin(), scenes_.end(), [&](const PreparedScene& s) {
-      return s.fit() && std::any_of(s.model.materials.begin(), s.model.materials.end(),
-                                    [&](const Material& m) { return m.name == param.material; });
-    });
-    if (!used) {
-      throw InputError(fmt::format("{}: parameters: {} names material '{}', which no fit scene has", spec_.source_path,
-                                   param.label(), param.material));
-    }
-  }
+  resolve_parameters();
   if (spec_.ladder) {
     if (spec_.ladder->scene.empty()) {
       spec_.ladder->scene = std::find_if(scenes_.begin(), scenes_.end(), [](const auto& s) { return s.fit(); })->entry.name;
@@ -157,11 +158,37 @@ CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const ProgressFn& p
   report(progress, 1.0, "references loaded");
 }
 
+void CalibrationProblem::resolve_parameters() {
+  for (std::size_t p = 0; p < spec_.parameters.size(); ++p) {
+    ParameterSpec& param = spec_.parameters[p];
+    if (!param.fixed) free_.push_back(p);
+    const ParameterInfo* info = nullptr;
+    for (PreparedScene& s : scenes_) {
+      const auto& list = s.solver->parameters();
+      const auto it = std::find_if(list.begin(), list.end(), [&](const ParameterInfo& i) { return i.name == param.name; });
+      s.parameter_index.push_back(it == list.end() ? -1 : static_cast<int>(it - list.begin()));
+      if (it != list.end() && s.fit() && info == nullptr) info = &*it;
+    }
+    if (info == nullptr) {
+      throw InputError(fmt::format("{}: parameters: {}: no fit scene has this parameter of solver {}",
+                                   param.location, param.label(), param.solver));
+    }
+    resolve_parameter(param, *info);
+  }
+}
+
 const PreparedScene& CalibrationProblem::scene_named(const std::string& name) const {
   for (const PreparedScene& s : scenes_) {
     if (s.entry.name == name) return s;
   }
   throw InputError(fmt::format("{}: ladder.scene: no scene named '{}'", spec_.source_path, name));
+}
+
+std::optional<std::size_t> CalibrationProblem::free_index(std::size_t p) const {
+  for (std::size_t k = 0; k < free_.size(); ++k) {
+    if (free_[k] == p) return k;
+  }
+  return std::nullopt;
 }
 
 std::vector<double> CalibrationProblem::initial_values() const {
@@ -183,19 +210,17 @@ std::vector<double> CalibrationProblem::free_of(const std::vector<double>& value
   return out;
 }
 
-GroundParams CalibrationProblem::params_for(const PreparedScene& scene, const std::vector<double>& values) const {
+std::vector<double> CalibrationProblem::solver_values(const PreparedScene& scene, const std::vector<double>& values) const {
   REPOSE_DEMAND(values.size() == spec_.parameters.size());
-  GroundParams params = default_params(scene.model);
+  std::vector<double> solver_values = scene.solver->default_values();
   for (std::size_t p = 0; p < values.size(); ++p) {
-    for (Material& m : params.materials) {
-      if (m.name == spec_.parameters[p].material) set_field(m, spec_.parameters[p].field, values[p]);
-    }
+    if (scene.parameter_index[p] >= 0) solver_values[static_cast<std::size_t>(scene.parameter_index[p])] = values[p];
   }
-  return params;
+  return solver_values;
 }
 
 HeightField CalibrationProblem::run(const PreparedScene& scene, const std::vector<double>& values) const {
-  return simulate_ground(scene.model, params_for(scene, values), scene.initial).final_height;
+  return scene.solver->run(solver_values(scene, values), RunOptions{}).field("height_final");
 }
 
 std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const HeightField& final_height) const {

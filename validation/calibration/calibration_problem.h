@@ -1,14 +1,17 @@
 #pragma once
-// A calibration made ready to evaluate: every scene loaded and its ground
-// model built once, its reference surfaces loaded (or made), and the
-// reference's observables taken once. Evaluating a parameter set then runs
-// the heuristic on each scene (many sets in parallel, each run independent
-// and deterministic, so results do not depend on the thread count) and
-// returns the weighted residuals (heuristic - reference) of the fit scenes.
+// A calibration made ready to evaluate: every scene loaded and compiled
+// once by the calibrated solver (any solver of the registry: it declares its
+// parameters), its reference surfaces loaded (or made), and the reference's
+// observables taken once. Evaluating a parameter set then runs the solver on
+// each scene (many sets in parallel, each run independent and deterministic,
+// so results do not depend on the thread count) and returns the weighted
+// residuals (solver - reference) of the fit scenes. Observables are taken the
+// same way from the solver's Run and the reference's (observe_run).
 //
 // Parameter values are kept as one vector over spec.parameters (SI units,
 // radians); the free ones are those not fixed, in the file's order.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,17 +19,19 @@
 #include "models/core/geometry/height_field.h"
 #include "models/core/base/progress.h"
 #include "models/core/config/scene.h"
-#include "models/ground/ground_model.h"
-#include "models/ground/ground_params.h"
+#include "models/core/solver/solver_registry.h"
 #include "validation/calibration/calibration_spec.h"
 
 namespace repose {
 
 struct PreparedScene {
   CalibrationScene entry;          // name filled in
-  Scene scene;
-  GroundModel model;
-  HeightField initial;             // the heuristic starts here: the reference's initial surface
+  Scene scene;                     // its initial height: the reference's initial surface
+  std::shared_ptr<const CompiledSolver> solver;  // the calibrated solver, compiled for `scene`
+  // per calibration parameter: its index among solver->parameters(), or -1
+  // when this scene has no such parameter (e.g. a material it does not hold)
+  std::vector<int> parameter_index;
+  HeightField initial;             // the solver starts here: the reference's initial surface
   HeightField reference_final;
   std::vector<std::vector<double>> reference_values;  // per observable
   std::size_t residual_count = 0;
@@ -39,24 +44,30 @@ struct PreparedScene {
 class CalibrationProblem {
  public:
   // Loads the scenes and references; a LIGGGHTS reference that is not made
-  // yet is run now (minutes). Throws InputError for a reference that does not
-  // fit its scene's grid, a parameter naming a material no fit scene has, or
-  // a ladder scene that is not listed.
-  CalibrationProblem(CalibrationSpec spec, const ProgressFn& progress = {});
+  // yet is run now (minutes). Throws InputError (naming the file, line and
+  // column) for an unknown solver, a parameter no fit scene declares or
+  // outside the solver's interval, a reference that does not fit its scene's
+  // grid, or a ladder scene that is not listed.
+  CalibrationProblem(CalibrationSpec spec, const SolverRegistry& registry, const ProgressFn& progress = {});
 
   const CalibrationSpec& spec() const { return spec_; }
   const std::vector<PreparedScene>& scenes() const { return scenes_; }
   const PreparedScene& scene_named(const std::string& name) const;
   // Indices into spec().parameters of the free parameters.
   const std::vector<std::size_t>& free() const { return free_; }
+  // Position of parameter p among the free ones, when it is free.
+  std::optional<std::size_t> free_index(std::size_t p) const;
 
   std::vector<double> initial_values() const;  // every parameter's initial value
   // Every parameter's value with the free ones replaced.
   std::vector<double> with_free(const std::vector<double>& free_values) const;
   std::vector<double> free_of(const std::vector<double>& values) const;
 
-  // The scene's materials with the parameters applied (by material name).
-  GroundParams params_for(const PreparedScene& scene, const std::vector<double>& values) const;
+  const SolverRegistry& registry() const { return *registry_; }
+  const Solver& solver() const { return *solver_; }
+  // The compiled solver's values for a calibration parameter set (SI).
+  std::vector<double> solver_values(const PreparedScene& scene, const std::vector<double>& values) const;
+  // A run of the calibrated solver on the scene; its height_final.
   HeightField run(const PreparedScene& scene, const std::vector<double>& values) const;
   // weight * (heuristic - reference) / sqrt(count), observable after observable.
   std::vector<double> residuals(const PreparedScene& scene, const HeightField& final_height) const;
@@ -68,7 +79,10 @@ class CalibrationProblem {
   long long runs() const { return runs_; }  // heuristic runs so far
 
  private:
+  void resolve_parameters();
   CalibrationSpec spec_;
+  const SolverRegistry* registry_;
+  const Solver* solver_;
   std::vector<PreparedScene> scenes_;
   std::vector<std::size_t> free_;
   std::size_t fit_residual_count_ = 0;

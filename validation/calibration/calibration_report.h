@@ -4,12 +4,11 @@
 //                        or "undetermined", correlation matrix, costs, per-scene
 //                        RMSE before and after, iterations, termination, wall
 //                        time, the starts, the ladder)
-//   material.yaml        the calibrated material as a ground.material map of a
-//                        scene (one material_NAME.yaml per further material),
-//                        provenance in comments
+//   parameters.yaml      the calibrated parameters by full name (solver.parameter)
+//                        in their units, standard errors and provenance in comments
 //   data/*.npy, *.csv    maps and transects the figures are drawn from
 //   report.md            what a person reads first
-// Angles are written in degrees.
+// Values are written in each parameter's unit (degrees for *_deg).
 
 #include <optional>
 #include <string>
@@ -32,13 +31,13 @@ struct CalibrationOutputs {
 // `path(name)` gives where to write the file `name` of the run folder.
 // Returns the names written.
 std::vector<std::string> write_calibration_json(const CalibrationOutputs& o, const std::function<std::string(const std::string&)>& path);
-std::vector<std::string> write_calibrated_materials(const CalibrationOutputs& o, const std::function<std::string(const std::string&)>& path);
+std::vector<std::string> write_calibrated_parameters(const CalibrationOutputs& o, const std::function<std::string(const std::string&)>& path);
 std::vector<std::string> write_calibration_figure_data(const CalibrationOutputs& o, const std::function<std::string(const std::string&)>& path);
 // figures: the image names made (linked from the report); figure_note: why some are missing.
 void write_calibration_report(const CalibrationOutputs& o, const std::vector<std::string>& figures,
                               const std::string& figure_note, const std::string& path);
 
-// The calibrated materials (by name, in parameter order) with their provenance lines.
-std::string calibrated_material_yaml(const CalibrationOutputs& o, const std::string& material);
+// The text of parameters.yaml.
+std::string calibrated_parameters_yaml(const CalibrationOutputs& o);
 
 }  // namespace repose

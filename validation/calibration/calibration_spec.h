@@ -1,6 +1,6 @@
 #pragma once
 // A calibration: which scenes, compared with which reference runs, through
-// which observables, fitting which ground-model parameters, with which solver
+// which observables, fitting which parameters of which solver, with which solver
 // options, and which speed/accuracy ladder to measure. Loaded and validated
 // once from a YAML file (calibration_loader.h); SI units and radians inside,
 // degrees only in the file.
@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include "models/core/config/material.h"
+#include "models/ground/material.h"
 #include "validation/observables/observable_spec.h"
 
 namespace repose {
@@ -21,19 +21,18 @@ namespace repose {
 // Where a scene's reference surface comes from.
 struct ReferenceSpec {
   enum class Kind {
-    kData,       // a folder holding height_initial.npy and height_final.npy on the scene's grid
-                 // (a canonical LIGGGHTS run, data/dem_*), with liggghts_manifest.json for its cost
+    kData,       // a run folder holding height_initial.npy and height_final.npy on the scene's grid
+                 // (a canonical LIGGGHTS run, data/dem_*), with its manifest for its cost
     kLiggghts,   // a LIGGGHTS run made into `directory` when it holds no height_final.npy yet
-    kHeuristic,  // the ground model itself at known parameters (synthetic references)
+    kHeuristic,  // the calibrated solver itself at known parameter values (synthetic references)
   };
   Kind kind = Kind::kData;
   std::string directory;  // data, liggghts: absolute
-  // heuristic: these values replace those of every material named `material`
-  // (every material when empty); the scene's initial surface is the start.
-  std::string material;
-  std::optional<double> alpha;
-  std::optional<double> repose_angle_rad;
-  std::optional<double> sigma;
+  // heuristic: parameter values by full name ("ground.sand.alpha"), in the
+  // parameter's unit; the others keep the scene's own values, and the
+  // scene's initial surface is the start.
+  std::vector<std::pair<std::string, double>> values;
+  std::string location;   // FILE:LINE:COL of the reference, for messages
 };
 
 struct CalibrationScene {
@@ -47,21 +46,31 @@ struct CalibrationScene {
   std::optional<CalibrationRegion> rmse_region;
 };
 
-// One fitted (or fixed) material parameter.
+// One fitted (or fixed) parameter of the calibrated solver, named
+// `solver.parameter` in the file ("ground.sand.alpha",
+// "ground.sand.repose_angle_deg"): the solver declares its parameters, their
+// units and intervals (models/core/solver/solver.h), so calibration fits any
+// solver's parameters without knowing which model they belong to.
 struct ParameterSpec {
-  enum class Field { kAlpha, kReposeAngle, kSigma };
-  std::string material = "sand";  // applies to every material of this name in every scene
-  Field field = Field::kAlpha;
-  double initial = 0.0;  // SI / radians
+  std::string solver;   // "ground"
+  std::string name;     // its name in the solver: "sand.alpha"
+  // As written, in the parameter's own unit (degrees for *_deg):
+  double file_initial = 0.0;
+  std::optional<double> file_lower, file_upper;  // default: the solver's interval
+  std::optional<double> file_step;               // default: 5 % of the bounds' width
+  bool fixed = false;
+  std::string location;  // FILE:LINE:COL of the entry, for messages
+  // Resolved against the solver's declaration by CalibrationProblem (SI units):
+  std::string unit;
+  double si_per_unit = 1.0;
+  double initial = 0.0;
   double lower = 0.0;
   double upper = 0.0;
-  double step = 0.0;     // central-difference half-width, absolute (same units)
-  bool fixed = false;
+  double step = 0.0;     // central-difference half-width, absolute
 
-  std::string label() const;  // "sand.alpha", "sand.repose_angle_deg", "sand.sigma"
+  std::string label() const { return solver + "." + name; }  // "ground.sand.alpha"
+  double in_file_units(double si) const { return si / si_per_unit; }
 };
-
-const char* parameter_field_name(ParameterSpec::Field field);  // "alpha", "repose_angle_deg", "sigma"
 
 struct CalibrationSolverSpec {
   enum class Loss { kNone, kHuber, kCauchy };
@@ -95,6 +104,7 @@ struct CalibrationSpec {
   std::string source_path;  // absolute
   std::string name;
   std::vector<CalibrationScene> scenes;     // at least one with role fit
+  std::string fitted_solver;                // the calibrated solver: every parameter's prefix
   std::vector<ParameterSpec> parameters;    // at least one free
   CalibrationSolverSpec solver;
   std::optional<LadderSpec> ladder;

@@ -9,8 +9,9 @@
 
 #include <fmt/format.h>
 
+#include <nlohmann/json.hpp>
+
 #include "models/core/base/error.h"
-#include "models/core/io/json_writer.h"
 #include "models/core/base/sha256.h"
 #include "validation/liggghts/liggghts_dump.h"
 
@@ -65,27 +66,25 @@ long check_settled(const fs::path& dir, const Scene& scene, const BedScriptOptio
 }
 
 void write_manifest(const fs::path& path, const SettledBed& bed, const Scene& scene) {
-  std::ofstream out(path);
-  JsonWriter json(out);
-  const DemSpec& dem = *scene.dem;
-  json.begin_object();
-  json.key("kind").string("settled bed");
-  json.key("liggghts_version").string(bed.liggghts_version);
-  json.key("script_sha256").string(sha256_hex_of_file((path.parent_path() / kScriptFile).string()));
-  json.key("cache_key").string(bed.key);
-  json.key("grain_count").integer(bed.grain_count);
-  json.key("steps").integer(bed.steps);
-  json.key("wall_time_s").number(bed.wall_time_s);
-  json.key("cpu_time_s").number(bed.cpu_time_s);
+  const DemSpec& dem = *dem_of(scene);
   const double particle_steps = static_cast<double>(bed.grain_count) * static_cast<double>(bed.steps);
-  json.key("particle_steps_per_s").number(bed.wall_time_s > 0 ? particle_steps / bed.wall_time_s : 0.0);
-  json.key("particle_steps_per_cpu_s").number(bed.cpu_time_s > 0 ? particle_steps / bed.cpu_time_s : 0.0);
-  json.key("youngs_modulus_pa").number(dem.youngs_modulus_pa);
-  json.key("youngs_modulus_note").string("softened, as DEM practice does, to allow a practical time step");
-  json.key("time_step_s").number(dem.time_step_s);
-  json.key("bed_depth_m").number(dem.bed_depth_m);
-  json.end_object();
-  out << "\n";
+  const nlohmann::json json = {
+      {"kind", "settled bed"},
+      {"liggghts_version", bed.liggghts_version},
+      {"script_sha256", sha256_hex_of_file((path.parent_path() / kScriptFile).string())},
+      {"cache_key", bed.key},
+      {"grain_count", bed.grain_count},
+      {"steps", bed.steps},
+      {"wall_time_s", bed.wall_time_s},
+      {"cpu_time_s", bed.cpu_time_s},
+      {"particle_steps_per_s", bed.wall_time_s > 0 ? particle_steps / bed.wall_time_s : 0.0},
+      {"particle_steps_per_cpu_s", bed.cpu_time_s > 0 ? particle_steps / bed.cpu_time_s : 0.0},
+      {"youngs_modulus_pa", dem.youngs_modulus_pa},
+      {"youngs_modulus_note", "softened, as DEM practice does, to allow a practical time step"},
+      {"time_step_s", dem.time_step_s},
+      {"bed_depth_m", dem.bed_depth_m}};
+  std::ofstream out(path);
+  out << json.dump(2) << "\n";
   if (!out) throw std::runtime_error(fmt::format("{}: write failed", path.string()));
 }
 

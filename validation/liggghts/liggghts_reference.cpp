@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
-#include "models/core/io/json_writer.h"
+#include "models/core/run/repository_path.h"
 #include "models/core/io/mesh_io.h"
 #include "models/core/io/npy_io.h"
 #include "models/core/base/sha256.h"
@@ -53,12 +53,12 @@ void measure_column(LiggghtsReferenceResult& r, const Scene& scene, const std::v
   std::vector<double> times;
   for (const std::string& path : dumps) {
     DumpFrame f = read_last_dump_frame(path);
-    times.push_back(static_cast<double>(f.timestep) * scene.dem->time_step_s);
+    times.push_back(static_cast<double>(f.timestep) * dem_of(scene)->time_step_s);
     frames.push_back(std::move(f.grains));
   }
   const ColumnGeometry geometry = column_geometry(scene);
   r.column = measure_column_collapse(geometry, read_last_dump_frame(r.bed.dump_path).grains, frames, times,
-                                     mean_grain_diameter_m(*scene.dem), options.column);
+                                     mean_grain_diameter_m(*dem_of(scene)), options.column);
   write_runout_csv((dir / "runout.csv").string(), *r.column);
   if (geometry.shape == DemSpec::ColumnShape::kCylinder) {
     r.pile = pile_flank_angles(r.height_final, geometry.axis_xy_m, options.flank);
@@ -67,76 +67,66 @@ void measure_column(LiggghtsReferenceResult& r, const Scene& scene, const std::v
 }
 
 void write_manifest(const fs::path& path, const LiggghtsReferenceResult& r, const Scene& scene) {
+  const DemSpec& dem = *dem_of(scene);
+  nlohmann::json json = liggghts_results_json(r);
+  json["solver"] = "liggghts";
+  json["scene"] = scene.name;
+  json["scene_path"] = repository_relative(scene.source_path);
+  json["seed"] = scene.seed;
+  json["time_step_s"] = dem.time_step_s;
+  json["simulated_time_s"] = static_cast<double>(r.steps) * dem.time_step_s;
+  json["wall_time_s"] = r.run.wall_time_s;
+  json["cpu_time_s"] = r.run.cpu_time_s;
+  json["youngs_modulus_pa"] = dem.youngs_modulus_pa;
+  json["youngs_modulus_note"] = "softened, as DEM practice does, to allow a practical time step";
+  json["rayleigh_time_s"] = rayleigh_time_s(dem);
+  json["bed"] = {{"cache_key", r.bed.key},           {"directory", repository_relative(r.bed.directory)},
+                 {"from_cache", r.bed.from_cache},   {"grain_count", r.bed.grain_count},
+                 {"steps", r.bed.steps},             {"wall_time_s", r.bed.wall_time_s},
+                 {"cpu_time_s", r.bed.cpu_time_s}};
   std::ofstream out(path);
-  JsonWriter json(out);
-  json.begin_object();
-  json.key("solver").string("liggghts");
-  json.key("scene").string(scene.name);
-  json.key("scene_path").string(scene.source_path);
-  json.key("seed").unsigned_integer(scene.seed);
-  json.key("liggghts_version").string(r.run.version);
-  json.key("script_sha256").string(r.script_sha256);
-  json.key("grain_count").integer(r.grain_count);
-  json.key("steps").integer(r.steps);
-  json.key("time_step_s").number(scene.dem->time_step_s);
-  json.key("simulated_time_s").number(static_cast<double>(r.steps) * scene.dem->time_step_s);
-  json.key("wall_time_s").number(r.run.wall_time_s);
-  json.key("particle_steps_per_s").number(r.particle_steps_per_s);
-  json.key("cpu_time_s").number(r.run.cpu_time_s);
-  json.key("particle_steps_per_cpu_s")
-      .number(r.run.cpu_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.cpu_time_s : 0.0);
-  json.key("youngs_modulus_pa").number(scene.dem->youngs_modulus_pa);
-  json.key("youngs_modulus_note").string("softened, as DEM practice does, to allow a practical time step");
-  json.key("rayleigh_time_s").number(rayleigh_time_s(*scene.dem));
-  write_column_results(json, r);
-  write_mass_held_results(json, r);
-  json.key("bed").begin_object();
-  json.key("cache_key").string(r.bed.key);
-  json.key("directory").string(r.bed.directory);
-  json.key("from_cache").boolean(r.bed.from_cache);
-  json.key("grain_count").integer(r.bed.grain_count);
-  json.key("steps").integer(r.bed.steps);
-  json.key("wall_time_s").number(r.bed.wall_time_s);
-  json.key("cpu_time_s").number(r.bed.cpu_time_s);
-  json.end_object();
-  json.end_object();
-  out << "\n";
+  out << json.dump(2) << "\n";
   if (!out) throw InputError(fmt::format("{}: write failed", path.string()));
 }
 
 }  // namespace
 
-void write_column_results(JsonWriter& json, const LiggghtsReferenceResult& r) {
+nlohmann::json liggghts_results_json(const LiggghtsReferenceResult& r) {
   constexpr double deg = 180.0 / std::numbers::pi;
+  nlohmann::json json;
+  json["liggghts_version"] = r.run.version;
+  json["script_sha256"] = r.script_sha256;
+  json["bed_cache_key"] = r.bed.key;
+  json["bed_from_cache"] = r.bed.from_cache;
+  json["grain_count"] = r.grain_count;
+  json["steps"] = r.steps;
+  json["particle_steps_per_s"] = r.particle_steps_per_s;
+  json["run_wall_s"] = r.run.wall_time_s;
+  json["run_cpu_s"] = r.run.cpu_time_s;
+  json["bed_wall_s"] = r.bed.wall_time_s;
+  json["bed_cpu_s"] = r.bed.cpu_time_s;
+  json["particle_steps_per_cpu_s"] =
+      r.run.cpu_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.cpu_time_s : 0.0;
   if (r.column) {
     const ColumnCollapse& c = *r.column;
-    json.key("column").begin_object();
-    json.key("shape").string(c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder");
-    json.key("width_m").number(c.geometry.width_m);
-    json.key("slot_gap_m").number(c.geometry.gap_m);
-    json.key("height_initial_m").number(c.height_initial_m);
-    json.key("aspect_ratio").number(c.aspect_ratio);
-    json.key("front_initial_m").number(c.front_initial_m);
-    json.key("front_final_m").number(c.front_final_m);
-    json.key("front_final_spread_m").number(c.front_final_spread_m);
-    json.key("height_final_m").number(c.height_final_m);
-    json.key("runout_normalised").number(c.runout_normalised);
-    json.end_object();
+    json["column"] = {{"shape", c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder"},
+                      {"width_m", c.geometry.width_m},
+                      {"slot_gap_m", c.geometry.gap_m},
+                      {"height_initial_m", c.height_initial_m},
+                      {"aspect_ratio", c.aspect_ratio},
+                      {"front_initial_m", c.front_initial_m},
+                      {"front_final_m", c.front_final_m},
+                      {"front_final_spread_m", c.front_final_spread_m},
+                      {"height_final_m", c.height_final_m},
+                      {"runout_normalised", c.runout_normalised}};
   }
   if (r.pile) {
-    json.key("pile").begin_object();
-    json.key("flank_angle_mean_deg").number(r.pile->mean_rad * deg);
-    json.key("flank_angle_std_deg").number(r.pile->std_rad * deg);
-    json.key("azimuth_count").integer(static_cast<long>(r.pile->angle_rad.size()));
-    json.end_object();
+    json["pile"] = {{"flank_angle_mean_deg", r.pile->mean_rad * deg},
+                    {"flank_angle_std_deg", r.pile->std_rad * deg},
+                    {"azimuth_count", static_cast<long>(r.pile->angle_rad.size())}};
   }
-}
-
-void write_mass_held_results(JsonWriter& json, const LiggghtsReferenceResult& r) {
-  if (r.mass_held_kg.empty()) return;
-  json.key("mass_held_kg").begin_object();
-  for (const auto& [name, kg] : r.mass_held_kg) json.key(name).number(kg);
-  json.end_object();
+  for (const auto& [name, kg] : r.mass_held_kg) json["mass_held_kg"][name] = kg;
+  return json;
 }
 
 LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::string& run_dir,
@@ -183,17 +173,17 @@ LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::st
   write_npy_2d((dir / "height_final.npy").string(), r.height_final.heights());
   write_field_csv((dir / "height_initial.csv").string(), r.height_initial, "height_m");
   write_field_csv((dir / "height_final.csv").string(), r.height_final, "height_m");
-  const HeightField material = material_per_area(last.grains, grid);
-  write_npy_2d((dir / "material_per_area_final.npy").string(), material.heights());
-  write_field_csv((dir / "material_per_area_final.csv").string(), material, "grain_volume_per_area_m");
+  r.material_per_area_final = material_per_area(last.grains, grid);
+  write_npy_2d((dir / "material_per_area_final.npy").string(), r.material_per_area_final.heights());
+  write_field_csv((dir / "material_per_area_final.csv").string(), r.material_per_area_final, "grain_volume_per_area_m");
   write_forces_csv(dir / "forces.csv", read_thermo_table((dir / "log.liggghts").string()), script,
-                   scene.dem->time_step_s);
-  if (scene.dem->initial == DemSpec::Initial::kColumn) measure_column(r, scene, dumps, options, dir);
+                   dem_of(scene)->time_step_s);
+  if (dem_of(scene)->initial == DemSpec::Initial::kColumn) measure_column(r, scene, dumps, options, dir);
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     const ObjectSpec& o = scene.objects[k];
     const TriangleMesh world = transformed(o.body, o.pose_at(scene.time.duration_s));
     r.mass_held_kg.emplace_back(o.name.empty() ? fmt::format("object_{}", k) : o.name,
-                                mass_held_by_object_kg(last.grains, world, scene.dem->density_kg_m3));
+                                mass_held_by_object_kg(last.grains, world, dem_of(scene)->density_kg_m3));
   }
   write_manifest(dir / "liggghts_manifest.json", r, scene);
   return r;

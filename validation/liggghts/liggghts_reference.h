@@ -24,7 +24,8 @@
 #include <vector>
 
 #include "models/core/geometry/height_field.h"
-#include "models/core/io/json_writer.h"
+#include <nlohmann/json.hpp>
+
 #include "models/core/config/scene.h"
 #include "validation/particles/column_collapse.h"
 #include "validation/liggghts/liggghts_bed.h"
@@ -53,6 +54,7 @@ struct LiggghtsReferenceResult {
   std::string script_sha256;
   HeightField height_initial;    // surface of the settled bed on the scene's grid
   HeightField height_final;      // surface after the run
+  HeightField material_per_area_final;  // grain volume per unit area (m), particle_observables.h
   std::optional<ColumnCollapse> column;  // a column scene: its runout
   std::optional<FlankAngles> pile;       // a cylinder column: the final pile's flank angles
   // Per object (scene order): its name and the mass (kg) of the grains it
@@ -66,11 +68,10 @@ struct LiggghtsReferenceResult {
 LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::string& run_dir,
                                                const LiggghtsReferenceOptions& options = {});
 
-// The column and pile results (when present) as members "column" and "pile"
-// of the JSON object being written (degrees for angles, as in files).
-void write_column_results(JsonWriter& json, const LiggghtsReferenceResult& r);
-// The mass held by each object as a member "mass_held_kg": {"<object name>": kg, ...}
-// (left out for a scene without objects), so a measure reads mass_held_kg.<object name>.
-void write_mass_held_results(JsonWriter& json, const LiggghtsReferenceResult& r);
+// The run's results as one JSON object: LIGGGHTS version, script hash, bed
+// cache key, grain count, steps, costs, and when present "column" and "pile"
+// (angles in degrees, as in files) and "mass_held_kg": {"<object>": kg}.
+// Written into liggghts_manifest.json; the solver turns its numbers into measures.
+nlohmann::json liggghts_results_json(const LiggghtsReferenceResult& r);
 
 }  // namespace repose

@@ -15,25 +15,6 @@ namespace repose {
 
 namespace {
 
-const DemSpec& require_dem(const Scene& scene) {
-  if (!scene.dem) {
-    throw InputError(fmt::format("{}: dem: the scene has no 'dem' section, so it cannot run under LIGGGHTS",
-                                 scene.source_path.empty() ? scene.name : scene.source_path));
-  }
-  check_dem_spec(*scene.dem);
-  return *scene.dem;
-}
-
-void require_positive(double v, const char* key) {
-  if (!(std::isfinite(v) && v > 0.0)) throw InputError(fmt::format("dem: {}: expected a positive number, got {}", key, v));
-}
-
-void require_non_negative(double v, const char* key) {
-  if (!(std::isfinite(v) && v >= 0.0)) {
-    throw InputError(fmt::format("dem: {}: expected a non-negative number, got {}", key, v));
-  }
-}
-
 std::uint64_t splitmix64(std::uint64_t x) {
   x += 0x9e3779b97f4a7c15ULL;
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
@@ -130,7 +111,7 @@ bool is_column(const DemSpec& dem) { return dem.initial == DemSpec::Initial::kCo
 // centres a radius away, so the region is made taller by the ratio of the
 // footprint to the area open to centres (a bed's is left as it is).
 double fill_height_m(const Scene& scene, const BedScriptOptions& o) {
-  const DemSpec& dem = *scene.dem;
+  const DemSpec& dem = *dem_of(scene);
   double factor = 1.0;
   if (is_column(dem)) {
     const ColumnGeometry c = column_geometry(scene);
@@ -146,7 +127,7 @@ double fill_height_m(const Scene& scene, const BedScriptOptions& o) {
 // The region grains are inserted into and, for a column, the gate that holds them.
 void write_insertion_region(std::ostringstream& s, const Scene& scene, const DemDomain& d, double fill_m) {
   const auto n = [](double v) { return liggghts_number(v); };
-  const DemSpec& dem = *scene.dem;
+  const DemSpec& dem = *dem_of(scene);
   if (!is_column(dem)) {
     s << "region fill block " << n(d.x_min_m) << " " << n(d.x_max_m) << " " << n(d.y_min_m) << " " << n(d.y_max_m)
       << " 0 " << n(fill_m) << " units box\n";
@@ -231,44 +212,6 @@ std::string liggghts_number(double v) {
   return {buf, r.ptr};
 }
 
-double rayleigh_time_s(const DemSpec& dem) {
-  const double r = dem.grain_radius_m * (1.0 - dem.radius_spread);
-  const double shear_modulus = dem.youngs_modulus_pa / (2.0 * (1.0 + dem.poisson_ratio));
-  return std::numbers::pi * r * std::sqrt(dem.density_kg_m3 / shear_modulus) / (0.1631 * dem.poisson_ratio + 0.8766);
-}
-
-void check_dem_spec(const DemSpec& dem) {
-  require_positive(dem.grain_radius_m, "grain_radius_m");
-  if (!(dem.radius_spread >= 0.0 && dem.radius_spread < 0.5)) {
-    throw InputError(fmt::format("dem: radius_spread: expected a value in [0, 0.5), got {}", dem.radius_spread));
-  }
-  require_positive(dem.density_kg_m3, "density_kg_m3");
-  require_positive(dem.youngs_modulus_pa, "youngs_modulus_pa");
-  if (!(dem.poisson_ratio > -1.0 && dem.poisson_ratio < 0.5)) {
-    throw InputError(fmt::format("dem: poisson_ratio: expected a value in (-1, 0.5), got {}", dem.poisson_ratio));
-  }
-  if (!(dem.restitution > 0.0 && dem.restitution <= 1.0)) {
-    throw InputError(fmt::format("dem: restitution: expected a value in (0, 1], got {}", dem.restitution));
-  }
-  require_non_negative(dem.friction, "friction");
-  require_non_negative(dem.rolling_friction, "rolling_friction");
-  require_non_negative(dem.cohesion_energy_density_j_m3, "cohesion_energy_density_j_m3");
-  require_non_negative(dem.floor_rolling_friction, "floor_rolling_friction");
-  require_positive(dem.time_step_s, "time_step_s");
-  require_positive(dem.bed_depth_m, "bed_depth_m");
-  require_positive(dem.settle_kinetic_energy_j, "settle_kinetic_energy_j");
-  require_non_negative(dem.gravity_m_s2, "gravity_m_s2");
-  require_positive(dem.dump_interval_s, "dump_interval_s");
-  const double t_r = rayleigh_time_s(dem);
-  const double max_step = kMaxRayleighFraction * t_r;
-  if (dem.time_step_s > max_step) {
-    throw InputError(fmt::format(
-        "dem: time_step_s: {:.6g} s is above 20 % of the Rayleigh time {:.6g} s of the smallest grain; "
-        "use a step of at most {:.6g} s (or a smaller Young's modulus / larger grains)",
-        dem.time_step_s, t_r, max_step));
-  }
-}
-
 std::vector<std::uint64_t> liggghts_seeds(std::uint64_t scene_seed, int count) {
   std::vector<std::uint64_t> seeds;
   std::uint64_t state = scene_seed;
@@ -299,7 +242,7 @@ double mean_grain_volume_m3(const DemSpec& dem) {
 }
 
 long bed_grain_count(const Scene& scene, const BedScriptOptions& options) {
-  const DemSpec& dem = require_dem(scene);
+  const DemSpec& dem = require_dem(scene, "LIGGGHTS");
   const Grid& g = scene.ground.grid;
   const double footprint = is_column(dem) ? column_geometry(scene).footprint_m2 : g.extent_x_m() * g.extent_y_m();
   const double volume = footprint * settled_height_m(dem) * options.packing_fraction;
@@ -307,7 +250,7 @@ long bed_grain_count(const Scene& scene, const BedScriptOptions& options) {
 }
 
 DemDomain bed_domain(const Scene& scene, const BedScriptOptions& options) {
-  const DemSpec& dem = require_dem(scene);
+  const DemSpec& dem = require_dem(scene, "LIGGGHTS");
   const Grid& g = scene.ground.grid;
   DemDomain d;
   d.x_min_m = g.origin_x_m;
@@ -320,14 +263,14 @@ DemDomain bed_domain(const Scene& scene, const BedScriptOptions& options) {
 }
 
 long bed_max_steps(const Scene& scene, const BedScriptOptions& options) {
-  const DemSpec& dem = require_dem(scene);
+  const DemSpec& dem = require_dem(scene, "LIGGGHTS");
   const long chunk = std::max(1L, steps_for(options.settle_check_interval_s, dem.time_step_s));
   const long chunks = std::max(1L, std::lround(std::ceil(options.max_settle_time_s / options.settle_check_interval_s)));
   return 1 + chunk * chunks;
 }
 
 std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
-  const DemSpec& dem = require_dem(scene);
+  const DemSpec& dem = require_dem(scene, "LIGGGHTS");
   if (!(options.insert_volume_fraction > 0.0 && options.insert_volume_fraction < options.packing_fraction &&
         options.packing_fraction < 0.75)) {
     throw InputError("bed options: expected 0 < insert_volume_fraction < packing_fraction < 0.75");
@@ -393,7 +336,7 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
 }
 
 RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
-  const DemSpec& dem = require_dem(scene);
+  const DemSpec& dem = require_dem(scene, "LIGGGHTS");
   const auto n = [](double v) { return liggghts_number(v); };
   RunScript out;
 

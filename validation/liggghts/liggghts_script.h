@@ -19,18 +19,9 @@
 #include "models/core/geometry/triangle_mesh.h"
 
 #include "validation/particles/column_geometry.h"
+#include "validation/particles/dem_section.h"
 
 namespace repose {
-
-// Rayleigh time of the smallest grain (s): T_R = pi*r*sqrt(rho/G)/(0.1631*nu+0.8766),
-// G = E/(2(1+nu)), r = grain_radius_m*(1 - radius_spread).
-double rayleigh_time_s(const DemSpec& dem);
-// The largest time step accepted: 20 % of the Rayleigh time.
-inline constexpr double kMaxRayleighFraction = 0.2;
-// Throws InputError when dem.time_step_s > 20 % of the Rayleigh time, naming
-// the step, the Rayleigh time and the largest allowed step; also refuses
-// non-positive or non-finite grain and contact parameters.
-void check_dem_spec(const DemSpec& dem);
 
 // LIGGGHTS random seeds must be primes > 10000. Returns `count` distinct
 // primes derived from the scene seed (splitmix64 then the next prime).

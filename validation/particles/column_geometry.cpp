@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "validation/particles/dem_section.h"
 
 namespace repose {
 
@@ -13,9 +14,9 @@ double settled_height_m(const DemSpec& dem) {
   return dem.initial == DemSpec::Initial::kColumn ? dem.column_height_m : dem.bed_depth_m;
 }
 
-ColumnGeometry column_geometry(const Scene& scene) {
-  REPOSE_DEMAND(scene.dem.has_value());
-  const DemSpec& dem = *scene.dem;
+ColumnGeometry column_geometry(const Scene& scene) { return column_geometry(require_dem(scene, "a particle reference"), scene); }
+
+ColumnGeometry column_geometry(const DemSpec& dem, const Scene& scene) {
   REPOSE_DEMAND(dem.initial == DemSpec::Initial::kColumn);
   const Grid& g = scene.ground.grid;
   ColumnGeometry c;

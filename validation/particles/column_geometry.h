@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include "models/core/config/scene.h"
+#include "validation/particles/dem_section.h"
 
 namespace repose {
 
@@ -23,6 +24,7 @@ struct ColumnGeometry {
 // column does not fit the grid (a slot longer than the grid, a cylinder
 // wider than it).
 ColumnGeometry column_geometry(const Scene& scene);
+ColumnGeometry column_geometry(const DemSpec& dem, const Scene& scene);
 
 // Height of the settled grains: bed_depth_m for a bed, column_height_m for a column.
 double settled_height_m(const DemSpec& dem);

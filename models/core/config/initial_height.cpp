@@ -82,12 +82,15 @@ HeightField make_initial_height(const Scene& scene) {
     case InitialHeight::Kind::kFlat: return HeightField(scene.ground.grid, scene.ground.initial.height_m);
     case InitialHeight::Kind::kNoise: return noise_field(scene);
     case InitialHeight::Kind::kFile: return file_field(scene);
+    case InitialHeight::Kind::kGiven:
+      REPOSE_DEMAND(scene.ground.initial.given != nullptr && scene.ground.initial.given->grid() == scene.ground.grid);
+      return *scene.ground.initial.given;
   }
   REPOSE_DEMAND(false);
   return {};
 }
 
-const Material& material_at(const GroundSpec& ground, double x_m, double y_m) {
+const std::string& material_at(const GroundSpec& ground, double x_m, double y_m) {
   for (auto r = ground.regions.rbegin(); r != ground.regions.rend(); ++r) {
     if (x_m >= r->x_min_m && x_m <= r->x_max_m && y_m >= r->y_min_m && y_m <= r->y_max_m) return r->material;
   }

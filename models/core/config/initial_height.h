@@ -17,6 +17,6 @@ HeightField make_initial_height(const Scene& scene);
 
 // The material at a point: the last region containing it (edges included),
 // else the ground's material.
-const Material& material_at(const GroundSpec& ground, double x_m, double y_m);
+const std::string& material_at(const GroundSpec& ground, double x_m, double y_m);
 
 }  // namespace repose

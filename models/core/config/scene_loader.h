@@ -13,8 +13,8 @@
 //     initial_height: {kind: flat, height_m: 0.05}
 //       # or {kind: noise, mean_m, amplitude_m, correlation_m}
 //       # or {kind: file, path: h.npy | h.png, height_scale_m (png only), offset_m}
-//     material: sand               # preset (sand, mud, snow), or {preset: mud, sigma: 0.1},
-//                                  # or {alpha, repose_angle_deg, sigma, erosion_iterations}
+//     material: sand               # a material name: a preset (sand, mud, snow) or one a
+//                                  # solver's section defines (ground_model.materials)
 //     regions: [{material: mud, x_range_m: [a, b], y_range_m: [a, b]}]
 //   objects:
 //     - name: ball
@@ -26,8 +26,9 @@
 //       motion:                    # keyframes, times strictly increasing; one = static
 //         - {time_s: 0, position_m: [0, 0, 0.1], orientation_deg: [roll, pitch, yaw]}
 //   camera: {position_m, target_m, up, fov_y_deg, width_px, height_px}   # optional
-//   ground_model: {...}            # optional, fields of GroundModelSpec
-//   dem: {...}                     # optional, fields of DemSpec
+//   ground_model: {...}            # sections: one per solver (family), each read by the
+//   dem: {...}                     # SectionType its folder defines (scene_section.h); the
+//                                  # loader is given the list (the solver registry's)
 //
 // orientation_deg [roll, pitch, yaw] is applied as Rz(yaw) * Ry(pitch) * Rx(roll).
 // Every error is one InputError line: FILE:LINE:COL: KEY.PATH: expected WHAT, got WHAT.
@@ -37,19 +38,20 @@
 #include <yaml-cpp/yaml.h>
 
 #include "models/core/config/scene.h"
+#include "models/core/config/scene_section.h"
 
 namespace repose {
 
 // Loads and validates a scene file. Mesh and height files named by the
 // scene are read (and checked) now, relative to the scene file's folder.
-Scene load_scene(const std::string& path);
+Scene load_scene(const std::string& path, const SectionTypes& sections);
 // The same from text; `pretend_path` is used in messages and to resolve
 // relative paths.
-Scene load_scene_from_string(const std::string& yaml, const std::string& pretend_path);
+Scene load_scene_from_string(const std::string& yaml, const std::string& pretend_path, const SectionTypes& sections);
 
 // The same from a parsed document (e.g. a scene file with an experiment's
 // overrides applied); `path` is the scene file, for messages and relative paths.
-Scene load_scene_from_node(const YAML::Node& root, const std::string& path);
+Scene load_scene_from_node(const YAML::Node& root, const std::string& path, const SectionTypes& sections);
 
 // A short human summary (a few lines) for `repose check`.
 std::string describe_scene(const Scene& scene);

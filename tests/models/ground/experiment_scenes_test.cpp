@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "models/core/config/scene_loader.h"
+#include "experiments/solvers/solver_registry.h"
 #include "models/ground/simulate_ground.h"
 #include "tests/models/ground/ground_fixtures.h"
 
@@ -18,7 +19,7 @@ TEST(ExperimentScenes, EveryGroundSceneRunsAndBalances) {
     const std::string name = entry.path().filename().string();
     if (name.rfind("ground_", 0) != 0 || entry.path().extension() != ".yaml") continue;
     SCOPED_TRACE(name);
-    const Scene scene = load_scene(entry.path().string());
+    const Scene scene = load_scene(entry.path().string(), solver_registry().sections());
     const GroundModel model = build_ground_model(scene);
     const GroundRun run = simulate_ground(scene, default_params(model));
     EXPECT_TRUE(run.final_height.all_finite());

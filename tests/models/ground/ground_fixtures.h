@@ -62,7 +62,8 @@ inline Scene flat_scene(const Grid& grid, double height_m, const Material& mater
   s.name = "test";
   s.ground.grid = grid;
   s.ground.initial.height_m = height_m;
-  s.ground.material = material;
+  s = with_material(std::move(s), material);
+  s.ground.material = material.name;
   s.objects = std::move(objects);
   s.time.step_s = 1.0;
   s.time.duration_s = steps;

@@ -179,11 +179,17 @@ RandomCase random_case(std::uint64_t seed) {
   s.ground.grid.origin_y_m = uniform(rng, -1.0, 0.0) * s.ground.grid.extent_y_m();
   c.ground_m = uniform(rng, 0.0, 0.1);
   s.ground.initial.height_m = c.ground_m;
-  s.ground.material = random_material(rng);
+  Material ground_material = random_material(rng);
+  ground_material.name = "random_ground";
+  s = with_material(std::move(s), ground_material);
+  s.ground.material = ground_material.name;
   const int regions = uniform_int(rng, 0, 2);
   for (int r = 0; r < regions; ++r) {
     MaterialRegion region;
-    region.material = random_material(rng);
+    Material region_material = random_material(rng);
+    region_material.name = "random_region_" + std::to_string(r);
+    s = with_material(std::move(s), region_material);
+    region.material = region_material.name;
     const Grid& g = s.ground.grid;
     const double x0 = uniform(rng, g.origin_x_m, g.origin_x_m + g.extent_x_m());
     const double y0 = uniform(rng, g.origin_y_m, g.origin_y_m + g.extent_y_m());
@@ -196,11 +202,13 @@ RandomCase random_case(std::uint64_t seed) {
   s.time.step_s = uniform(rng, 0.01, 0.1);
   const int steps = uniform_int(rng, 3, 12);
   s.time.duration_s = s.time.step_s * steps;
-  s.ground_model.sweep = coin(rng, 0.7);
-  s.ground_model.substeps = uniform_int(rng, 1, 3);
-  s.ground_model.max_substep_angle_rad = uniform(rng, 2.0, 20.0) * kDegree;
-  s.ground_model.erosion_memory_steps = 65000;  // cells keep settling until they are settled
-  s.ground_model.coarse_factor = uniform_int(rng, 1, 3);
+  GroundModelSpec options;
+  options.sweep = coin(rng, 0.7);
+  options.substeps = uniform_int(rng, 1, 3);
+  options.max_substep_angle_rad = uniform(rng, 2.0, 20.0) * kDegree;
+  options.erosion_memory_steps = 65000;  // cells keep settling until they are settled
+  options.coarse_factor = uniform_int(rng, 1, 3);
+  s = with_ground_options(std::move(s), options);
   const int objects = uniform_int(rng, 1, 3);
   for (int o = 0; o < objects; ++o) {
     ObjectSpec object = random_object(rng, s.ground.grid, o);
@@ -211,7 +219,7 @@ RandomCase random_case(std::uint64_t seed) {
   std::ostringstream text;
   text << "seed " << seed << " (replay: REPOSE_SEED=" << seed << "): grid " << s.ground.grid.nx << "x"
        << s.ground.grid.ny << " cell " << s.ground.grid.cell_size_m << " m, " << objects << " objects, " << steps
-       << " steps, sweep " << s.ground_model.sweep << ", " << regions << " regions";
+       << " steps, sweep " << options.sweep << ", " << regions << " regions";
   c.summary = text.str();
   return c;
 }
@@ -351,7 +359,8 @@ TEST(RandomizedInvariants, SameSeedSameScene) {
   };
   EXPECT_EQ(a.scene.ground.grid.nx, b.scene.ground.grid.nx);
   EXPECT_EQ(a.scene.ground.grid.cell_size_m, b.scene.ground.grid.cell_size_m);
-  EXPECT_TRUE(a.scene.ground.material == b.scene.ground.material);
+  EXPECT_TRUE(ground_model_section(a.scene).material(a.scene.ground.material) ==
+              ground_model_section(b.scene).material(b.scene.ground.material));
   ASSERT_EQ(a.scene.objects.size(), b.scene.objects.size());
   for (std::size_t o = 0; o < a.scene.objects.size(); ++o) {
     EXPECT_TRUE(a.scene.objects[o].body.V == b.scene.objects[o].body.V);

@@ -1,6 +1,7 @@
 // Whole runs of the ground model: the extremes, sweeping, multi-resolution,
 // scenes from YAML and the two collision paths.
 #include "models/ground/simulate_ground.h"
+#include "experiments/solvers/solver_registry.h"
 
 #include <gtest/gtest.h>
 
@@ -93,7 +94,7 @@ TEST(SimulateGround, AStepThatMovesManyCells) {
   for (const bool sweep : {true, false}) {
     ObjectSpec ball = sphere(0.05, {at(0, -0.3, 0, 0.07), at(1, 0.3, 0, 0.07)});
     Scene scene = flat_scene(centred_grid(80, 40, 0.01), 0.05, sand(), {ball}, 2);
-    scene.ground_model.sweep = sweep;
+    scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.sweep = sweep; });
     expect_sane(run_scene(scene));
   }
 }
@@ -103,7 +104,7 @@ TEST(SimulateGround, AStepThatMovesManyCells) {
 TEST(SimulateGround, SlopesSettleAfterTheObjectLeaves) {
   ObjectSpec ball = sphere(0.1, {at(0, 0, 0, 0.2), at(1, 0, 0, 0.05 + 0.1 - 0.05), at(2, 0, 0, 0.3)});
   Scene scene = flat_scene(centred_grid(64, 64, 0.01), 0.05, sand(), {ball}, 300);
-  scene.ground_model.erosion_memory_steps = 10;
+  scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.erosion_memory_steps = 10; });
   const GroundRun run = run_scene(scene);
   expect_sane(run);
   EXPECT_LE(max_slope(run.final_height), std::tan(30 * kDeg) + 1.01 * kErosionToleranceFraction);
@@ -132,8 +133,8 @@ TEST(SimulateGround, SweepLeavesAContinuousFurrowNoSweepLeavesStreaks) {
   auto dragged = [](bool sweep, int substeps) {
     ObjectSpec ball = sphere(0.1, {at(0, -0.5, 0, 0.12), at(10, 0.5, 0, 0.12)});
     Scene scene = flat_scene(centred_grid(160, 60, 0.01), 0.05, sand(), {ball}, 10);
-    scene.ground_model.sweep = sweep;
-    scene.ground_model.substeps = substeps;
+    scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.sweep = sweep; });
+    scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.substeps = substeps; });
     return run_scene(scene);
   };
   const GroundRun swept = dragged(true, 1), streaky = dragged(false, 1), substepped = dragged(false, 10);
@@ -155,7 +156,7 @@ TEST(SimulateGround, MultiResolutionConservesVolume) {
     ObjectSpec ball = sphere(0.1, {at(0, -0.2, 0, 0.2), at(1, -0.2, 0, 0.11), at(5, 0.2, 0, 0.11)});
     ball.simple = true;
     Scene scene = flat_scene(centred_grid(96, 64, 0.01), 0.05, sand(), {ball}, 6);
-    scene.ground_model.coarse_factor = factor;
+    scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.coarse_factor = factor; });
     const GroundRun run = run_scene(scene);
     expect_sane(run);
     EXPECT_NE(std::find(run.stages.begin(), run.stages.end(), "multires"), run.stages.end());
@@ -193,8 +194,8 @@ TEST(SimulateGround, RegionsLaterWin) {
   Material mud, snow;
   material_preset("mud", &mud);
   material_preset("snow", &snow);
-  scene.ground.regions.push_back({mud, -0.5, 0.0, -0.5, 0.5});
-  scene.ground.regions.push_back({snow, -0.25, 0.25, -0.5, 0.5});
+  scene.ground.regions.push_back({mud.name, -0.5, 0.0, -0.5, 0.5});
+  scene.ground.regions.push_back({snow.name, -0.25, 0.25, -0.5, 0.5});
   const GroundModel model = build_ground_model(scene);
   ASSERT_EQ(model.materials.size(), 3u);
   EXPECT_EQ(model.material_at(model.cell(0, 5)), 1);  // x = -0.45: mud
@@ -219,7 +220,7 @@ objects:
       - {time_s: 0.2, position_m: [0, 0, 0.08]}
 ground_model: {erosion_memory_steps: 5}
 )";
-  const Scene scene = load_scene_from_string(yaml, "inline.yaml");
+  const Scene scene = load_scene_from_string(yaml, "inline.yaml", solver_registry().sections());
   const GroundModel model = build_ground_model(scene);
   const GroundRun run = simulate_ground(scene, default_params(model));
   expect_sane(run);
@@ -246,7 +247,7 @@ TEST(SimulateGroundOsmesa, SelectableCollisionMatchesCpu) {
   auto run = [](GroundModelSpec::Collision c) {
     ObjectSpec ball = sphere(0.1, {at(0, -0.1, 0, 0.2), at(1, -0.1, 0, 0.11), at(3, 0.1, 0, 0.11)});
     Scene scene = flat_scene(centred_grid(64, 48, 0.01), 0.05, sand(), {ball}, 4);
-    scene.ground_model.collision = c;
+    scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.collision = c; });
     const GroundModel model = build_ground_model(scene);
     return simulate_ground(model, default_params(model), HeightField(model.grid, 0.05));
   };

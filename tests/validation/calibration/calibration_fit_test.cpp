@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "experiments/solvers/solver_registry.h"
+
 #include "validation/calibration/calibration_fit.h"
 #include "validation/calibration/calibration_loader.h"
 #include "validation/calibration/calibration_problem.h"
@@ -20,15 +22,15 @@ std::string dem_indent_calibration(int threads, int seed) {
          "      - {kind: height_field, region_m: {x: [0.008, 0.072], y: [0.008, 0.072]}}\n"
          "      - {kind: crater_depth, region_m: {x: [0.024, 0.056], y: [0.024, 0.056]}}\n"
          "parameters:\n"
-         "  - {name: alpha, initial: 0.9, step: 0.05}\n"
-         "  - {name: repose_angle_deg, initial: 25, bounds: [15, 60], step: 3}\n"
+         "  - {name: ground.sand.alpha, initial: 0.9, step: 0.05}\n"
+         "  - {name: ground.sand.repose_angle_deg, initial: 25, bounds: [15, 60], step: 3}\n"
          "solver: {starts: 2, max_iterations: 4, seed: " +
          std::to_string(seed) + ", threads: " + std::to_string(threads) + "}\n";
 }
 
 CalibrationFit fit_dem_indent(int threads, int seed) {
   const std::string pretend = std::string(REPOSE_SOURCE_DIR) + "/experiments/calibration_fit_test.yaml";
-  const CalibrationProblem problem(load_calibration_from_string(dem_indent_calibration(threads, seed), pretend));
+  const CalibrationProblem problem(load_calibration_from_string(dem_indent_calibration(threads, seed), pretend), solver_registry());
   return fit_calibration(problem);
 }
 

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "experiments/solvers/solver_registry.h"
+
 #include "validation/calibration/calibration_ladder.h"
 #include "validation/calibration/calibration_loader.h"
 #include "validation/calibration/calibration_problem.h"
@@ -17,14 +19,14 @@ TEST(CalibrationLadder, OwnResolutionAtTheReferenceParametersHasNoError) {
   const CalibrationProblem problem(load_calibration_from_string(
       "scenes:\n"
       "  - scene: scenes/indent.yaml\n"
-      "    reference: {heuristic: {material: sand, alpha: 0.7, repose_angle_deg: 35, sigma: 0.15}}\n"
+      "    reference: {heuristic: {ground.sand.alpha: 0.7, ground.sand.repose_angle_deg: 35, ground.sand.sigma: 0.15}}\n"
       "    observables: [{kind: height_field}]\n"
       "parameters:\n"
-      "  - {name: alpha, initial: 0.7}\n"
-      "  - {name: repose_angle_deg, initial: 35}\n"
-      "  - {name: sigma, initial: 0.15}\n"
+      "  - {name: ground.sand.alpha, initial: 0.7}\n"
+      "  - {name: ground.sand.repose_angle_deg, initial: 35}\n"
+      "  - {name: ground.sand.sigma, initial: 0.15}\n"
       "ladder: {heuristic_cell_sizes_m: [0.008, 0.002], timing_repeats: 1}\n",
-      std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration/inline.yaml"));
+      std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration/inline.yaml"), solver_registry());
   const Ladder ladder = measure_ladder(problem, problem.initial_values());
   EXPECT_EQ(ladder.scene, "calib_indent");
   ASSERT_EQ(ladder.rungs.size(), 4u);  // 8, 4 (the scene's own, added), 2 mm, multires

@@ -7,7 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include "experiments/solvers/solver_registry.h"
+#include "models/ground/material.h"
 #include "models/core/base/error.h"
+#include "validation/calibration/calibration_problem.h"
 
 namespace repose {
 namespace {
@@ -29,15 +32,24 @@ TEST(CalibrationLoader, ReadsTheSyntheticCalibration) {
   EXPECT_EQ(spec.name, "synthetic");
   ASSERT_EQ(spec.scenes.size(), 3u);
   EXPECT_EQ(spec.scenes[0].reference.kind, ReferenceSpec::Kind::kHeuristic);
-  EXPECT_DOUBLE_EQ(*spec.scenes[0].reference.repose_angle_rad, 35.0 * kDeg);
+  ASSERT_EQ(spec.scenes[0].reference.values.size(), 3u);
+  EXPECT_EQ(spec.scenes[0].reference.values[1].first, "ground.sand.repose_angle_deg");
+  EXPECT_DOUBLE_EQ(spec.scenes[0].reference.values[1].second, 35.0);
+  EXPECT_EQ(spec.fitted_solver, "ground");
   EXPECT_EQ(spec.scenes[2].observables[1].kind, ObservableSpec::Kind::kFurrowArea);
   EXPECT_EQ(spec.scenes[2].observables[1].samples, 25);
   ASSERT_EQ(spec.parameters.size(), 3u);
-  // degrees in the file, radians inside
-  EXPECT_DOUBLE_EQ(spec.parameters[1].initial, 28.0 * kDeg);
-  EXPECT_DOUBLE_EQ(spec.parameters[1].lower, 15.0 * kDeg);
-  EXPECT_DOUBLE_EQ(spec.parameters[1].step, 2.0 * kDeg);
-  EXPECT_EQ(spec.parameters[1].label(), "sand.repose_angle_deg");
+  // as written: degrees (the solver's unit for it) until the problem resolves them
+  EXPECT_DOUBLE_EQ(spec.parameters[1].file_initial, 28.0);
+  EXPECT_DOUBLE_EQ(*spec.parameters[1].file_lower, 15.0);
+  EXPECT_DOUBLE_EQ(*spec.parameters[1].file_step, 2.0);
+  EXPECT_EQ(spec.parameters[1].label(), "ground.sand.repose_angle_deg");
+  // radians inside, once resolved against the ground solver's declaration
+  const CalibrationProblem problem(spec, solver_registry());
+  EXPECT_DOUBLE_EQ(problem.spec().parameters[1].initial, 28.0 * kDeg);
+  EXPECT_DOUBLE_EQ(problem.spec().parameters[1].lower, 15.0 * kDeg);
+  EXPECT_DOUBLE_EQ(problem.spec().parameters[1].step, 2.0 * kDeg);
+  EXPECT_EQ(problem.spec().parameters[1].unit, "deg");
   EXPECT_EQ(spec.solver.seed, 3u);
   EXPECT_EQ(spec.solver.starts, 1);
   EXPECT_FALSE(spec.ladder.has_value());
@@ -45,14 +57,16 @@ TEST(CalibrationLoader, ReadsTheSyntheticCalibration) {
 
 TEST(CalibrationLoader, DefaultsFillBoundsAndSteps) {
   const CalibrationSpec spec = load_calibration_from_string(
-      "scenes: [{scene: scenes/indent.yaml, reference: {heuristic: {alpha: 0.7}}, observables: [{kind: height_field}]}]\n"
-      "parameters: [{name: sigma, initial: 0.1}]\n",
+      "scenes: [{scene: scenes/indent.yaml, reference: {heuristic: {ground.sand.alpha: 0.7}}, observables: [{kind: height_field}]}]\n"
+      "parameters: [{name: ground.sand.sigma, initial: 0.1}]\n",
       kDir + "/inline.yaml");
-  const ParameterSpec& p = spec.parameters[0];
-  EXPECT_EQ(p.material, "sand");
+  const CalibrationProblem problem(spec, solver_registry());
+  const ParameterSpec& p = problem.spec().parameters[0];
+  EXPECT_EQ(p.solver, "ground");
+  EXPECT_EQ(p.name, "sand.sigma");
   EXPECT_GT(p.lower, 0.0);
   EXPECT_DOUBLE_EQ(p.upper, kSigmaMax);
-  EXPECT_GT(p.step, 0.0);
+  EXPECT_NEAR(p.step, 0.05 * (p.upper - p.lower), 1e-15);
   EXPECT_EQ(spec.scenes[0].role, CalibrationScene::Role::kFit);
   EXPECT_EQ(spec.solver.loss, CalibrationSolverSpec::Loss::kNone);
 }
@@ -65,8 +79,9 @@ TEST(CalibrationLoader, ReadsTheDefaultCalibration) {
   EXPECT_EQ(spec.scenes[0].reference.kind, ReferenceSpec::Kind::kData);
 }
 
-// Every file in bad/ starts with "# expect: TEXT": loading it must fail with
-// one line that names the file and contains TEXT.
+// Every file in bad/ starts with "# expect: TEXT": loading it (and making it
+// ready, which checks its parameters against the solver's declarations) must
+// fail with one line that names the file and contains TEXT.
 TEST(CalibrationLoader, MalformedFilesGiveClearErrors) {
   int files = 0;
   for (const auto& entry : fs::directory_iterator(kDir + "/bad")) {
@@ -77,7 +92,7 @@ TEST(CalibrationLoader, MalformedFilesGiveClearErrors) {
     ASSERT_EQ(header.rfind(prefix, 0), 0u) << entry.path() << " lacks an '# expect:' first line";
     const std::string expected = header.substr(prefix.size());
     try {
-      load_calibration(entry.path().string());
+      CalibrationProblem problem(load_calibration(entry.path().string()), solver_registry());
       ADD_FAILURE() << entry.path() << " loaded without an error";
     } catch (const InputError& e) {
       const std::string message = e.what();

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "experiments/solvers/solver_registry.h"
+
 #include "validation/calibration/calibration_fit.h"
 #include "validation/calibration/calibration_loader.h"
 #include "validation/calibration/calibration_problem.h"
@@ -25,7 +27,7 @@ struct Truth {
 };
 
 TEST(CalibrationRecovery, RecoversKnownParametersFromPileIndentationAndDrag) {
-  const CalibrationProblem problem(load_calibration(kDir + "/synthetic.yaml"));
+  const CalibrationProblem problem(load_calibration(kDir + "/synthetic.yaml"), solver_registry());
   const CalibrationFit fit = fit_calibration(problem);
   const Truth truth[] = {{0.7, 0.02}, {35.0 * kDeg, 1.0 * kDeg}, {0.15, 0.02}};
   ASSERT_EQ(problem.free().size(), 3u);
@@ -53,13 +55,13 @@ TEST(CalibrationRecovery, ReportsParametersTheDataDoesNotDetermine) {
   const CalibrationProblem problem(load_calibration_from_string(
       "scenes:\n"
       "  - scene: scenes/indent.yaml\n"
-      "    reference: {heuristic: {material: sand, alpha: 0.7, repose_angle_deg: 35, sigma: 0.15}}\n"
+      "    reference: {heuristic: {ground.sand.alpha: 0.7, ground.sand.repose_angle_deg: 35, ground.sand.sigma: 0.15}}\n"
       "    observables: [{kind: height_field, region_m: {x: [0, 0.008], y: [0, 0.008]}}]\n"
       "parameters:\n"
-      "  - {name: alpha, initial: 0.5}\n"
-      "  - {name: repose_angle_deg, initial: 28, bounds: [15, 60]}\n"
+      "  - {name: ground.sand.alpha, initial: 0.5}\n"
+      "  - {name: ground.sand.repose_angle_deg, initial: 28, bounds: [15, 60]}\n"
       "solver: {starts: 1, max_iterations: 3}\n",
-      kDir + "/inline.yaml"));
+      kDir + "/inline.yaml"), solver_registry());
   const CalibrationFit fit = fit_calibration(problem);
   for (std::size_t k = 0; k < problem.free().size(); ++k) {
     EXPECT_EQ(determination(fit, problem, k), "undetermined");
@@ -74,13 +76,13 @@ TEST(CalibrationRecovery, OneScalarCannotDetermineTwoParameters) {
   const CalibrationProblem problem(load_calibration_from_string(
       "scenes:\n"
       "  - scene: scenes/indent.yaml\n"
-      "    reference: {heuristic: {material: sand, alpha: 0.7, repose_angle_deg: 35, sigma: 0.15}}\n"
+      "    reference: {heuristic: {ground.sand.alpha: 0.7, ground.sand.repose_angle_deg: 35, ground.sand.sigma: 0.15}}\n"
       "    observables: [{kind: crater_depth, region_m: {x: [0.016, 0.048], y: [0.016, 0.048]}}]\n"
       "parameters:\n"
-      "  - {name: alpha, initial: 0.5}\n"
-      "  - {name: repose_angle_deg, initial: 28, bounds: [15, 60]}\n"
+      "  - {name: ground.sand.alpha, initial: 0.5}\n"
+      "  - {name: ground.sand.repose_angle_deg, initial: 28, bounds: [15, 60]}\n"
       "solver: {starts: 1, max_iterations: 5}\n",
-      kDir + "/inline.yaml"));
+      kDir + "/inline.yaml"), solver_registry());
   const CalibrationFit fit = fit_calibration(problem);
   int undetermined = 0;
   for (std::size_t k = 0; k < 2; ++k) undetermined += fit.uncertainty.determined[k] ? 0 : 1;

@@ -47,11 +47,11 @@ TEST_F(ColumnCollapseRun, CylinderColumnSlumpsIntoAPile) {
 
   // the settled column: its grains fill it at a packing fraction between 0.4 (a narrow
   // cylinder packs loosely at its wall) and 0.65, where 0.6 was assumed to count them
-  const double d = 2 * scene.dem->grain_radius_m;
+  const double d = 2 * dem_of(scene)->grain_radius_m;
   EXPECT_GT(c.height_initial_m, 0.03 * 0.6 / 0.65);
   EXPECT_LT(c.height_initial_m, 0.03 * 0.6 / 0.4 + d);
-  EXPECT_LE(c.front_initial_m, 0.012 + 0.1 * scene.dem->grain_radius_m);  // grains press slightly into the wall
-  EXPECT_GT(c.front_initial_m, 0.012 - 2 * scene.dem->grain_radius_m);
+  EXPECT_LE(c.front_initial_m, 0.012 + 0.1 * dem_of(scene)->grain_radius_m);  // grains press slightly into the wall
+  EXPECT_GT(c.front_initial_m, 0.012 - 2 * dem_of(scene)->grain_radius_m);
   // released: the front advanced, the top came down
   EXPECT_GT(c.runout_normalised, 0.2);
   EXPECT_LT(c.height_final_m, 0.8 * c.height_initial_m);

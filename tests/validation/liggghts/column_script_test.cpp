@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "models/core/base/error.h"
+#include "validation/particles/dem_section.h"
 #include "tests/validation/liggghts/dem_test_scene.h"
 #include "validation/liggghts/liggghts_script.h"
 
@@ -24,7 +25,7 @@ TEST(ColumnScript, SlotGeometryLeansOnTheGridsXMinEdgeAndSpansItsY) {
   EXPECT_DOUBLE_EQ(c.gate_x_m, 0.016);
   EXPECT_DOUBLE_EQ(c.gap_m, 0.012);
   EXPECT_DOUBLE_EQ(c.footprint_m2, 0.016 * 0.012);
-  EXPECT_DOUBLE_EQ(settled_height_m(*s.dem), 0.03);
+  EXPECT_DOUBLE_EQ(settled_height_m(*dem_of(s)), 0.03);
 }
 
 TEST(ColumnScript, CylinderStandsOnTheGridsCentre) {
@@ -39,7 +40,7 @@ TEST(ColumnScript, GrainCountFillsTheFootprintToTheColumnHeight) {
   for (Shape shape : {Shape::kSlot, Shape::kCylinder}) {
     const Scene s = testing::column_dem_scene(shape, 0.04);
     const BedScriptOptions o;
-    const double expected = column_geometry(s).footprint_m2 * 0.04 * o.packing_fraction / mean_grain_volume_m3(*s.dem);
+    const double expected = column_geometry(s).footprint_m2 * 0.04 * o.packing_fraction / mean_grain_volume_m3(*dem_of(s));
     EXPECT_NEAR(static_cast<double>(bed_grain_count(s, o)), expected, 0.5);
     // twice as tall: twice the grains
     const Scene tall = testing::column_dem_scene(shape, 0.08);
@@ -76,23 +77,23 @@ TEST(ColumnScript, RunScriptHasNoGateAndRoomAboveTheColumn) {
     EXPECT_EQ(run.text.find("gate"), std::string::npos) << run.text;
     EXPECT_EQ(run.text.find("zcylinder"), std::string::npos);
     EXPECT_GE(run.domain.z_max_m, 1.25 * 0.05);
-    EXPECT_EQ(run.total_steps, std::lround(s.time.duration_s / s.dem->time_step_s));
+    EXPECT_EQ(run.total_steps, std::lround(s.time.duration_s / dem_of(s)->time_step_s));
   }
 }
 
 TEST(ColumnScript, BedScenesAreUnchangedByTheColumnFields) {
   Scene bed = testing::small_dem_scene(false);
   const std::string before = bed_script(bed);
-  bed.dem->column_width_m = 0.5;  // unused for a bed
-  bed.dem->column_height_m = 0.5;
+  bed = with_dem_changed(std::move(bed), [&](DemSpec& d) { d.column_width_m = 0.5; });  // unused for a bed
+  bed = with_dem_changed(std::move(bed), [&](DemSpec& d) { d.column_height_m = 0.5; });
   EXPECT_EQ(bed_script(bed), before);
   EXPECT_EQ(before.find("gate"), std::string::npos);
 }
 
 TEST(ColumnScript, RoughFloorIsASecondAtomTypeWithItsOwnRollingFriction) {
   Scene s = testing::column_dem_scene(Shape::kCylinder, 0.03);
-  s.dem->rolling_friction = 0.1;
-  s.dem->floor_rolling_friction = 0.7;
+  s = with_dem_changed(std::move(s), [&](DemSpec& d) { d.rolling_friction = 0.1; });
+  s = with_dem_changed(std::move(s), [&](DemSpec& d) { d.floor_rolling_friction = 0.7; });
   for (const std::string& script : {bed_script(s), run_script(s).text}) {
     EXPECT_NE(script.find("coefficientRollingFriction peratomtypepair 2 0.1 0.7 0.7 0.7\n"), std::string::npos)
         << script;
@@ -104,22 +105,22 @@ TEST(ColumnScript, RoughFloorIsASecondAtomTypeWithItsOwnRollingFriction) {
   // the grains themselves are all of type 1
   EXPECT_EQ(bed_script(s).find("atom_type 2"), std::string::npos);
 
-  s.dem->floor = DemSpec::Floor::kSmooth;  // one type; the floor rolling friction is unused
+  s = with_dem_changed(std::move(s), [&](DemSpec& d) { d.floor = DemSpec::Floor::kSmooth; });  // one type; the floor rolling friction is unused
   const std::string smooth = bed_script(s);
   EXPECT_NE(smooth.find("create_box 1 domain\n"), std::string::npos);
   EXPECT_NE(smooth.find("coefficientRollingFriction peratomtypepair 1 0.1\n"), std::string::npos);
-  s.dem->floor_rolling_friction = 0.2;
+  s = with_dem_changed(std::move(s), [&](DemSpec& d) { d.floor_rolling_friction = 0.2; });
   EXPECT_EQ(bed_script(s), smooth);
 }
 
 TEST(ColumnScript, RefusesColumnsThatDoNotFitTheGrid) {
   Scene slot = testing::column_dem_scene(Shape::kSlot, 0.03);
-  slot.dem->column_width_m = 0.2;  // longer than the 16 cm grid
+  slot = with_dem_changed(std::move(slot), [&](DemSpec& d) { d.column_width_m = 0.2; });  // longer than the 16 cm grid
   EXPECT_THROW(bed_script(slot), InputError);
   EXPECT_THROW(run_script(slot), InputError);
 
   Scene cylinder = testing::column_dem_scene(Shape::kCylinder, 0.03);
-  cylinder.dem->column_width_m = 0.07;  // wider than the 12 cm grid
+  cylinder = with_dem_changed(std::move(cylinder), [&](DemSpec& d) { d.column_width_m = 0.07; });  // wider than the 12 cm grid
   EXPECT_THROW(bed_script(cylinder), InputError);
   try {
     run_script(cylinder);

@@ -4,6 +4,7 @@
 // optionally a sphere of radius 8 mm pressed 6 mm into the bed and lifted out.
 
 #include "models/core/config/scene.h"
+#include "validation/particles/dem_section.h"
 #include "models/core/geometry/triangle_mesh.h"
 
 namespace repose::testing {
@@ -21,7 +22,7 @@ inline Scene small_dem_scene(bool with_indenter) {
   dem.bed_depth_m = 0.012;
   dem.time_step_s = 1.0e-5;
   dem.dump_interval_s = 0.05;
-  s.dem = dem;
+  s = with_dem(std::move(s), dem);
   if (with_indenter) {
     ObjectSpec ball;
     ball.name = "ball";
@@ -63,7 +64,7 @@ inline Scene column_dem_scene(DemSpec::ColumnShape shape, double height_m) {
   dem.column_width_m = slot ? 0.016 : 0.012;
   dem.column_height_m = height_m;
   dem.floor = DemSpec::Floor::kRough;
-  s.dem = dem;
+  s = with_dem(std::move(s), dem);
   return s;
 }
 

@@ -43,9 +43,9 @@ TEST_F(LiggghtsReference, SmallBedAndIndenterFromSceneToObservables) {
   EXPECT_NE(r.run.version.find("LIGGGHTS"), std::string::npos);
 
   // the settled surface lies near the bed depth (within a grain diameter)
-  const double d = 2 * scene.dem->grain_radius_m;
+  const double d = 2 * dem_of(scene)->grain_radius_m;
   const double mean_initial = r.height_initial.heights().mean();
-  EXPECT_NEAR(mean_initial, scene.dem->bed_depth_m, d);
+  EXPECT_NEAR(mean_initial, dem_of(scene)->bed_depth_m, d);
 
   // no grain left the box; the final surface is finite and below the box top
   const auto dumps = list_dump_files((dir_ / "run" / "dumps").string());

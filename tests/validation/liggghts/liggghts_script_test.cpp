@@ -1,4 +1,5 @@
 #include "validation/liggghts/liggghts_script.h"
+#include "validation/particles/dem_section.h"
 
 #include <cmath>
 #include <numbers>
@@ -18,7 +19,7 @@ namespace {
 std::string message_of_refused_step(double step_s, DemSpec dem) {
   dem.time_step_s = step_s;
   try {
-    check_dem_spec(dem);
+    validate(dem);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -46,7 +47,7 @@ TEST(LiggghtsScript, RefusesAStepAboveTwentyPercentOfTheRayleighTime) {
   EXPECT_NO_THROW({
     DemSpec ok = dem;
     ok.time_step_s = 0.199 * t_r;
-    check_dem_spec(ok);
+    validate(ok);
   });
   const std::string message = message_of_refused_step(0.21 * t_r, dem);
   ASSERT_FALSE(message.empty()) << "a step of 21 % of the Rayleigh time was accepted";
@@ -56,21 +57,21 @@ TEST(LiggghtsScript, RefusesAStepAboveTwentyPercentOfTheRayleighTime) {
   EXPECT_NE(message.find(fmt::format("{:.6g}", 0.2 * t_r)), std::string::npos) << message;
   // and the scripts refuse it too
   Scene scene = testing::small_dem_scene(false);
-  scene.dem->time_step_s = 0.5 * t_r;
+  scene = with_dem_changed(std::move(scene), [&](DemSpec& d) { d.time_step_s = 0.5 * t_r; });
   EXPECT_THROW(bed_script(scene), InputError);
   EXPECT_THROW(run_script(scene), InputError);
 }
 
 TEST(LiggghtsScript, RefusesASceneWithoutDemAndBadParameters) {
   Scene scene = testing::small_dem_scene(false);
-  scene.dem.reset();
+  scene.sections.erase(DemSection::kKey);
   EXPECT_THROW(bed_script(scene), InputError);
   DemSpec dem;
   dem.restitution = 0.0;
-  EXPECT_THROW(check_dem_spec(dem), InputError);
+  EXPECT_THROW(validate(dem), InputError);
   dem = DemSpec{};
   dem.radius_spread = 0.5;
-  EXPECT_THROW(check_dem_spec(dem), InputError);
+  EXPECT_THROW(validate(dem), InputError);
 }
 
 TEST(LiggghtsScript, RefusesBedsTooLargeToRun) {
@@ -118,8 +119,8 @@ TEST(LiggghtsScript, BedScriptIsDeterministicAndHoldsTheContactModel) {
   other.seed = 8;
   EXPECT_NE(a, bed_script(other));
   other = scene;
-  other.dem->cohesion_energy_density_j_m3 = 3e5;
-  other.dem->rolling_model = DemSpec::RollingModel::kEpsd2;
+  other = with_dem_changed(std::move(other), [&](DemSpec& d) { d.cohesion_energy_density_j_m3 = 3e5; });
+  other = with_dem_changed(std::move(other), [&](DemSpec& d) { d.rolling_model = DemSpec::RollingModel::kEpsd2; });
   const std::string c = bed_script(other);
   EXPECT_NE(c.find("rolling_friction epsd2 cohesion sjkr\n"), std::string::npos);
   EXPECT_NE(c.find("cohesionEnergyDensity peratomtypepair 1 " + liggghts_number(3e5)), std::string::npos);
@@ -128,9 +129,9 @@ TEST(LiggghtsScript, BedScriptIsDeterministicAndHoldsTheContactModel) {
 TEST(LiggghtsScript, BedGrainCountFillsTheBedDepthAtThePackingFraction) {
   const Scene scene = testing::small_dem_scene(false);
   BedScriptOptions o;
-  const double volume = bed_grain_count(scene, o) * mean_grain_volume_m3(*scene.dem);
-  EXPECT_NEAR(volume / (0.04 * 0.04 * o.packing_fraction), scene.dem->bed_depth_m, 1e-4);
-  const auto radii = grain_radii_m(*scene.dem);
+  const double volume = bed_grain_count(scene, o) * mean_grain_volume_m3(*dem_of(scene));
+  EXPECT_NEAR(volume / (0.04 * 0.04 * o.packing_fraction), dem_of(scene)->bed_depth_m, 1e-4);
+  const auto radii = grain_radii_m(*dem_of(scene));
   ASSERT_EQ(radii.size(), 5u);
   EXPECT_DOUBLE_EQ(radii.front(), 0.0018);
   EXPECT_DOUBLE_EQ(radii.back(), 0.0022);
@@ -163,7 +164,7 @@ TEST(LiggghtsScript, RunScriptMovesObjectsThroughTheirKeyframes) {
     if (line.rfind("change_box", 0) == 0) after_change_box = true;
     if (std::regex_match(line, m, move)) velocity = {std::stod(m[1]), std::stod(m[2]), std::stod(m[3])};
     if (after_change_box && std::regex_match(line, m, run)) {
-      position += velocity * std::stod(m[1]) * scene.dem->time_step_s;
+      position += velocity * std::stod(m[1]) * dem_of(scene)->time_step_s;
       z_after_runs.push_back(position.z());
     }
     if (line.rfind("unfix move", 0) == 0) velocity.setZero();
@@ -187,7 +188,7 @@ TEST(LiggghtsScript, RunScriptRotatesObjectsBetweenKeyframes) {
     turns.push_back(*it);
   }
   ASSERT_EQ(turns.size(), 2u);
-  const double span_s = 10000 * scene.dem->time_step_s;  // each segment: 0.1 s
+  const double span_s = 10000 * dem_of(scene)->time_step_s;  // each segment: 0.1 s
   for (std::size_t k = 0; k < 2; ++k) {
     const std::smatch& m = turns[k];
     // about x through the body origin at the segment's start (the top keyframe, then the bottom one)

@@ -79,7 +79,7 @@ TEST_F(RotatingMesh, MeshEndsEachSegmentAtTheKeyframedPose) {
   scene.objects.push_back(paddle);
 
   // a one-grain "bed"
-  const DemSpec& dem = *scene.dem;
+  const DemSpec& dem = *dem_of(scene);
   std::ofstream(dir_ / "bed.in") << fmt::format(
       "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\ncommunicate single vel yes\n"
       "units si\nregion domain block 0 0.04 0 0.04 0 0.02 units box\ncreate_box {} domain\n"

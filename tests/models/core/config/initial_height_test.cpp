@@ -1,4 +1,5 @@
 #include "models/core/config/initial_height.h"
+#include "experiments/solvers/solver_registry.h"
 
 #include <gtest/gtest.h>
 
@@ -29,7 +30,7 @@ ground:
 }
 
 Scene noise_scene(std::uint64_t seed, double correlation_m) {
-  return load_scene_from_string(fmt_scene(seed, correlation_m), (kGood / "noise.yaml").string());
+  return load_scene_from_string(fmt_scene(seed, correlation_m), (kGood / "noise.yaml").string(), solver_registry().sections());
 }
 
 bool bit_identical(const HeightField& a, const HeightField& b) {
@@ -45,7 +46,7 @@ double lag1_correlation(const HeightField& f) {
 }
 
 TEST(InitialHeight, FlatIsFlat) {
-  const HeightField f = make_initial_height(load_scene((kGood / "minimal.yaml").string()));
+  const HeightField f = make_initial_height(load_scene((kGood / "minimal.yaml").string(), solver_registry().sections()));
   EXPECT_EQ(f.nx(), 50);
   EXPECT_EQ(f.min_height_m(), 0.02);
   EXPECT_EQ(f.max_height_m(), 0.02);
@@ -77,7 +78,7 @@ TEST(InitialHeight, CorrelationLengthSmoothsTheNoise) {
 }
 
 TEST(InitialHeight, NpyHeightsAreMetresPlusOffset) {
-  const Scene s = load_scene((kGood / "npy_height.yaml").string());
+  const Scene s = load_scene((kGood / "npy_height.yaml").string(), solver_registry().sections());
   const HeightField f = make_initial_height(s);
   ASSERT_EQ(f.nx(), 16);
   ASSERT_EQ(f.ny(), 8);
@@ -87,7 +88,7 @@ TEST(InitialHeight, NpyHeightsAreMetresPlusOffset) {
 }
 
 TEST(InitialHeight, PngHeightsAreScaledAndRowZeroIsSmallestY) {
-  const Scene s = load_scene((kGood / "png_height.yaml").string());
+  const Scene s = load_scene((kGood / "png_height.yaml").string(), solver_registry().sections());
   const HeightField f = make_initial_height(s);
   ASSERT_EQ(f.nx(), 16);
   ASSERT_EQ(f.ny(), 8);
@@ -97,18 +98,17 @@ TEST(InitialHeight, PngHeightsAreScaledAndRowZeroIsSmallestY) {
 }
 
 TEST(MaterialAt, RegionsCoverTheirRectanglesAndLaterOnesWin) {
-  const Scene s = load_scene((kGood / "all_features.yaml").string());
-  EXPECT_EQ(material_at(s.ground, 0.25, 0.0).name, "snow");
-  EXPECT_EQ(material_at(s.ground, 1.5, 0.1).name, "gravel");
-  EXPECT_EQ(material_at(s.ground, 0.75, 0.0).name, "mud");
-  EXPECT_DOUBLE_EQ(material_at(s.ground, 0.75, 0.0).sigma, 0.1);
+  const Scene s = load_scene((kGood / "all_features.yaml").string(), solver_registry().sections());
+  EXPECT_EQ(material_at(s.ground, 0.25, 0.0), "snow");
+  EXPECT_EQ(material_at(s.ground, 1.5, 0.1), "gravel");
+  EXPECT_EQ(material_at(s.ground, 0.75, 0.0), "mud");
   GroundSpec g = s.ground;
   MaterialRegion top = g.regions[1];
-  top.material.name = "top";
+  top.material = "top";
   top.x_min_m = 1.4;
   g.regions.push_back(top);
-  EXPECT_EQ(material_at(g, 1.5, 0.1).name, "top");
-  EXPECT_EQ(material_at(g, 1.2, 0.1).name, "gravel");
+  EXPECT_EQ(material_at(g, 1.5, 0.1), "top");
+  EXPECT_EQ(material_at(g, 1.2, 0.1), "gravel");
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "models/core/config/scene_loader.h"
+#include "experiments/solvers/solver_registry.h"
 
 #include <gtest/gtest.h>
 
@@ -9,6 +10,8 @@
 #include <regex>
 
 #include "models/core/base/error.h"
+#include "models/ground/ground_section.h"
+#include "validation/particles/dem_section.h"
 
 namespace repose {
 namespace {
@@ -21,7 +24,7 @@ const fs::path kScenes = fs::path(REPOSE_SOURCE_DIR) / "tests/data/scenes";
 // The message load_scene throws for `path`, or "" when it loads.
 std::string error_of(const std::string& path) {
   try {
-    load_scene(path);
+    load_scene(path, solver_registry().sections());
   } catch (const InputError& e) {
     return e.what();
   }
@@ -30,14 +33,14 @@ std::string error_of(const std::string& path) {
 
 std::string error_of_text(const std::string& yaml) {
   try {
-    load_scene_from_string(yaml, (kScenes / "good/inline.yaml").string());
+    load_scene_from_string(yaml, (kScenes / "good/inline.yaml").string(), solver_registry().sections());
   } catch (const InputError& e) {
     return e.what();
   }
   return "";
 }
 
-Scene load_text(const std::string& yaml) { return load_scene_from_string(yaml, (kScenes / "good/inline.yaml").string()); }
+Scene load_text(const std::string& yaml) { return load_scene_from_string(yaml, (kScenes / "good/inline.yaml").string(), solver_registry().sections()); }
 
 std::vector<fs::path> yaml_files_in(const fs::path& dir) {
   std::vector<fs::path> files;
@@ -93,8 +96,8 @@ TEST(SceneLoader, ErrorsPointAtTheOffendingLineAndColumn) {
 }
 
 TEST(SceneLoader, MissingSceneFileIsAnInputError) {
-  EXPECT_THROW(load_scene((kScenes / "no_such_scene.yaml").string()), InputError);
-  EXPECT_THROW(load_scene(kScenes.string()), InputError);
+  EXPECT_THROW(load_scene((kScenes / "no_such_scene.yaml").string(), solver_registry().sections()), InputError);
+  EXPECT_THROW(load_scene(kScenes.string(), solver_registry().sections()), InputError);
 }
 
 TEST(SceneLoader, EveryGoodSceneLoads) {
@@ -102,7 +105,7 @@ TEST(SceneLoader, EveryGoodSceneLoads) {
   ASSERT_GE(files.size(), 4u);
   for (const fs::path& file : files) {
     SCOPED_TRACE(file.string());
-    const Scene s = load_scene(file.string());
+    const Scene s = load_scene(file.string(), solver_registry().sections());
     EXPECT_GT(s.time.step_count(), 0);
     EXPECT_GT(s.ground.grid.cell_count(), 0u);
     for (const ObjectSpec& o : s.objects) {
@@ -115,7 +118,7 @@ TEST(SceneLoader, EveryGoodSceneLoads) {
 }
 
 TEST(SceneLoader, TheDefaultGroundSceneLoads) {
-  const Scene s = load_scene(std::string(REPOSE_SOURCE_DIR) + "/experiments/scenes/default_ground.yaml");
+  const Scene s = load_scene(std::string(REPOSE_SOURCE_DIR) + "/experiments/scenes/default_ground.yaml", solver_registry().sections());
   EXPECT_EQ(s.ground.grid.nx, 256);
   EXPECT_EQ(s.ground.grid.ny, 256);
   EXPECT_EQ(s.time.step_count(), 60);  // 2 s at 30 fps
@@ -124,7 +127,7 @@ TEST(SceneLoader, TheDefaultGroundSceneLoads) {
 }
 
 TEST(SceneLoader, DefaultsAreFilled) {
-  const Scene s = load_scene((kScenes / "good/minimal.yaml").string());
+  const Scene s = load_scene((kScenes / "good/minimal.yaml").string(), solver_registry().sections());
   EXPECT_EQ(s.name, "minimal");
   EXPECT_EQ(s.seed, 0u);
   EXPECT_TRUE(fs::path(s.source_path).is_absolute());
@@ -134,18 +137,19 @@ TEST(SceneLoader, DefaultsAreFilled) {
   // centred on the world origin
   EXPECT_DOUBLE_EQ(s.ground.grid.origin_x_m, -0.25);
   EXPECT_DOUBLE_EQ(s.ground.grid.origin_y_m, -0.125);
-  Material sand;
-  ASSERT_TRUE(material_preset("sand", &sand));
-  EXPECT_EQ(s.ground.material, sand);
+  EXPECT_EQ(s.ground.material, "sand");
   EXPECT_TRUE(s.ground.regions.empty());
   EXPECT_TRUE(s.objects.empty());
   EXPECT_FALSE(s.camera.has_value());
-  EXPECT_FALSE(s.dem.has_value());
+  EXPECT_EQ(dem_of(s), nullptr);
+  // the ground model's section is read for every scene: its defaults
+  ASSERT_NE(s.section<GroundModelSection>(), nullptr);
   const GroundModelSpec defaults;
-  EXPECT_EQ(s.ground_model.sweep, defaults.sweep);
-  EXPECT_EQ(s.ground_model.substeps, defaults.substeps);
-  EXPECT_EQ(s.ground_model.coarse_factor, defaults.coarse_factor);
-  EXPECT_EQ(s.ground_model.collision, defaults.collision);
+  const GroundModelSpec& options = ground_model_section(s).options;
+  EXPECT_EQ(options.sweep, defaults.sweep);
+  EXPECT_EQ(options.substeps, defaults.substeps);
+  EXPECT_EQ(options.coarse_factor, defaults.coarse_factor);
+  EXPECT_EQ(options.collision, defaults.collision);
   EXPECT_EQ(s.time.step_count(), 10);
 }
 
@@ -156,32 +160,36 @@ TEST(SceneLoader, PresetsHaveThePapersValues) {
   };
   for (const Expected& e : {Expected{"sand", 30, 1.0}, Expected{"mud", 60, 0.8}, Expected{"snow", 90, 0.0}}) {
     const Scene s = load_text(kGround + "  material: " + e.name + "\n");
-    EXPECT_EQ(s.ground.material.name, e.name);
-    EXPECT_NEAR(s.ground.material.repose_angle_rad, e.angle_deg * kDeg, 1e-15);
-    EXPECT_DOUBLE_EQ(s.ground.material.alpha, e.alpha);
-    EXPECT_DOUBLE_EQ(s.ground.material.sigma, 0.2);
+    const Material m = ground_model_section(s).material(s.ground.material);
+    EXPECT_EQ(m.name, e.name);
+    EXPECT_NEAR(m.repose_angle_rad, e.angle_deg * kDeg, 1e-15);
+    EXPECT_DOUBLE_EQ(m.alpha, e.alpha);
+    EXPECT_DOUBLE_EQ(m.sigma, 0.2);
   }
 }
 
 TEST(SceneLoader, PresetFieldsCanBeOverridden) {
-  const Scene s = load_text(kGround + "  material: {preset: mud, sigma: 0.1}\n");
-  EXPECT_EQ(s.ground.material.name, "mud");
-  EXPECT_DOUBLE_EQ(s.ground.material.sigma, 0.1);
-  EXPECT_DOUBLE_EQ(s.ground.material.alpha, 0.8);
+  const Scene s = load_text(kGround + "  material: clay\nground_model: {materials: {clay: {preset: mud, sigma: 0.1}}}\n");
+  const Material m = ground_model_section(s).material("clay");
+  EXPECT_EQ(m.name, "clay");
+  EXPECT_DOUBLE_EQ(m.sigma, 0.1);
+  EXPECT_DOUBLE_EQ(m.alpha, 0.8);
 }
 
 TEST(SceneLoader, ExplicitMaterialNeedsEveryParameter) {
-  const std::string message = error_of_text(kGround + "  material: {alpha: 0.5, sigma: 0.2}\n");
-  EXPECT_NE(message.find("ground.material.repose_angle_deg: expected a value for every parameter"), std::string::npos)
+  const std::string message =
+      error_of_text(kGround + "  material: rock\nground_model: {materials: {rock: {alpha: 0.5, sigma: 0.2}}}\n");
+  EXPECT_NE(message.find("ground_model.materials.rock.repose_angle_deg: expected a value for every parameter"),
+            std::string::npos)
       << message;
 }
 
 TEST(SceneLoader, DegreesBecomeRadians) {
-  const Scene s = load_scene((kScenes / "good/all_features.yaml").string());
-  EXPECT_NEAR(s.ground.regions[1].material.repose_angle_rad, 45 * kDeg, 1e-15);
+  const Scene s = load_scene((kScenes / "good/all_features.yaml").string(), solver_registry().sections());
+  EXPECT_NEAR(ground_model_section(s).material(s.ground.regions[1].material).repose_angle_rad, 45 * kDeg, 1e-15);
   ASSERT_TRUE(s.camera.has_value());
   EXPECT_NEAR(s.camera->fov_y_rad, 50 * kDeg, 1e-15);
-  EXPECT_NEAR(s.ground_model.max_substep_angle_rad, 2.5 * kDeg, 1e-15);
+  EXPECT_NEAR(ground_model_section(s).options.max_substep_angle_rad, 2.5 * kDeg, 1e-15);
   // yaw 90 deg turns the crate's x axis onto y
   const Eigen::Vector3d x_turned = s.objects[0].keyframes[0].pose.orientation * Eigen::Vector3d::UnitX();
   EXPECT_NEAR((x_turned - Eigen::Vector3d::UnitY()).norm(), 0.0, 1e-12);
@@ -201,7 +209,7 @@ TEST(SceneLoader, OrientationIsYawAfterPitchAfterRoll) {
 }
 
 TEST(SceneLoader, BodiesAreTessellatedAndScaled) {
-  const Scene s = load_scene((kScenes / "good/all_features.yaml").string());
+  const Scene s = load_scene((kScenes / "good/all_features.yaml").string(), solver_registry().sections());
   ASSERT_EQ(s.objects.size(), 4u);
   const Aabb crate = bounding_box(s.objects[0].body);
   EXPECT_NEAR((crate.max - Eigen::Vector3d(0.1, 0.05, 0.05)).norm(), 0.0, 1e-15);
@@ -287,8 +295,9 @@ void expect_same_scene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.ground.initial.kind, b.ground.initial.kind);
   EXPECT_EQ(a.ground.initial.height_m, b.ground.initial.height_m);
   EXPECT_EQ(a.ground.initial.path, b.ground.initial.path);
-  EXPECT_EQ(a.ground.material.name, b.ground.material.name);
-  EXPECT_NEAR(a.ground.material.repose_angle_rad, b.ground.material.repose_angle_rad, 1e-15);
+  EXPECT_EQ(a.ground.material, b.ground.material);
+  EXPECT_NEAR(ground_model_section(a).material(a.ground.material).repose_angle_rad,
+              ground_model_section(b).material(b.ground.material).repose_angle_rad, 1e-15);
   ASSERT_EQ(a.ground.regions.size(), b.ground.regions.size());
   ASSERT_EQ(a.objects.size(), b.objects.size());
   for (std::size_t k = 0; k < a.objects.size(); ++k) {
@@ -305,24 +314,25 @@ void expect_same_scene(const Scene& a, const Scene& b) {
     }
   }
   EXPECT_EQ(a.camera.has_value(), b.camera.has_value());
-  EXPECT_EQ(a.dem.has_value(), b.dem.has_value());
-  if (a.dem && b.dem) {
-    EXPECT_EQ(a.dem->rolling_model, b.dem->rolling_model);
+  EXPECT_EQ(dem_of(a) != nullptr, dem_of(b) != nullptr);
+  if (dem_of(a) && dem_of(b)) {
+    EXPECT_EQ(dem_of(a)->rolling_model, dem_of(b)->rolling_model);
   }
-  EXPECT_EQ(a.ground_model.collision, b.ground_model.collision);
-  EXPECT_EQ(a.ground_model.substeps, b.ground_model.substeps);
+  EXPECT_EQ(ground_model_section(a).options.collision, ground_model_section(b).options.collision);
+  EXPECT_EQ(ground_model_section(a).options.substeps, ground_model_section(b).options.substeps);
+  EXPECT_EQ(ground_model_section(a).materials.size(), ground_model_section(b).materials.size());
 }
 
 TEST(SceneLoader, TheResolvedSceneReadsBackToTheSameScene) {
   for (const fs::path& file : yaml_files_in(kScenes / "good")) {
     SCOPED_TRACE(file.string());
-    const Scene s = load_scene(file.string());
+    const Scene s = load_scene(file.string(), solver_registry().sections());
     const std::string yaml = scene_to_yaml(s);
     // every default is written out
-    EXPECT_NE(yaml.find("erosion_iterations"), std::string::npos);
+    EXPECT_NE(yaml.find("erosion_memory_steps"), std::string::npos);
     EXPECT_NE(yaml.find("ground_model"), std::string::npos);
     // written to another folder: paths inside are absolute, so they still resolve
-    const Scene back = load_scene_from_string(yaml, (fs::temp_directory_path() / file.filename()).string());
+    const Scene back = load_scene_from_string(yaml, (fs::temp_directory_path() / file.filename()).string(), solver_registry().sections());
     expect_same_scene(s, back);
   }
 }

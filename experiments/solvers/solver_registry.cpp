@@ -1,0 +1,26 @@
+#include "experiments/solvers/solver_registry.h"
+
+#include "models/core/solver/initial_solver.h"
+#include "models/ground/ground_solver.h"
+#include "validation/liggghts/liggghts_solver.h"
+
+namespace repose {
+
+namespace {
+
+SolverRegistry make_registry() {
+  SolverRegistry registry;
+  registry.add(std::make_shared<GroundSolver>());
+  registry.add(std::make_shared<LiggghtsSolver>());
+  registry.add(std::make_shared<InitialSolver>());
+  return registry;
+}
+
+}  // namespace
+
+const SolverRegistry& solver_registry() {
+  static const SolverRegistry registry = make_registry();
+  return registry;
+}
+
+}  // namespace repose

@@ -1,0 +1,47 @@
+#include "models/ground/material.h"
+
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "models/core/config/fields.h"
+
+namespace repose {
+
+bool material_preset(const std::string& name, Material* out) {
+  constexpr double deg = std::numbers::pi / 180.0;
+  Material m;
+  m.name = name;
+  if (name == "sand") {
+    m.alpha = 1.0;
+    m.repose_angle_rad = 30 * deg;
+  } else if (name == "mud") {
+    m.alpha = 0.8;
+    m.repose_angle_rad = 60 * deg;
+  } else if (name == "snow") {
+    m.alpha = 0.0;
+    m.repose_angle_rad = 90 * deg;
+  } else {
+    return false;
+  }
+  m.sigma = 0.2;
+  m.erosion_iterations = 5;
+  *out = m;
+  return true;
+}
+
+void validate(const Material& m) {
+  if (!(m.alpha >= 0.0 && m.alpha <= 1.0)) throw FieldError("alpha", "a number in [0, 1]", yaml_number(m.alpha));
+  if (!(m.repose_angle_rad > 0.0 && m.repose_angle_rad <= std::numbers::pi / 2)) {
+    throw FieldError("repose_angle_deg", "an angle in (0, 90] deg", yaml_degrees(m.repose_angle_rad / kRadPerDeg));
+  }
+  if (!(m.sigma > 0.0 && m.sigma <= kSigmaMax)) {
+    throw FieldError("sigma", fmt::format("a number in (0, {}] (erosion diverges above it, see ground_params.h)", kSigmaMax),
+                     yaml_number(m.sigma));
+  }
+  if (m.erosion_iterations < 1 || m.erosion_iterations > 1000) {
+    throw FieldError("erosion_iterations", "an integer in [1, 1000]", std::to_string(m.erosion_iterations));
+  }
+}
+
+}  // namespace repose

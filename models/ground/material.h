@@ -1,0 +1,52 @@
+#pragma once
+// Ground material parameters of the ground model (and the models built on
+// it). These are what the calibration fits, so they are plain values apart
+// from the scene; a scene names its materials (scene.h) and the ground
+// model's section says what each is made of (ground_section.h).
+
+#include <string>
+
+#include "models/core/config/yaml_reader.h"
+
+namespace repose {
+
+// Largest stable erosion sigma; the analysis is in models/ground/ground_params.h.
+inline constexpr double kSigmaMax = 0.25;
+
+struct Material {
+  std::string name = "sand";
+  // Fraction of the intersected height that is displaced to the contact
+  // border; the rest (1 - alpha) is compressed away. [0, 1]
+  double alpha = 1.0;
+  // Angle of repose: slopes steeper than this erode. (0, pi/2] rad
+  double repose_angle_rad = 0.5235987755982988;  // 30 deg
+  // Fraction of the excess height difference moved per erosion pass.
+  // (0, kSigmaMax]: above it erosion diverges (models/ground/ground_params.h).
+  double sigma = 0.2;
+  // Erosion passes per time step (En). >= 1
+  int erosion_iterations = 5;
+
+  bool operator==(const Material&) const = default;
+};
+
+// The presets of the ground paper: sand 30 deg / 1.0, mud 60 deg / 0.8,
+// snow 90 deg / 0.0, sigma 0.2 each. Returns false for an unknown name.
+bool material_preset(const std::string& name, Material* out);
+
+// Throws FieldError (models/core/config/fields.h) naming the field when a
+// value is outside its interval: alpha in [0, 1], repose_angle_rad in (0,
+// pi/2], sigma in (0, kSigmaMax], erosion_iterations in [1, 1000]. The scene
+// loader and the model both call this one rule.
+void validate(const Material& material);
+
+// The field list of a material (fields.h): alpha, repose_angle_deg, sigma,
+// erosion_iterations.
+template <class Visitor>
+void material_fields(Visitor& v, Material& m) {
+  v.number("alpha", m.alpha, Range::any());
+  v.angle_deg("repose_angle_deg", m.repose_angle_rad, Range::any());
+  v.number("sigma", m.sigma, Range::any());
+  v.integer("erosion_iterations", m.erosion_iterations, IntRange{});
+}
+
+}  // namespace repose

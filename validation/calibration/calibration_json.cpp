@@ -1,0 +1,135 @@
+// calibration.json: every number of a calibration (calibration_report.h).
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "models/core/base/error.h"
+#include "models/core/run/repository_path.h"
+#include "validation/calibration/calibration_report.h"
+
+namespace repose {
+
+namespace {
+
+using nlohmann::json;
+
+json optional_number(const std::optional<double>& x) { return x ? json(*x) : json(); }
+
+json ladder_json(const Ladder& ladder) {
+  json rungs = json::array();
+  for (const LadderRung& r : ladder.rungs) {
+    rungs.push_back({{"label", r.label}, {"kind", r.kind}, {"resolution_m", r.resolution_m},
+                     {"wall_time_s", r.wall_time_s}, {"cpu_time_s", optional_number(r.cpu_time_s)},
+                     {"rmse_m", r.rmse_m}, {"yardstick", r.yardstick}});
+  }
+  return {{"scene", ladder.scene},
+          {"yardstick", ladder.yardstick},
+          {"rungs", rungs},
+          {"liggghts_over_ground_wall_time", optional_number(ladder.liggghts_over_ground_time)},
+          {"liggghts_cpu_over_ground_wall_time", optional_number(ladder.liggghts_over_ground_cpu_time)}};
+}
+
+json parameter_json(const CalibrationProblem& problem, const CalibrationFit& fit, std::size_t p) {
+  const ParameterSpec& spec = problem.spec().parameters[p];
+  const auto k = problem.free_index(p);
+  json se;
+  if (k) se = fit.uncertainty.determined[*k] ? json(spec.in_file_units(fit.uncertainty.standard_error[*k])) : json("undetermined");
+  return {{"name", spec.label()},
+          {"solver", spec.solver},
+          {"parameter", spec.name},
+          {"unit", spec.unit},
+          {"value", spec.in_file_units(fit.values[p])},
+          {"initial", spec.in_file_units(fit.initial_values[p])},
+          {"bounds", {spec.in_file_units(spec.lower), spec.in_file_units(spec.upper)}},
+          {"step", spec.in_file_units(spec.step)},
+          {"fixed", spec.fixed},
+          {"standard_error", se},
+          {"determination", k ? determination(fit, problem, *k) : "fixed"},
+          {"at_bound", k.has_value() && (fit.values[p] <= spec.lower || fit.values[p] >= spec.upper)}};
+}
+
+json starts_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
+  json starts = json::array();
+  for (const CalibrationStart& s : fit.starts) {
+    json initial = json::array(), final = json::array();
+    for (std::size_t k = 0; k < s.initial_free.size(); ++k) {
+      const ParameterSpec& spec = problem.spec().parameters[problem.free()[k]];
+      initial.push_back(spec.in_file_units(s.initial_free[k]));
+      final.push_back(spec.in_file_units(s.final_free[k]));
+    }
+    starts.push_back({{"initial", initial}, {"final", final}, {"initial_cost", s.initial_cost},
+                      {"final_cost", s.final_cost}, {"iterations", s.iterations}, {"termination", s.termination},
+                      {"cost_per_iteration", s.cost_per_iteration}});
+  }
+  return starts;
+}
+
+json scenes_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
+  json scenes = json::array();
+  for (std::size_t k = 0; k < fit.scenes.size(); ++k) {
+    const SceneError& e = fit.scenes[k];
+    scenes.push_back({{"name", e.name},
+                      {"role", e.fit ? "fit" : "held_out"},
+                      {"scene_path", repository_relative(problem.scenes()[k].entry.scene_path)},
+                      {"rmse_initial_m", e.rmse_initial_m},
+                      {"rmse_fitted_m", e.rmse_fitted_m},
+                      {"grain_diameter_m", e.grain_diameter_m},
+                      {"rmse_fitted_over_grain_diameter",
+                       e.grain_diameter_m > 0.0 ? json(e.rmse_fitted_m / e.grain_diameter_m) : json()}});
+  }
+  return scenes;
+}
+
+json correlation_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
+  json names = json::array(), matrix = json::array();
+  for (const std::size_t p : problem.free()) names.push_back(problem.spec().parameters[p].label());
+  for (Eigen::Index a = 0; a < fit.uncertainty.correlation.rows(); ++a) {
+    json row = json::array();
+    for (Eigen::Index b = 0; b < fit.uncertainty.correlation.cols(); ++b) row.push_back(fit.uncertainty.correlation(a, b));
+    matrix.push_back(row);
+  }
+  return {{"parameters", names}, {"matrix", matrix}};
+}
+
+}  // namespace
+
+std::vector<std::string> write_calibration_json(const CalibrationOutputs& o,
+                                                const std::function<std::string(const std::string&)>& path) {
+  const CalibrationProblem& problem = o.problem;
+  const CalibrationFit& fit = o.fit;
+  json parameters = json::array();
+  for (std::size_t p = 0; p < problem.spec().parameters.size(); ++p) parameters.push_back(parameter_json(problem, fit, p));
+  json singular = json::array();
+  for (Eigen::Index k = 0; k < fit.uncertainty.scaled_singular_values.size(); ++k) {
+    singular.push_back(fit.uncertainty.scaled_singular_values(k));
+  }
+  const CalibrationStart& best = fit.starts[fit.best_start];
+  const json document = {{"calibration", problem.spec().name},
+                         {"source", repository_relative(problem.spec().source_path)},
+                         {"solver", problem.spec().fitted_solver},
+                         {"command_line", o.command_line},
+                         {"git_commit", o.git_commit},
+                         {"parameters", parameters},
+                         {"correlation", correlation_json(problem, fit)},
+                         {"residual_variance", fit.uncertainty.residual_variance},
+                         {"covariance_note", fit.uncertainty.note},
+                         {"scaled_singular_values", singular},
+                         {"initial_cost", fit.initial_cost},
+                         {"final_cost", fit.final_cost},
+                         {"residual_count", fit.residual_count},
+                         {"iterations", best.iterations},
+                         {"termination", best.termination},
+                         {"wall_time_s", fit.wall_time_s},
+                         {"heuristic_runs", fit.heuristic_runs},
+                         {"seed", problem.spec().solver.seed},
+                         {"best_start", fit.best_start},
+                         {"starts", starts_json(problem, fit)},
+                         {"scenes", scenes_json(problem, fit)},
+                         {"ladder", o.ladder ? ladder_json(*o.ladder) : json()}};
+  std::ofstream out(path("calibration.json"), std::ios::binary);
+  out << document.dump(2) << "\n";
+  if (!out) throw InputError(path("calibration.json") + ": write failed");
+  return {"calibration.json"};
+}
+
+}  // namespace repose

@@ -1,0 +1,48 @@
+#include "validation/calibration/reference_cost.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "models/core/base/error.h"
+#include "models/core/io/input_file.h"
+#include "models/core/solver/run.h"
+
+namespace repose {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::optional<nlohmann::json> read_json(const fs::path& path) {
+  if (!fs::exists(path)) return std::nullopt;
+  require_regular_file(path.string(), "run record");
+  std::ifstream in(path, std::ios::binary);
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not valid JSON: {}", path.string(), e.what()));
+  }
+}
+
+}  // namespace
+
+std::optional<RunCost> read_run_cost(const std::string& folder) {
+  try {
+    // a LIGGGHTS run's own record: the run (after the settled bed)
+    if (const auto liggghts = read_json(fs::path(folder) / "liggghts_manifest.json")) {
+      return RunCost{liggghts->at("wall_time_s").get<double>(), liggghts->at("cpu_time_s").get<double>()};
+    }
+    if (const auto manifest = read_json(fs::path(folder) / "manifest.json"); manifest && manifest->contains("run")) {
+      const Run run = manifest->at("run").get<Run>();
+      return RunCost{run.wall_s, run.cpu_s};
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: a run record without its cost ({})", folder, e.what()));
+  }
+  return std::nullopt;
+}
+
+}  // namespace repose

@@ -1,0 +1,21 @@
+#pragma once
+// What a reference run folder cost: read from its typed records, never by
+// re-parsing text. A run folder of `repose run` holds manifest.json with its
+// Run (models/core/solver/run.h); a LIGGGHTS run folder also holds
+// liggghts_manifest.json (its run's wall and CPU time).
+
+#include <optional>
+#include <string>
+
+namespace repose {
+
+struct RunCost {
+  double wall_s = 0.0;
+  double cpu_s = 0.0;
+};
+
+// The folder's cost, or nothing when it holds no record of it. InputError for
+// a record that is not valid JSON of the expected shape.
+std::optional<RunCost> read_run_cost(const std::string& folder);
+
+}  // namespace repose

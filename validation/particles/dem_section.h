@@ -1,0 +1,143 @@
+#pragma once
+// The grains of a scene's particle references (`dem:`), shared by LIGGGHTS,
+// Bullet and ODE: size distribution, material, contact law, the settled bed
+// or column the run starts from, the floor. Defined here once with one field
+// list and one validate(); each engine may add its own section for what has
+// no equivalent in the others.
+//
+//   dem:
+//     grain_radius_m: 0.002        # mean radius; radius_spread: relative half-width of a uniform spread
+//     youngs_modulus_pa: 5.0e6     # softened, as DEM practice does
+//     time_step_s: 1.0e-5          # refused above 20 % of the Rayleigh time of the smallest grain
+//     initial: bed                 # bed | column (column_shape slot | cylinder, column_width_m, column_height_m)
+//     ...                          # see DemSpec
+
+#include <memory>
+#include <string>
+
+#include "models/core/base/error.h"
+#include "models/core/config/scene.h"
+#include "models/core/config/scene_section.h"
+#include "models/core/config/yaml_reader.h"
+
+namespace repose {
+
+// Grains and contact law of the DEM reference runs (LIGGGHTS), for scenes
+// that are also run as a reference. Young's modulus is softened, as DEM
+// practice does, to allow a practical time step.
+struct DemSpec {
+  double grain_radius_m = 0.002;
+  double radius_spread = 0.1;          // relative half-width of a uniform radius distribution [0, 0.5)
+  double density_kg_m3 = 2500.0;
+  double youngs_modulus_pa = 5.0e6;    // softened
+  double poisson_ratio = 0.3;
+  double restitution = 0.5;            // (0, 1]
+  double friction = 0.5;               // sliding, grain-grain and grain-wall
+  double rolling_friction = 0.1;
+  enum class RollingModel { kCdt, kEpsd2 };
+  RollingModel rolling_model = RollingModel::kCdt;
+  double cohesion_energy_density_j_m3 = 0.0;  // sjkr cohesion; 0: none
+  double time_step_s = 1.0e-5;          // refused above 20 % of the Rayleigh time
+  double bed_depth_m = 0.02;            // depth of the settled bed the ground is made of
+  double settle_kinetic_energy_j = 1.0e-7;  // settling ends below this total kinetic energy
+  double gravity_m_s2 = 9.81;
+  double dump_interval_s = 0.01;
+
+  // The grains the run starts from. bed: a settled layer of bed_depth_m over
+  // the whole grid. column: a column of grains settled behind a gate that is
+  // removed at t = 0 (column collapse, piles); bed_depth_m is then unused.
+  //   slot: quasi-2-D; the column fills x from the grid's x_min edge to
+  //     x_min + column_width_m across the grid's whole y extent (the grid's
+  //     y extent is the gap between the two side walls); the gate is the
+  //     plane x = x_min + column_width_m.
+  //   cylinder: axisymmetric; a cylinder of radius column_width_m on the
+  //     grid's centre; the gate is the cylinder wall.
+  enum class Initial { kBed, kColumn };
+  Initial initial = Initial::kBed;
+  enum class ColumnShape { kSlot, kCylinder };
+  ColumnShape column_shape = ColumnShape::kCylinder;
+  double column_width_m = 0.02;   // slot: length L0 along x; cylinder: radius R0
+  double column_height_m = 0.04;  // H0, the settled column's intended height
+
+  // The floor (z = 0). smooth: a plane of the grains' own material. rough: a
+  // plane whose rolling friction with the grains is floor_rolling_friction,
+  // standing in for the base of glued grains the column-collapse and pile
+  // experiments use (single grains would otherwise roll far over a smooth plane).
+  enum class Floor { kSmooth, kRough };
+  Floor floor = Floor::kSmooth;
+  double floor_rolling_friction = 1.0;  // rough floor only
+};
+
+
+// Rayleigh time of the smallest grain (s): T_R = pi*r*sqrt(rho/G)/(0.1631*nu+0.8766),
+// G = E/(2(1+nu)), r = grain_radius_m*(1 - radius_spread).
+double rayleigh_time_s(const DemSpec& dem);
+// The largest time step accepted: 20 % of the Rayleigh time.
+inline constexpr double kMaxRayleighFraction = 0.2;
+
+// Throws FieldError naming the field: non-positive or non-finite grain and
+// contact parameters, a spread outside [0, 0.5), a time step above 20 % of
+// the Rayleigh time (naming the largest allowed step).
+void validate(const DemSpec& dem);
+// The rules that involve the common scene too: a column must fit the grid
+// and be at least two grains across (column_geometry.h). InputError.
+void validate(const DemSpec& dem, const Scene& scene);
+
+template <class Visitor>
+void dem_fields(Visitor& v, DemSpec& d) {
+  v.number("grain_radius_m", d.grain_radius_m, Range::any());
+  v.number("radius_spread", d.radius_spread, Range::any());
+  v.number("density_kg_m3", d.density_kg_m3, Range::any());
+  v.number("youngs_modulus_pa", d.youngs_modulus_pa, Range::any());
+  v.number("poisson_ratio", d.poisson_ratio, Range::any());
+  v.number("restitution", d.restitution, Range::any());
+  v.number("friction", d.friction, Range::any());
+  v.number("rolling_friction", d.rolling_friction, Range::any());
+  using R = DemSpec::RollingModel;
+  v.choice("rolling_model", d.rolling_model, std::vector<std::pair<std::string, R>>{{"cdt", R::kCdt}, {"epsd2", R::kEpsd2}});
+  v.number("cohesion_energy_density_j_m3", d.cohesion_energy_density_j_m3, Range::any());
+  v.number("time_step_s", d.time_step_s, Range::any());
+  v.number("bed_depth_m", d.bed_depth_m, Range::any());
+  v.number("settle_kinetic_energy_j", d.settle_kinetic_energy_j, Range::any());
+  v.number("gravity_m_s2", d.gravity_m_s2, Range::any());
+  v.number("dump_interval_s", d.dump_interval_s, Range::any());
+  using I = DemSpec::Initial;
+  v.choice("initial", d.initial, std::vector<std::pair<std::string, I>>{{"bed", I::kBed}, {"column", I::kColumn}});
+  using C = DemSpec::ColumnShape;
+  v.choice("column_shape", d.column_shape,
+           std::vector<std::pair<std::string, C>>{{"slot", C::kSlot}, {"cylinder", C::kCylinder}});
+  v.number("column_width_m", d.column_width_m, Range::any());
+  v.number("column_height_m", d.column_height_m, Range::any());
+  using F = DemSpec::Floor;
+  v.choice("floor", d.floor, std::vector<std::pair<std::string, F>>{{"smooth", F::kSmooth}, {"rough", F::kRough}});
+  v.number("floor_rolling_friction", d.floor_rolling_friction, Range::any());
+}
+
+class DemSection final : public SceneSection {
+ public:
+  static constexpr const char* kKey = "dem";
+  DemSpec spec;
+  void write_yaml(YAML::Emitter& out) const override;
+  std::string summary() const override;
+};
+
+// The scene's grains, or nullptr when it has no dem section.
+const DemSpec* dem_of(const Scene& scene);
+// The scene's grains, validated; InputError naming the scene and `solver`
+// when it has no dem section.
+const DemSpec& require_dem(const Scene& scene, const std::string& solver);
+// The scene with this dem section (validated against it).
+Scene with_dem(Scene scene, const DemSpec& dem);
+// A copy of the scene with its dem section changed by change(DemSpec&).
+template <class Change>
+Scene with_dem_changed(Scene scene, Change change) {
+  const DemSpec* current = dem_of(scene);
+  REPOSE_DEMAND(current != nullptr);
+  DemSpec dem = *current;
+  change(dem);
+  return with_dem(std::move(scene), dem);
+}
+
+SectionType dem_section_type();
+
+}  // namespace repose
