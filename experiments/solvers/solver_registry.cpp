@@ -2,7 +2,9 @@
 
 #include "models/core/solver/initial_solver.h"
 #include "models/ground/ground_solver.h"
+#include "validation/bullet/bullet_solver.h"
 #include "validation/liggghts/liggghts_solver.h"
+#include "validation/ode/ode_solver.h"
 
 namespace repose {
 
@@ -12,6 +14,8 @@ SolverRegistry make_registry() {
   SolverRegistry registry;
   registry.add(std::make_shared<GroundSolver>());
   registry.add(std::make_shared<LiggghtsSolver>());
+  registry.add(std::make_shared<BulletSolver>());
+  registry.add(std::make_shared<OdeSolver>());
   registry.add(std::make_shared<InitialSolver>());
   return registry;
 }

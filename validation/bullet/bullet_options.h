@@ -9,6 +9,7 @@
 
 #include <string>
 
+#include "models/core/config/fields.h"
 #include "models/core/config/yaml_reader.h"
 #include "validation/rigid/rigid_options.h"
 
@@ -42,12 +43,8 @@ void bullet_option_fields(V& v, O& o) {
   v.number("split_impulse_fraction", o.split_impulse_fraction, Range::closed(0.0, 100.0));
 }
 
-// Throws InputError "bullet.KEY: expected RULE, got VALUE".
+// Throws FieldError (an InputError) "KEY: expected RULE, got VALUE".
 void validate(const BulletOptions& options);
-
-// Reads a bullet: section (absent keys keep their defaults), then validates.
-// Errors are one line naming the file, line and key.
-BulletOptions read_bullet_options(const YamlValue& section);
 
 // Every option as key=value lines, numbers round-trip exact (cache keys).
 std::string bullet_options_text(const BulletOptions& options);

@@ -5,20 +5,9 @@
 namespace repose {
 
 void validate(const OdeOptions& options) {
-  validate(options.rigid, "ode");
-  OptionFieldChecker checker("ode");
+  validate(options.rigid);
+  OptionFieldChecker checker;
   ode_option_fields(checker, options);
-}
-
-OdeOptions read_ode_options(const YamlValue& section) {
-  OptionFieldNames names;
-  OdeOptions options;
-  ode_option_fields(names, options);
-  const YamlMap map = section.map(names.names);
-  OptionFieldReader reader(map);
-  ode_option_fields(reader, options);
-  validate(options);
-  return options;
 }
 
 std::string ode_options_text(const OdeOptions& options) {

@@ -8,6 +8,7 @@
 
 #include <string>
 
+#include "models/core/config/fields.h"
 #include "models/core/config/yaml_reader.h"
 #include "validation/rigid/rigid_options.h"
 
@@ -31,11 +32,8 @@ void ode_option_fields(V& v, O& o) {
   v.integer("max_contacts_per_pair", o.max_contacts_per_pair, IntRange{1, 64});
 }
 
-// Throws InputError "ode.KEY: expected RULE, got VALUE".
+// Throws FieldError (an InputError) "KEY: expected RULE, got VALUE".
 void validate(const OdeOptions& options);
-
-// Reads an ode: section (absent keys keep their defaults), then validates.
-OdeOptions read_ode_options(const YamlValue& section);
 
 // Every option as key=value lines, numbers round-trip exact (cache keys).
 std::string ode_options_text(const OdeOptions& options);

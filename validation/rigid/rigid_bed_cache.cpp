@@ -9,9 +9,9 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "models/core/base/sha256.h"
-#include "models/core/io/json_writer.h"
 #include "validation/rigid/grain_file.h"
 
 namespace repose {
@@ -39,24 +39,22 @@ fs::path fresh_temporary(const fs::path& beds, const std::string& key) {
 }
 
 void write_manifest(const fs::path& path, const RigidEngine& engine, const RigidBed& bed) {
-  std::ofstream out(path);
-  JsonWriter json(out);
   const RigidPhaseSummary& s = bed.settle;
   const double particle_steps = static_cast<double>(bed.grains.size()) * static_cast<double>(s.steps);
-  json.begin_object();
-  json.key("kind").string("settled rigid bed");
-  json.key("engine").string(engine.name);
-  json.key("engine_version").string(engine.version);
-  json.key("cache_key").string(bed.key);
-  json.key("grain_count").integer(bed.grains.size());
-  json.key("steps").integer(s.steps);
-  json.key("simulated_s").number(s.simulated_s);
-  json.key("kinetic_energy_j").number(s.kinetic_energy_j);
-  json.key("wall_time_s").number(s.wall_time_s);
-  json.key("cpu_time_s").number(s.cpu_time_s);
-  json.key("particle_steps_per_cpu_s").number(s.cpu_time_s > 0 ? particle_steps / s.cpu_time_s : 0.0);
-  json.end_object();
-  out << "\n";
+  const nlohmann::json json = {
+      {"kind", "settled rigid bed"},
+      {"engine", engine.name},
+      {"engine_version", engine.version},
+      {"cache_key", bed.key},
+      {"grain_count", bed.grains.size()},
+      {"steps", s.steps},
+      {"simulated_s", s.simulated_s},
+      {"kinetic_energy_j", s.kinetic_energy_j},
+      {"wall_time_s", s.wall_time_s},
+      {"cpu_time_s", s.cpu_time_s},
+      {"particle_steps_per_cpu_s", s.cpu_time_s > 0 ? particle_steps / s.cpu_time_s : 0.0}};
+  std::ofstream out(path);
+  out << json.dump(2) << "\n";
   if (!out) throw std::runtime_error(fmt::format("{}: write failed", path.string()));
 }
 

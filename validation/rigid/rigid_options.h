@@ -4,8 +4,6 @@
 // when it counts as settled. Each engine's section (bullet:, ode:) holds
 // these keys plus its own (bullet_options.h, ode_options.h).
 
-#include <string>
-
 #include "models/core/config/yaml_reader.h"
 
 namespace repose {
@@ -42,8 +40,8 @@ void rigid_option_fields(V& v, O& o) {
   v.number("restitution_velocity_threshold_m_s", o.restitution_velocity_threshold_m_s, Range::non_negative());
 }
 
-// Throws InputError "SECTION.KEY: expected RULE, got VALUE" naming the first
-// field that breaks its rule, or the rule between fields.
-void validate(const RigidOptions& options, const std::string& section);
+// Throws FieldError (an InputError) "KEY: expected RULE, got VALUE" naming
+// the first field that breaks its rule, or the rule between fields.
+void validate(const RigidOptions& options);
 
 }  // namespace repose

@@ -6,8 +6,8 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
-#include "models/core/io/json_writer.h"
 #include "models/core/io/npy_io.h"
 #include "validation/liggghts/liggghts_bed.h"
 #include "validation/particles/particle_observables.h"
@@ -20,59 +20,51 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void write_phase(JsonWriter& json, const char* name, const RigidPhaseSummary& s) {
-  json.key(name).begin_object();
-  json.key("steps").integer(s.steps);
-  json.key("simulated_s").number(s.simulated_s);
-  json.key("kinetic_energy_j").number(s.kinetic_energy_j);
-  json.key("wall_time_s").number(s.wall_time_s);
-  json.key("cpu_time_s").number(s.cpu_time_s);
-  json.end_object();
+nlohmann::json phase_json(const RigidPhaseSummary& s) {
+  return {{"steps", s.steps},
+          {"simulated_s", s.simulated_s},
+          {"kinetic_energy_j", s.kinetic_energy_j},
+          {"wall_time_s", s.wall_time_s},
+          {"cpu_time_s", s.cpu_time_s}};
 }
 
-void write_column(JsonWriter& json, const RigidReferenceResult& r) {
+nlohmann::json column_json(const RigidReferenceResult& r) {
   constexpr double deg = 180.0 / std::numbers::pi;
+  nlohmann::json json = nlohmann::json::object();
   if (r.column) {
     const ColumnCollapse& c = *r.column;
-    json.key("column").begin_object();
-    json.key("shape").string(c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder");
-    json.key("width_m").number(c.geometry.width_m);
-    json.key("height_initial_m").number(c.height_initial_m);
-    json.key("aspect_ratio").number(c.aspect_ratio);
-    json.key("front_initial_m").number(c.front_initial_m);
-    json.key("front_final_m").number(c.front_final_m);
-    json.key("front_final_spread_m").number(c.front_final_spread_m);
-    json.key("height_final_m").number(c.height_final_m);
-    json.key("runout_normalised").number(c.runout_normalised);
-    json.end_object();
+    json["column"] = {{"shape", c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder"},
+                      {"width_m", c.geometry.width_m},
+                      {"height_initial_m", c.height_initial_m},
+                      {"aspect_ratio", c.aspect_ratio},
+                      {"front_initial_m", c.front_initial_m},
+                      {"front_final_m", c.front_final_m},
+                      {"front_final_spread_m", c.front_final_spread_m},
+                      {"height_final_m", c.height_final_m},
+                      {"runout_normalised", c.runout_normalised}};
   }
   if (r.pile) {
-    json.key("pile").begin_object();
-    json.key("flank_angle_mean_deg").number(r.pile->mean_rad * deg);
-    json.key("flank_angle_std_deg").number(r.pile->std_rad * deg);
-    json.key("azimuth_count").integer(static_cast<long>(r.pile->angle_rad.size()));
-    json.end_object();
+    json["pile"] = {{"flank_angle_mean_deg", r.pile->mean_rad * deg},
+                    {"flank_angle_std_deg", r.pile->std_rad * deg},
+                    {"azimuth_count", r.pile->angle_rad.size()}};
   }
+  return json;
 }
 
 void write_manifest(const std::string& path, const RigidReferenceResult& r) {
+  nlohmann::json json = {{"engine", r.engine},
+                         {"engine_version", r.engine_version},
+                         {"bed_cache_key", r.bed.key},
+                         {"bed_from_cache", r.bed.from_cache},
+                         {"grain_count", r.grain_count},
+                         {"particle_steps_per_cpu_s", r.particle_steps_per_cpu_s},
+                         {"bed", phase_json(r.bed.settle)},
+                         {"run", phase_json(r.run)},
+                         {"mass_held_kg", nlohmann::json::object()}};
+  for (const auto& [name, kg] : r.mass_held_kg) json["mass_held_kg"][name] = kg;
+  json.update(column_json(r));
   std::ofstream out(path);
-  JsonWriter json(out);
-  json.begin_object();
-  json.key("engine").string(r.engine);
-  json.key("engine_version").string(r.engine_version);
-  json.key("bed_cache_key").string(r.bed.key);
-  json.key("bed_from_cache").boolean(r.bed.from_cache);
-  json.key("grain_count").integer(r.grain_count);
-  json.key("particle_steps_per_cpu_s").number(r.particle_steps_per_cpu_s);
-  write_phase(json, "bed", r.bed.settle);
-  write_phase(json, "run", r.run);
-  json.key("mass_held_kg").begin_object();
-  for (const auto& [name, kg] : r.mass_held_kg) json.key(name).number(kg);
-  json.end_object();
-  write_column(json, r);
-  json.end_object();
-  out << "\n";
+  out << json.dump(2) << "\n";
   if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
 }
 
@@ -96,7 +88,7 @@ void measure_column(RigidReferenceResult& r, const RigidInputs& in, const std::v
 
 RigidReferenceResult run_rigid_reference(const RigidEngine& engine, const RigidInputs& in,
                                          const RigidReferenceOptions& options) {
-  validate(engine.rigid, engine.name);
+  validate(engine.rigid);
   RigidReferenceResult r;
   r.engine = engine.name;
   r.engine_version = engine.version;

@@ -115,10 +115,10 @@ std::vector<StaticBox> column_gate(const ColumnGeometry& c, const DemSpec& dem, 
 
 }  // namespace
 
-RigidInputs rigid_inputs(const Scene& scene) {
-  if (!scene.dem) throw InputError(fmt::format("{}: the rigid references need a dem section", scene.source_path));
-  RigidInputs in{*scene.dem, scene.ground.grid, scene.objects, scene.time, scene.seed, std::nullopt};
-  if (scene.dem->initial == DemSpec::Initial::kColumn) in.column = column_geometry(scene);
+RigidInputs rigid_inputs(const Scene& scene, const std::string& solver) {
+  const DemSpec& dem = require_dem(scene, solver);
+  RigidInputs in{dem, scene.ground.grid, scene.objects, scene.time, scene.seed, std::nullopt};
+  if (dem.initial == DemSpec::Initial::kColumn) in.column = column_geometry(dem, scene);
   return in;
 }
 

@@ -12,11 +12,13 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "models/core/config/scene.h"
 #include "models/core/geometry/grid.h"
 #include "validation/particles/column_geometry.h"
+#include "validation/particles/dem_section.h"
 #include "validation/particles/grain_set.h"
 #include "validation/rigid/rigid_options.h"
 #include "validation/rigid/rigid_world.h"
@@ -34,9 +36,9 @@ struct RigidInputs {
   std::optional<ColumnGeometry> column;  // dem.initial: column
 };
 
-// Throws InputError for a scene without a dem section, or a column that
-// does not fit the grid (column_geometry.h).
-RigidInputs rigid_inputs(const Scene& scene);
+// Throws InputError naming `solver` for a scene without a dem section, or a
+// column that does not fit the grid (column_geometry.h).
+RigidInputs rigid_inputs(const Scene& scene, const std::string& solver);
 
 // Grains that fill the grid area up to dem.bed_depth_m (a column: its
 // footprint up to column_height_m) at packing_fraction (the LIGGGHTS bed's count).

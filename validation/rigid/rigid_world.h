@@ -25,6 +25,7 @@
 #include <Eigen/Core>
 
 #include "models/core/config/scene.h"
+#include "validation/particles/dem_section.h"
 #include "models/core/geometry/triangle_mesh.h"
 #include "validation/particles/grain_set.h"
 

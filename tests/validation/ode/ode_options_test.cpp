@@ -5,6 +5,10 @@
 #include <string>
 
 #include "models/core/base/error.h"
+#include "models/core/config/scene.h"
+#include "models/core/config/scene_loader.h"
+#include "validation/particles/dem_section.h"
+#include "validation/ode/ode_section.h"
 
 namespace repose {
 namespace {
@@ -12,7 +16,7 @@ namespace {
 // The one-line error of reading `section` as a bullet: section.
 std::string error_of(const std::string& section) {
   try {
-    read_ode_options(parse_yaml(section, "scene.yaml"));
+    ode_section_type().read(parse_yaml(section, "scene.yaml"), Scene{});
   } catch (const InputError& e) {
     return e.what();
   }
@@ -20,7 +24,8 @@ std::string error_of(const std::string& section) {
 }
 
 TEST(OdeOptions, AbsentKeysKeepTheDocumentedDefaults) {
-  const OdeOptions o = read_ode_options(parse_yaml("{solver_iterations: 15}", "scene.yaml"));
+  const auto section = ode_section_type().read(parse_yaml("{solver_iterations: 15}", "scene.yaml"), Scene{});
+  const OdeOptions& o = dynamic_cast<const OdeSection&>(*section).options;
   EXPECT_EQ(o.rigid.solver_iterations, 15);
   EXPECT_EQ(OdeOptions{}.rigid.solver_iterations, 20);
   EXPECT_DOUBLE_EQ(o.rigid.time_step_s, 1.0 / 600.0);
@@ -44,14 +49,32 @@ TEST(OdeOptions, MalformedSectionsGiveOneLineErrorsNamingTheKey) {
   }
 }
 
-TEST(OdeOptions, ValidateNamesTheSectionAndTheField) {
+TEST(OdeOptions, InASceneTheErrorNamesTheFileLineAndKeyPath) {
+  const std::string scene =
+      "time: {step_s: 0.01, duration_s: 0.1}\n"
+      "ground: {extent_m: [0.04, 0.04], cell_size_m: 0.004, initial_height: {kind: flat, height_m: 0.01}}\n"
+      "dem: {bed_depth_m: 0.01}\n"
+      "ode: {time_step_s: 0.5}\n";
+  try {
+    load_scene_from_string(scene, "/tmp/scene.yaml", {dem_section_type(), ode_section_type()});
+    FAIL() << "accepted a step of 0.5 s";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/tmp/scene.yaml:4:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("ode.time_step_s"), std::string::npos) << e.what();
+  }
+  const Scene without = load_scene_from_string(scene.substr(0, scene.rfind("ode:")), "/tmp/scene.yaml",
+                                               {dem_section_type(), ode_section_type()});
+  EXPECT_EQ(ode_options_text(ode_options_of(without)), ode_options_text(OdeOptions{}));
+}
+
+TEST(OdeOptions, ValidateNamesTheField) {
   OdeOptions o;
   o.surface_layer_fraction = -1.0;
   try {
     validate(o);
     FAIL() << "accepted a negative slop";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("ode.surface_layer_fraction"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("surface_layer_fraction"), std::string::npos) << e.what();
   }
 }
 

@@ -95,20 +95,23 @@ TEST(RigidSetup, AGridNarrowerThanAGrainIsRefused) {
   EXPECT_THROW(grain_lattice(in, RigidOptions{}), InputError);
 }
 
-Scene column_scene(DemSpec::ColumnShape shape) {
+Scene column_scene(DemSpec::ColumnShape shape, double width_m = 0.03) {
   Scene s;
   s.ground.grid = Grid{25, 20, 0.004, 0.0, 0.0};
-  s.dem = DemSpec{};
-  s.dem->initial = DemSpec::Initial::kColumn;
-  s.dem->column_shape = shape;
-  s.dem->column_width_m = 0.03;
-  s.dem->column_height_m = 0.02;
+  DemSpec dem;
+  dem.initial = DemSpec::Initial::kColumn;
+  dem.column_shape = shape;
+  dem.column_width_m = width_m;
+  dem.column_height_m = 0.02;
+  auto section = std::make_shared<DemSection>();
+  section->spec = dem;
+  s.sections[DemSection::kKey] = section;
   return s;
 }
 
 TEST(RigidSetup, AColumnIsLaidOutBehindItsGateWithTheLiggghtsCount) {
   for (auto shape : {DemSpec::ColumnShape::kSlot, DemSpec::ColumnShape::kCylinder}) {
-    const RigidInputs in = rigid_inputs(column_scene(shape));
+    const RigidInputs in = rigid_inputs(column_scene(shape), "test");
     ASSERT_TRUE(in.column.has_value());
     const RigidOptions options;
     const RigidWorldSpec w = settling_world(in, options);
@@ -130,10 +133,8 @@ TEST(RigidSetup, AColumnIsLaidOutBehindItsGateWithTheLiggghtsCount) {
 }
 
 TEST(RigidSetup, AColumnThatDoesNotFitTheGridIsRefused) {
-  Scene s = column_scene(DemSpec::ColumnShape::kSlot);
-  s.dem->column_width_m = 0.2;
-  EXPECT_THROW(rigid_inputs(s), InputError);
-  EXPECT_THROW(rigid_inputs(Scene{}), InputError);
+  EXPECT_THROW(rigid_inputs(column_scene(DemSpec::ColumnShape::kSlot, 0.2), "test"), InputError);
+  EXPECT_THROW(rigid_inputs(Scene{}, "test"), InputError);
 }
 
 }  // namespace
