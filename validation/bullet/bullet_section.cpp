@@ -26,12 +26,12 @@ std::shared_ptr<const SceneSection> read_bullet_section(const YamlValue& value, 
 void BulletSection::write_yaml(YAML::Emitter& out) const { write_fields_map(out, options, kBulletFields); }
 
 std::string BulletSection::summary() const {
-  return fmt::format("bullet: step {} s, {} solver iterations", options.rigid.time_step_s, options.rigid.solver_iterations);
+  return fmt::format("bullet: step {:.4g} s, {} solver iterations", options.rigid.time_step_s, options.rigid.solver_iterations);
 }
 
 SectionType bullet_section_type() {
   return {BulletSection::kKey, "the Bullet rigid-body reference's options (validation/bullet/bullet_options.h)", read_bullet_section,
-          true};
+          false};
 }
 
 BulletOptions bullet_options_of(const Scene& scene) {

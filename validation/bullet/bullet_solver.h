@@ -12,6 +12,8 @@ class BulletSolver final : public Solver {
   std::string name() const override { return "bullet"; }
   std::string description() const override;
   std::vector<SectionType> sections() const override;
+  // Needs the dem section only (the bullet: section is optional).
+  bool can_run(const Scene& scene, std::string* why) const override;
   std::unique_ptr<CompiledSolver> compile(const Scene& scene) const override;
 };
 

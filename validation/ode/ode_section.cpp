@@ -26,12 +26,12 @@ std::shared_ptr<const SceneSection> read_ode_section(const YamlValue& value, con
 void OdeSection::write_yaml(YAML::Emitter& out) const { write_fields_map(out, options, kOdeFields); }
 
 std::string OdeSection::summary() const {
-  return fmt::format("ode: step {} s, {} solver iterations", options.rigid.time_step_s, options.rigid.solver_iterations);
+  return fmt::format("ode: step {:.4g} s, {} solver iterations", options.rigid.time_step_s, options.rigid.solver_iterations);
 }
 
 SectionType ode_section_type() {
   return {OdeSection::kKey, "the ODE rigid-body reference's options (validation/ode/ode_options.h)", read_ode_section,
-          true};
+          false};
 }
 
 OdeOptions ode_options_of(const Scene& scene) {

@@ -17,7 +17,8 @@ class OdeSection final : public SceneSection {
   std::string summary() const override;
 };
 
-// Read for every scene (the defaults when the key is absent).
+// The section's reader (a scene without the key runs with the defaults:
+// ode_options_of; the engine's manifest records the options used).
 SectionType ode_section_type();
 
 // The scene's ode options: its section's, or the defaults.

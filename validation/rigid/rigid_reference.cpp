@@ -28,6 +28,20 @@ nlohmann::json phase_json(const RigidPhaseSummary& s) {
           {"cpu_time_s", s.cpu_time_s}};
 }
 
+// "key=value" lines as {"key": number}.
+nlohmann::json options_json(const std::string& text) {
+  nlohmann::json json = nlohmann::json::object();
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    const std::string line = text.substr(start, end - start);
+    const std::size_t eq = line.find('=');
+    if (eq != std::string::npos) json[line.substr(0, eq)] = std::stod(line.substr(eq + 1));
+    start = end == std::string::npos ? text.size() : end + 1;
+  }
+  return json;
+}
+
 nlohmann::json column_json(const RigidReferenceResult& r) {
   constexpr double deg = 180.0 / std::numbers::pi;
   nlohmann::json json = nlohmann::json::object();
@@ -54,6 +68,7 @@ nlohmann::json column_json(const RigidReferenceResult& r) {
 void write_manifest(const std::string& path, const RigidReferenceResult& r) {
   nlohmann::json json = {{"engine", r.engine},
                          {"engine_version", r.engine_version},
+                         {"options", options_json(r.engine_options)},
                          {"bed_cache_key", r.bed.key},
                          {"bed_from_cache", r.bed.from_cache},
                          {"grain_count", r.grain_count},
@@ -92,6 +107,7 @@ RigidReferenceResult run_rigid_reference(const RigidEngine& engine, const RigidI
   RigidReferenceResult r;
   r.engine = engine.name;
   r.engine_version = engine.version;
+  r.engine_options = engine.options_text;
   r.bed = settled_rigid_bed(engine, in, options.cache_dir.empty() ? default_cache_dir() : options.cache_dir);
   r.grains_initial = r.bed.grains;
 

@@ -10,7 +10,7 @@
 // write_rigid_reference() writes them to a run folder:
 //   height_initial.npy, height_final.npy, material_per_area_final.npy,
 //   grains_initial.npy, grains_final.npy (#G by 4: x y z r), and
-//   ENGINE_manifest.json (engine, version, options, grain count, steps,
+//   ENGINE_manifest.json (engine, version, every option used, grain count, steps,
 //   particle-steps per CPU second, wall and CPU times, mass_held_kg, and
 //   for a column scene its runout and pile flank angles, as LIGGGHTS writes them);
 //   a column scene also writes runout.csv (the front every dem.dump_interval_s)
@@ -42,6 +42,7 @@ struct RigidReferenceOptions {
 struct RigidReferenceResult {
   std::string engine;
   std::string engine_version;
+  std::string engine_options;             // key=value lines: every option of the engine's section used
   RigidBed bed;
   RigidPhaseSummary run;
   long grain_count = 0;
