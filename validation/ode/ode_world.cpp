@@ -43,6 +43,7 @@ class OdeWorld final : public RigidWorld {
  private:
   static void near_callback(void* self, dGeomID a, dGeomID b);
   void collide_pair(dGeomID a, dGeomID b);
+  void add_grains(const RigidWorldSpec& spec);
   dGeomID object_geom(const ObjectSpec& object);
   void attach(dGeomID geom, const GeomInfo& info) {
     infos_.push_back(info);
@@ -86,24 +87,7 @@ OdeWorld::OdeWorld(const RigidWorldSpec& spec, const OdeOptions& options) : opti
   scratch_.resize(static_cast<std::size_t>(options.max_contacts_per_pair));
   infos_.reserve(static_cast<std::size_t>(spec.grains.size()) + spec.walls.size() + spec.objects.size());
 
-  for (Eigen::Index g = 0; g < spec.grains.size(); ++g) {
-    const double r = spec.grains.radius_m(g);
-    dBodyID body = dBodyCreate(world_);
-    dMass mass;
-    dMassSetSphereTotal(&mass, spec.density_kg_m3 * 4.0 / 3.0 * M_PI * r * r * r, r);
-    dBodySetMass(body, &mass);
-    dBodySetPosition(body, spec.grains.position_m(g, 0), spec.grains.position_m(g, 1), spec.grains.position_m(g, 2));
-    if (spec.velocity_m_s.rows() > 0) dBodySetLinearVel(body, spec.velocity_m_s(g, 0), spec.velocity_m_s(g, 1), spec.velocity_m_s(g, 2));
-    if (spec.angular_velocity_rad_s.rows() > 0) {
-      const auto w = spec.angular_velocity_rad_s.row(g);
-      dBodySetAngularVel(body, w(0), w(1), w(2));
-    }
-    dGeomID geom = dCreateSphere(space_, r);
-    dGeomSetBody(geom, body);
-    attach(geom, {true, r, spec.law.rolling_friction});
-    grains_.push_back(body);
-    grain_radius_m_.push_back(r);
-  }
+  add_grains(spec);
   for (const StaticBox& wall : spec.walls) {
     const Eigen::Vector3d size = 2.0 * wall.half_extents_m;
     dGeomID geom = dCreateBox(space_, size.x(), size.y(), size.z());
@@ -127,6 +111,27 @@ OdeWorld::OdeWorld(const RigidWorldSpec& spec, const OdeOptions& options) : opti
     object_targets_.push_back(p);
   }
   for (std::size_t k = 0; k < geoms_.size(); ++k) dGeomSetData(geoms_[k], &infos_[k]);
+}
+
+void OdeWorld::add_grains(const RigidWorldSpec& spec) {
+  for (Eigen::Index g = 0; g < spec.grains.size(); ++g) {
+    const double r = spec.grains.radius_m(g);
+    dBodyID body = dBodyCreate(world_);
+    dMass mass;
+    dMassSetSphereTotal(&mass, spec.density_kg_m3 * 4.0 / 3.0 * M_PI * r * r * r, r);
+    dBodySetMass(body, &mass);
+    dBodySetPosition(body, spec.grains.position_m(g, 0), spec.grains.position_m(g, 1), spec.grains.position_m(g, 2));
+    if (spec.velocity_m_s.rows() > 0) dBodySetLinearVel(body, spec.velocity_m_s(g, 0), spec.velocity_m_s(g, 1), spec.velocity_m_s(g, 2));
+    if (spec.angular_velocity_rad_s.rows() > 0) {
+      const auto w = spec.angular_velocity_rad_s.row(g);
+      dBodySetAngularVel(body, w(0), w(1), w(2));
+    }
+    dGeomID geom = dCreateSphere(space_, r);
+    dGeomSetBody(geom, body);
+    attach(geom, {true, r, spec.law.rolling_friction});
+    grains_.push_back(body);
+    grain_radius_m_.push_back(r);
+  }
 }
 
 OdeWorld::~OdeWorld() {
