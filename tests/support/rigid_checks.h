@@ -5,6 +5,7 @@
 
 
 #include <algorithm>
+#include <numbers>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -173,6 +174,38 @@ inline void expect_indentation_leaves_a_dent(const RigidEngine& engine) {
   ASSERT_EQ(r.mass_held_kg.size(), 1u);
   EXPECT_EQ(r.mass_held_kg[0].first, "ball");
   EXPECT_GT(r.particle_steps_per_cpu_s, 0.0);
+}
+
+
+// A small cylinder column (r 1.2 cm, 1.2 cm high) released on a rough floor
+// spreads: its front moves out, no grain is lost, the pile is lower than the column.
+inline void expect_column_spreads(const RigidEngine& engine) {
+  const TempDir cache("rigid_column");
+  RigidInputs in = tiny_bed(9);
+  in.grid = Grid{15, 15, 0.004, 0.0, 0.0};  // 6 cm square
+  in.time = TimeSpec{0.01, 0.3};
+  in.dem.initial = DemSpec::Initial::kColumn;
+  in.dem.column_shape = DemSpec::ColumnShape::kCylinder;
+  in.dem.column_width_m = 0.012;
+  in.dem.column_height_m = 0.012;
+  in.dem.floor = DemSpec::Floor::kRough;
+  in.dem.dump_interval_s = 0.05;
+  ColumnGeometry c;
+  c.shape = DemSpec::ColumnShape::kCylinder;
+  c.axis_xy_m = {0.03, 0.03};
+  c.width_m = 0.012;
+  c.height_m = 0.012;
+  c.footprint_m2 = std::numbers::pi * 0.012 * 0.012;
+  in.column = c;
+  RigidReferenceOptions options;
+  options.cache_dir = cache.path.string();
+  const RigidReferenceResult r = run_rigid_reference(engine, in, options);
+  ASSERT_TRUE(r.column.has_value());
+  ASSERT_TRUE(r.pile.has_value());
+  EXPECT_EQ(r.grains_final.size(), r.grains_initial.size());
+  EXPECT_GT(r.column->front_final_m, r.column->front_initial_m + in.dem.grain_radius_m);
+  EXPECT_LT(r.column->height_final_m, r.column->height_initial_m);
+  EXPECT_EQ(r.column->time_s.size(), 6u);  // every 0.05 s over 0.3 s
 }
 
 }  // namespace repose::test_support

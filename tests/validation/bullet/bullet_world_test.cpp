@@ -47,5 +47,9 @@ TEST(BulletWorld, AKinematicSpherePressedIntoTheBedLeavesADentAndLosesNoGrain) {
   expect_indentation_leaves_a_dent(bullet_engine({}));
 }
 
+TEST(BulletWorld, AColumnReleasedOnARoughFloorSpreadsAndLosesNoGrain) {
+  expect_column_spreads(bullet_engine({}));
+}
+
 }  // namespace
 }  // namespace repose

@@ -46,5 +46,9 @@ TEST(OdeWorld, AKinematicSpherePressedIntoTheBedLeavesADentAndLosesNoGrain) {
   expect_indentation_leaves_a_dent(ode_engine({}));
 }
 
+TEST(OdeWorld, AColumnReleasedOnARoughFloorSpreadsAndLosesNoGrain) {
+  expect_column_spreads(ode_engine({}));
+}
+
 }  // namespace
 }  // namespace repose
