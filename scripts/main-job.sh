@@ -5,4 +5,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build/bin/repose calibrate experiments/calibration_default.yaml --out runs/calibration_default --force
-echo "main job: read runs/calibration_default/report.md first (calibration.json, material.yaml, figures beside it)"
+echo "main job: read runs/calibration_default/report.md first (calibration.json, parameters.yaml, figures beside it)"

@@ -12,7 +12,6 @@
 #include "experiments/cli/commands.h"
 #include "experiments/runner/manifest.h"
 #include "experiments/runner/progress_printer.h"
-#include "experiments/solvers/solver_registry.h"
 #include "models/core/run/repository_path.h"
 #include "models/core/run/build_info.h"
 #include "models/core/run/output_directory.h"
@@ -34,11 +33,11 @@ struct CalibrateOptions {
 
 std::string joined_command_line(int argc, char** argv) {
   std::string text;
-  for (int k = 0; k < argc; ++k) text += (k ? " " : "") + std::string(argv[k]);
+  for (const std::string& a : recorded_command_line({argv, argv + argc})) text += (text.empty() ? "" : " ") + a;
   return text;
 }
 
-void calibrate(const CalibrateOptions& options, int argc, char** argv) {
+void calibrate(const CalibrateOptions& options, int argc, char** argv, const SolverRegistry& registry) {
   Manifest manifest(argc, argv);
   manifest.set_solver("calibrate");
   // the calibration is loaded before anything is written: a bad file writes nothing
@@ -48,7 +47,7 @@ void calibrate(const CalibrateOptions& options, int argc, char** argv) {
   // every scene, reference and parameter is checked before the folder is made
   std::unique_ptr<CalibrationProblem> problem;
   manifest.time_stage("references", [&] {
-    problem = std::make_unique<CalibrationProblem>(spec, solver_registry(), progress.callback());
+    problem = std::make_unique<CalibrationProblem>(spec, registry, progress.callback());
   });
   OutputDirectory out = OutputDirectory::open(options.out_dir, options.force);
   CalibrationFit fit;
@@ -91,14 +90,14 @@ void calibrate(const CalibrateOptions& options, int argc, char** argv) {
 
 }  // namespace
 
-void add_calibrate_command(CLI::App& app, int argc, char** argv) {
+void add_calibrate_command(CLI::App& app, int argc, char** argv, const SolverRegistry& registry) {
   CLI::App* command = app.add_subcommand(
       "calibrate", "Fit a solver's parameters to reference runs and write a calibration folder (report.md first)");
   auto options = std::make_shared<CalibrateOptions>();
   command->add_option("calibration", options->calibration_path, "Calibration file (YAML)")->required();
   command->add_option("--out,-o", options->out_dir, "Folder to write (refused if not empty, unless --force)")->required();
   command->add_flag("--force", options->force, "Replace a non-empty folder (only once the new calibration succeeded)");
-  command->callback([options, argc, argv] { calibrate(*options, argc, argv); });
+  command->callback([options, argc, argv, &registry] { calibrate(*options, argc, argv, registry); });
 }
 
 }  // namespace repose::cli

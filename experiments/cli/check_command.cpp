@@ -8,17 +8,15 @@
 #include <fmt/format.h>
 
 #include "experiments/cli/commands.h"
-#include "experiments/solvers/solver_registry.h"
 #include "models/core/config/scene_loader.h"
 
 namespace repose::cli {
 
-void add_check_command(CLI::App& app) {
+void add_check_command(CLI::App& app, const SolverRegistry& registry) {
   CLI::App* check = app.add_subcommand("check", "Validate a scene file and summarise it");
   auto scene_path = std::make_shared<std::string>();
   check->add_option("scene", *scene_path, "Scene file (YAML)")->required();
-  check->callback([scene_path] {
-    const SolverRegistry& registry = solver_registry();
+  check->callback([scene_path, &registry] {
     const Scene scene = load_scene(*scene_path, registry.sections());
     std::string summary = describe_scene(scene);
     for (const auto& solver : registry.solvers()) {

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "experiments/cli/commands.h"
-#include "experiments/solvers/solver_registry.h"
 #include "experiments/runner/experiment.h"
 #include "experiments/runner/run_experiment.h"
 
@@ -18,20 +17,20 @@ struct ExperimentCommandOptions {
   bool force = false;
 };
 
-void run(const ExperimentCommandOptions& options, int argc, char** argv) {
+void run(const ExperimentCommandOptions& options, int argc, char** argv, const SolverRegistry& registry) {
   // The whole experiment (every scene, every override) is checked before anything runs.
-  const Experiment experiment = load_experiment(options.experiment_path, solver_registry());
+  const Experiment experiment = load_experiment(options.experiment_path, registry);
   ExperimentOptions run_options;
   run_options.out_dir = options.out_dir;
   run_options.force = options.force;
   run_options.command_line.assign(argv, argv + argc);
-  const ExperimentOutcome outcome = run_experiment(experiment, solver_registry(), run_options);
+  const ExperimentOutcome outcome = run_experiment(experiment, registry, run_options);
   std::printf("wrote %s\n", outcome.folder.c_str());
 }
 
 }  // namespace
 
-void add_experiment_command(CLI::App& app, int argc, char** argv) {
+void add_experiment_command(CLI::App& app, int argc, char** argv, const SolverRegistry& registry) {
   CLI::App* command = app.add_subcommand(
       "experiment", "Run an experiment file: its runs (each a run folder), summary.csv, manifest.json and figures");
   auto options = std::make_shared<ExperimentCommandOptions>();
@@ -39,7 +38,7 @@ void add_experiment_command(CLI::App& app, int argc, char** argv) {
   command->add_option("--out,-o", options->out_dir, "Folder to write (refused if not empty, unless --force)")
       ->required();
   command->add_flag("--force", options->force, "Replace a non-empty folder (only once the new experiment succeeded)");
-  command->callback([options, argc, argv] { run(*options, argc, argv); });
+  command->callback([options, argc, argv, &registry] { run(*options, argc, argv, registry); });
 }
 
 }  // namespace repose::cli

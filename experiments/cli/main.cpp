@@ -1,62 +1,7 @@
-// repose: the command-line program. Exit codes: 0 success, 2 bad input
-// (InputError or a command-line error), 1 internal failure. Every error is
-// one line on stderr.
-#include <CLI/CLI.hpp>
-#include <fmt/format.h>
-
-#include <cstdio>
-#include <exception>
-#include <string>
-
+// repose: the command-line program over repose's solvers. Exit codes: 0
+// success, 2 bad input (InputError or a command-line error), 1 internal
+// failure. Every error is one line on stderr.
 #include "experiments/cli/commands.h"
-#include "models/core/run/build_info.h"
-#include "models/core/base/error.h"
+#include "experiments/solvers/solver_registry.h"
 
-namespace {
-
-constexpr int kExitBadInput = 2;
-constexpr int kExitInternal = 1;
-
-// Messages are printed on one line whatever they contain.
-std::string one_line(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
-}
-
-std::string version_text() {
-  std::string text = fmt::format("repose {}\n{}", REPOSE_VERSION, repose::describe_build(repose::build_info()));
-  while (!text.empty() && text.back() == '\n') text.pop_back();  // CLI11 adds the last newline
-  return text;
-}
-
-}  // namespace
-
-int main(int argc, char** argv) {
-  CLI::App app{"repose: heuristic granular models validated against DEM references"};
-  app.set_version_flag("--version", version_text, "Print the version, the git commit and the library versions");
-  app.require_subcommand(1);
-  repose::cli::add_check_command(app);
-  repose::cli::add_render_command(app);
-  repose::cli::add_run_command(app, argc, argv);
-  repose::cli::add_calibrate_command(app, argc, argv);
-  repose::cli::add_experiment_command(app, argc, argv);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::Success& e) {
-    return app.exit(e);  // --help, --version
-  } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "repose: %s (see repose --help)\n", one_line(e.what()).c_str());
-    return kExitBadInput;
-  } catch (const repose::InputError& e) {
-    // InputError messages start with the file (and line:column) they are about.
-    std::fprintf(stderr, "%s\n", one_line(e.what()).c_str());
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "repose: internal error: %s\n", one_line(e.what()).c_str());
-    return kExitInternal;
-  }
-  return 0;
-}
+int main(int argc, char** argv) { return repose::cli::run_cli(argc, argv, repose::solver_registry()); }

@@ -11,7 +11,6 @@
 #include <fmt/format.h>
 
 #include "experiments/cli/commands.h"
-#include "experiments/solvers/solver_registry.h"
 #include "experiments/figures/render_height.h"
 #include "models/core/base/error.h"
 #include "models/core/config/initial_height.h"
@@ -109,7 +108,7 @@ HeightField field_from_npy(const std::string& path, double cell_size_m) {
   return HeightField(grid, std::move(heights));
 }
 
-void render(const RenderOptions& options) {
+void render(const RenderOptions& options, const SolverRegistry& registry) {
   const CameraOverrides overrides = camera_overrides(options);  // checked before anything is read
   if (!has_extension(options.image_path, {".png"})) {
     throw InputError(fmt::format("{}: expected an output file name ending in .png", options.image_path));
@@ -124,7 +123,7 @@ void render(const RenderOptions& options) {
     if (options.cell_size_m != 0.0) {
       throw InputError("--cell-size-m: only for .npy inputs; a scene gives its own cell size");
     }
-    const Scene scene = load_scene(options.input_path, solver_registry().sections());
+    const Scene scene = load_scene(options.input_path, registry.sections());
     render_height_png(options.image_path, make_initial_height(scene), &scene, 0.0, overrides);
   } else {
     throw InputError(
@@ -134,7 +133,7 @@ void render(const RenderOptions& options) {
 
 }  // namespace
 
-void add_render_command(CLI::App& app) {
+void add_render_command(CLI::App& app, const SolverRegistry& registry) {
   CLI::App* command = app.add_subcommand("render", "Render a scene's initial ground or a .npy height field to PNG");
   auto options = std::make_shared<RenderOptions>();
   command->add_option("input", options->input_path, "Scene file (.yaml) or height field (.npy, metres)")->required();
@@ -144,7 +143,7 @@ void add_render_command(CLI::App& app) {
   command->add_option("--fov-deg", options->fov_deg, "Vertical field of view (degrees)");
   command->add_option("--size", options->size, "Image size WxH (pixels)");
   command->add_option("--cell-size-m", options->cell_size_m, ".npy only: cell size (m); default: the field is 1 m wide");
-  command->callback([options] { render(*options); });
+  command->callback([options, &registry] { render(*options, registry); });
 }
 
 }  // namespace repose::cli

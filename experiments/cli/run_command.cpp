@@ -10,7 +10,6 @@
 #include "experiments/runner/manifest.h"
 #include "experiments/runner/progress_printer.h"
 #include "experiments/runner/run_scene.h"
-#include "experiments/solvers/solver_registry.h"
 #include "models/core/run/output_directory.h"
 #include "models/core/base/error.h"
 #include "models/core/config/scene_loader.h"
@@ -25,11 +24,10 @@ struct RunOptions {
   std::string solver;
 };
 
-void run(const RunOptions& options, int argc, char** argv) {
+void run(const RunOptions& options, int argc, char** argv, const SolverRegistry& registry) {
   Manifest manifest(argc, argv);
   // The scene is loaded before anything is written: a bad scene writes nothing.
   Scene scene;
-  const SolverRegistry& registry = solver_registry();
   const Solver& solver = registry.get(options.solver);
   manifest.time_stage("load_scene", [&] { scene = load_scene(options.scene_path, registry.sections()); });
   std::string why;
@@ -43,10 +41,9 @@ void run(const RunOptions& options, int argc, char** argv) {
 
 }  // namespace
 
-void add_run_command(CLI::App& app, int argc, char** argv) {
+void add_run_command(CLI::App& app, int argc, char** argv, const SolverRegistry& registry) {
   CLI::App* command = app.add_subcommand("run", "Run a scene and write a run folder (manifest.json, data, images)");
   auto options = std::make_shared<RunOptions>();
-  const SolverRegistry& registry = solver_registry();
   options->solver = registry.names().front();
   command->add_option("scene", options->scene_path, "Scene file (YAML)")->required();
   command->add_option("--out,-o", options->out_dir, "Run folder to write (refused if not empty, unless --force)")
@@ -59,7 +56,7 @@ void add_run_command(CLI::App& app, int argc, char** argv) {
   command->add_option("--solver", options->solver, solver_help)
       ->check(CLI::IsMember(registry.names()))
       ->capture_default_str();
-  command->callback([options, argc, argv] { run(*options, argc, argv); });
+  command->callback([options, argc, argv, &registry] { run(*options, argc, argv, registry); });
 }
 
 }  // namespace repose::cli

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/io/input_file.h"
 #include "models/core/config/yaml_reader.h"
 
 namespace repose {
@@ -223,12 +224,7 @@ Experiment load_experiment_from_string(const std::string& yaml, const std::strin
 Experiment load_experiment(const std::string& path, const SolverRegistry& registry) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError(path + ": no such experiment file");
-  if (fs::is_directory(path, ec)) throw InputError(path + ": is a directory, not an experiment file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return load_experiment_from_string(text.str(), path, registry);
+  return load_experiment_from_string(read_input_file(path, input_kind::kExperiment), path, registry);
 }
 
 std::string experiment_to_yaml(const Experiment& e) {

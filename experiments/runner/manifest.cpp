@@ -40,8 +40,16 @@ nlohmann::json build_json(const BuildInfo& build) {
 
 Manifest::Manifest(int argc, char** argv) : Manifest(std::vector<std::string>(argv, argv + argc)) {}
 
+std::vector<std::string> recorded_command_line(std::vector<std::string> arguments) {
+  for (std::size_t k = 0; k < arguments.size(); ++k) {
+    if (k == 0) arguments[k] = fs::path(arguments[k]).filename().string();
+    else if (!arguments[k].empty() && arguments[k].front() == '/') arguments[k] = repository_relative(arguments[k]);
+  }
+  return arguments;
+}
+
 Manifest::Manifest(std::vector<std::string> command_line)
-    : command_line_(std::move(command_line)),
+    : command_line_(recorded_command_line(std::move(command_line))),
       start_time_utc_(utc_now_iso8601()),
       start_(std::chrono::steady_clock::now()),
       build_(build_info()) {}

@@ -24,6 +24,11 @@ struct StageTime {
 // Now, as 2026-11-21T07:30:00Z.
 std::string utc_now_iso8601();
 
+// The command line as manifests record it: absolute paths inside the
+// repository made relative (committed manifests must not hold the machine's
+// paths), the program as its name.
+std::vector<std::string> recorded_command_line(std::vector<std::string> arguments);
+
 // The build as a JSON object: repose version, git commit, compiler, library versions.
 nlohmann::json build_json(const BuildInfo& build);
 

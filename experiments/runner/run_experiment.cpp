@@ -196,7 +196,7 @@ void write_experiment_manifest(const std::string& path, const Experiment& experi
       {"format", "repose-experiment-manifest"},
       {"format_version", 2},
       {"start_time_utc", inputs.start_time_utc},
-      {"command_line", options.command_line},
+      {"command_line", cli::recorded_command_line(options.command_line)},
       {"experiment",
        {{"path", repository_relative(experiment.source_path)},
         {"sha256", sha256_hex_of_file(experiment.source_path)},

@@ -110,11 +110,7 @@ Scene load_scene_with_overrides(const std::string& scene_path, const std::vector
                                 const SectionTypes& sections) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(scene_path, ec)) throw InputError(scene_path + ": no such scene file");
-  std::ifstream in(scene_path, std::ios::binary);
-  if (!in) throw InputError(scene_path + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  YAML::Node root = parse_yaml(text.str(), scene_path).node();
+  YAML::Node root = read_yaml_file(scene_path, input_kind::kScene).node();
   for (const SceneOverride& o : overrides) apply_scene_override(root, o);
   return load_scene_from_node(root, scene_path, sections);
 }

@@ -2,6 +2,7 @@
 
 #include "models/core/solver/initial_solver.h"
 #include "models/ground/ground_solver.h"
+#include "models/tearing/tearing_solver.h"
 #include "validation/bullet/bullet_solver.h"
 #include "validation/liggghts/liggghts_solver.h"
 #include "validation/ode/ode_solver.h"
@@ -16,6 +17,7 @@ SolverRegistry make_registry() {
   registry.add(std::make_shared<LiggghtsSolver>());
   registry.add(std::make_shared<BulletSolver>());
   registry.add(std::make_shared<OdeSolver>());
+  registry.add(std::make_shared<TearingSolver>());
   registry.add(std::make_shared<InitialSolver>());
   return registry;
 }

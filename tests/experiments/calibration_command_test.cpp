@@ -11,6 +11,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "models/core/config/scene_loader.h"
+#include "models/core/io/npy_io.h"
 #include "experiments/solvers/solver_registry.h"
 
 namespace repose {
@@ -64,6 +65,30 @@ TEST(CalibrationCommand, MalformedFileWritesNothingAndExitsTwo) {
   const fs::path out = fresh_dir("bad");
   EXPECT_EQ(run("calibrate " + kDir + "/bad/bad_loss.yaml --out " + out.string()), 2);
   EXPECT_FALSE(fs::exists(out));
+}
+
+// A reference of the wrong shape is found before the output folder is made,
+// and the one-line message names the calibration file's line.
+TEST(CalibrationCommand, AReferenceOfTheWrongShapeNamesItsLineAndWritesNothing) {
+  const fs::path work = fresh_dir("shape");
+  fs::create_directories(work / "ref");
+  write_npy_2d((work / "ref" / "height_initial.npy").string(), ArrayXXdR::Zero(3, 4));
+  write_npy_2d((work / "ref" / "height_final.npy").string(), ArrayXXdR::Zero(3, 4));
+  std::ofstream(work / "calib.yaml") << "scenes:\n  - scene: " << kDir << "/scenes/indent.yaml\n"
+                                     << "    reference: {data: ref}\n    observables: [{kind: height_field}]\n"
+                                     << "parameters: [{name: ground.sand.alpha, initial: 0.5}]\n";
+  const fs::path out = work / "out";
+  const std::string err = (work / "err.txt").string();
+  const std::string command = std::string(REPOSE_BINARY) + " calibrate " + (work / "calib.yaml").string() +
+                              " --out " + out.string() + " >/dev/null 2>" + err;
+  const int status = std::system(command.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2);
+  const std::string message = read(err);
+  EXPECT_NE(message.find((work / "calib.yaml").string() + ":3:16: reference: "), std::string::npos) << message;
+  EXPECT_NE(message.find("3 rows x 4 columns"), std::string::npos) << message;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(work / ".out.tmp"));
+  fs::remove_all(work);
 }
 
 }  // namespace

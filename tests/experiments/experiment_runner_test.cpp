@@ -112,35 +112,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 
 // ---- scene overrides
 
-TEST(SceneOverride, SetsNestedKeysListItemsAndCreatesMissingMaps) {
-  YAML::Node root = YAML::Load("{time: {step_s: 0.1}, objects: [{name: a, motion: [{time_s: 0}, {time_s: 1}]}]}");
-  apply_scene_override(root, {"time.step_s", YAML::Load("0.5")});
-  apply_scene_override(root, {"objects[0].motion[1].time_s", YAML::Load("2")});
-  apply_scene_override(root, {"ground_model.sweep", YAML::Load("false")});
-  EXPECT_EQ(root["time"]["step_s"].as<double>(), 0.5);
-  EXPECT_EQ(root["objects"][0]["motion"][1]["time_s"].as<double>(), 2.0);
-  EXPECT_EQ(root["objects"][0]["motion"][0]["time_s"].as<double>(), 0.0);  // neighbours untouched
-  EXPECT_EQ(root["objects"][0]["name"].as<std::string>(), "a");
-  EXPECT_FALSE(root["ground_model"]["sweep"].as<bool>());
-}
 
-TEST(SceneOverride, RejectsPathsThatDoNotFitTheDocument) {
-  YAML::Node root = YAML::Load("{time: {step_s: 0.1}, objects: [{name: a}]}");
-  const auto message = [&](const std::string& key) {
-    try {
-      apply_scene_override(root, {key, YAML::Load("1")});
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
-  EXPECT_NE(message("objects[3].name").find("the list has 1 item"), std::string::npos) << message("objects[3].name");
-  EXPECT_NE(message("time.step_s.x").find("not a map"), std::string::npos);
-  EXPECT_NE(message("time[0]").find("not a list"), std::string::npos);
-  for (const char* bad : {"", "time..step_s", "time.", "objects[x]", "objects[]", "a b"}) {
-    EXPECT_NE(message(bad).find("not a scene key path"), std::string::npos) << bad;
-  }
-}
 
 // ---- experiment files
 

@@ -104,16 +104,40 @@ Scene with_initial(Scene scene, const HeightField& initial) {
   return scene;
 }
 
+// A rung of the calibrated solver on `scene`, its surface against the yardstick.
+LadderRung solver_rung(const CalibrationProblem& problem, const PreparedScene& s, const Scene& scene,
+                       const std::vector<double>& values, const Yardstick& yard, LadderRung rung) {
+  const LadderSpec& spec = *problem.spec().ladder;
+  HeightField result;
+  rung.wall_time_s = timed_run(problem, s, scene, values, spec.timing_repeats, &result);
+  rung.rmse_m = surface_rmse_m(onto(result, yard.final_height.grid()), yard.final_height, s.entry.rmse_region);
+  return rung;
+}
+
+// The cell sizes of the ladder, the scene's own included, coarsest first.
+std::vector<double> ladder_cell_sizes(const LadderSpec& spec, double own) {
+  std::vector<double> sizes = spec.heuristic_cell_sizes_m;
+  if (std::none_of(sizes.begin(), sizes.end(), [&](double h) { return std::abs(h - own) <= 1e-9 * own; })) sizes.push_back(own);
+  std::sort(sizes.begin(), sizes.end(), std::greater<>());
+  return sizes;
+}
+
+// Every object on the coarse grid of the ground model's multi-resolution stage.
+Scene multires_scene(Scene scene, int coarse_factor) {
+  for (ObjectSpec& o : scene.objects) o.simple = true;
+  GroundModelSpec options = ground_model_section(scene).options;
+  options.coarse_factor = coarse_factor;
+  return with_ground_options(std::move(scene), options);
+}
+
 }  // namespace
 
 Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<double>& values, const ProgressFn& progress) {
   REPOSE_DEMAND(problem.spec().ladder.has_value());
   const LadderSpec& spec = *problem.spec().ladder;
   const PreparedScene& s = problem.scene_named(spec.scene);
-  const auto& region = s.entry.rmse_region;
   Ladder ladder;
   ladder.scene = s.entry.name;
-
   std::vector<LiggghtsRun> runs;
   for (const LadderReference& ref : spec.liggghts) runs.push_back(load_liggghts_rung(ref, problem.registry().sections()));
   std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.rung.resolution_m < b.rung.resolution_m; });
@@ -123,49 +147,30 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
     yard = {runs.front().rung.label, runs.front().final_height};
   }
   ladder.yardstick = yard.label;
-  const Grid& yard_grid = yard.final_height.grid();
 
-  // the ground model at each cell size, the scene's own included
-  std::vector<double> sizes = spec.heuristic_cell_sizes_m;
+  const std::string solver = problem.solver().name();
   const double own = s.scene.ground.grid.cell_size_m;
-  if (std::none_of(sizes.begin(), sizes.end(), [&](double h) { return std::abs(h - own) <= 1e-9 * own; })) sizes.push_back(own);
-  std::sort(sizes.begin(), sizes.end(), std::greater<>());
+  const std::vector<double> sizes = ladder_cell_sizes(spec, own);
   std::optional<double> own_time;
-  std::size_t done = 0;
   const std::size_t total = sizes.size() + (spec.multires ? 1 : 0);
-  for (const double h : sizes) {
-    report(progress, static_cast<double>(done++) / total, "ladder: ground model at " + millimetres(h));
+  for (std::size_t k = 0; k < sizes.size(); ++k) {
+    const double h = sizes[k];
+    report(progress, static_cast<double>(k) / total, "ladder: " + solver + " at " + millimetres(h));
     Scene scene = s.scene;
     scene.ground.grid = regridded(s.scene.ground.grid, h, problem.spec().source_path);
     scene = with_initial(std::move(scene), onto(s.initial, scene.ground.grid));
-    HeightField result;
-    LadderRung rung;
-    rung.kind = problem.solver().name();
-    rung.resolution_m = h;
-    rung.label = problem.solver().name() + " " + millimetres(h);
-    rung.wall_time_s = timed_run(problem, s, scene, values, spec.timing_repeats, &result);
-    rung.rmse_m = surface_rmse_m(onto(result, yard_grid), yard.final_height, region);
-    if (std::abs(h - own) <= 1e-9 * own) own_time = rung.wall_time_s;
-    ladder.rungs.push_back(rung);
+    ladder.rungs.push_back(solver_rung(problem, s, scene, values, yard, {solver + " " + millimetres(h), solver, h}));
+    if (std::abs(h - own) <= 1e-9 * own) own_time = ladder.rungs.back().wall_time_s;
   }
   if (spec.multires) {
-    report(progress, static_cast<double>(done++) / total, "ladder: multi-resolution ground model");
-    Scene scene = s.scene;
-    for (ObjectSpec& o : scene.objects) o.simple = true;
-    GroundModelSpec options = ground_model_section(scene).options;
-    options.coarse_factor = spec.multires_coarse_factor;
-    scene = with_ground_options(std::move(scene), options);
-    HeightField result;
-    LadderRung rung;
-    rung.kind = "ground-multires";
-    rung.resolution_m = own;
-    rung.label = fmt::format("ground multires {} / {}", millimetres(own), millimetres(own * spec.multires_coarse_factor));
-    rung.wall_time_s = timed_run(problem, s, scene, values, spec.timing_repeats, &result);
-    rung.rmse_m = surface_rmse_m(onto(result, yard_grid), yard.final_height, region);
-    ladder.rungs.push_back(rung);
+    report(progress, static_cast<double>(sizes.size()) / total, "ladder: multi-resolution " + solver);
+    const std::string label =
+        fmt::format("{} multires {} / {}", solver, millimetres(own), millimetres(own * spec.multires_coarse_factor));
+    ladder.rungs.push_back(solver_rung(problem, s, multires_scene(s.scene, spec.multires_coarse_factor), values, yard,
+                                       {label, solver + "-multires", own}));
   }
   for (LiggghtsRun& run : runs) {
-    run.rung.rmse_m = surface_rmse_m(onto(run.final_height, yard_grid), yard.final_height, region);
+    run.rung.rmse_m = surface_rmse_m(onto(run.final_height, yard.final_height.grid()), yard.final_height, s.entry.rmse_region);
     ladder.rungs.push_back(run.rung);
   }
   if (!runs.empty() && own_time && *own_time > 0.0) {

@@ -132,7 +132,12 @@ CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistr
     if (s.entry.name.empty()) s.entry.name = s.scene.name;
     report(progress, static_cast<double>(k) / spec_.scenes.size(), "reference of " + s.entry.name);
     if (const DemSpec* dem = dem_of(s.scene)) s.grain_diameter_m = 2.0 * dem->grain_radius_m;
-    load_reference(s, registry, *solver_, progress);
+    try {
+      load_reference(s, registry, *solver_, progress);
+    } catch (const InputError& e) {
+      // name the calibration file's line too: the reference it points at is the one to fix
+      throw InputError(fmt::format("{}: reference: {}", s.entry.reference.location, e.what()));
+    }
     s.scene = starting_from(std::move(s.scene), s.initial);
     s.solver = solver_->compile(s.scene);
     for (const ObservableSpec& o : s.entry.observables) {

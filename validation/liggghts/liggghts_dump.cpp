@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
+#include "models/core/io/input_file.h"
 
 namespace repose {
 
@@ -19,11 +21,13 @@ namespace {
 // Line-by-line reader that knows where it is, for messages.
 class DumpReader {
  public:
-  explicit DumpReader(const std::string& path) : path_(path), in_(path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) fail_at(0, "is a directory, not a dump file");
-    if (!in_) fail_at(0, "cannot open the file");
-  }
+  // InputStream checks the file (a regular file within the dump bound) and
+  // never reads past it.
+  explicit DumpReader(const std::string& path) : path_(path), in_(path, input_kind::kLiggghtsDump) {}
+
+  const std::string& path() const { return path_; }
+  // The file's size, an upper bound for counts the file declares.
+  std::uint64_t file_bytes() const { return in_.file().size(); }
 
   bool next(std::string* line) {
     if (!std::getline(in_, *line)) return false;
@@ -66,7 +70,7 @@ class DumpReader {
 
  private:
   std::string path_;
-  std::ifstream in_;
+  InputStream in_;
   long line_number_ = 0;
 };
 
@@ -86,6 +90,21 @@ std::string first_word(DumpReader& r, const std::string& line, const char* item)
 
 void expect_item(DumpReader& r, const std::string& line, const std::string& item) {
   if (line.rfind("ITEM: " + item, 0) != 0) r.fail(fmt::format("expected 'ITEM: {}', got '{}'", item, line));
+}
+
+// A count the file cannot hold, or whose arrays exceed the memory budget,
+// is refused before allocating for it: a row holds at least one character
+// and one separator per column.
+void check_atom_count(const DumpReader& r, long count, std::size_t columns) {
+  const std::uint64_t max_rows = r.file_bytes() / (2 * columns);
+  if (static_cast<std::uint64_t>(count) > max_rows) {
+    r.fail(fmt::format("NUMBER OF ATOMS {} is more rows than the file can hold ({} bytes, at most {} rows of {} columns)",
+                       count, r.file_bytes(), max_rows, columns));
+  }
+  // id, type, position and radius per atom
+  constexpr std::uint64_t kBytesPerAtom = sizeof(long) + sizeof(int) + 4 * sizeof(double);
+  require_memory(memory_estimate::items_bytes(static_cast<std::uint64_t>(count), kBytesPerAtom),
+                 fmt::format("{}: a dump frame of {} atoms", r.path(), count));
 }
 
 DumpFrame read_frame(DumpReader& r, const std::string& timestep_line) {
@@ -112,6 +131,7 @@ DumpFrame read_frame(DumpReader& r, const std::string& timestep_line) {
   }
   const int ci = index["id"], cx = index["x"], cy = index["y"], cz = index["z"], cr = index["radius"];
   const int ct = index.contains("type") ? index["type"] : -1;
+  check_atom_count(r, count, columns.size());
 
   f.id.resize(count);
   f.type.assign(count, 1);

@@ -269,6 +269,37 @@ long bed_max_steps(const Scene& scene, const BedScriptOptions& options) {
   return 1 + chunk * chunks;
 }
 
+namespace {
+
+// The settling loop: run in chunks until the kinetic energy falls below the
+// threshold, then write the restart and the dump of the settled grains.
+void write_settle_loop(std::ostringstream& s, const DemSpec& dem, const BedScriptOptions& options, long chunk,
+                       long chunks) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  s << "# settle until the kinetic energy falls below the threshold\n"
+    << "variable settle_ke equal ke\n"
+    << "label settle_loop\n"
+    << "variable settle_i loop " << chunks << "\n"
+    << "run " << chunk << "\n"
+    << "if \"${settle_ke} < " << n(dem.settle_kinetic_energy_j) << "\" then \"jump SELF settled\"\n"
+    << "next settle_i\n"
+    << "jump SELF settle_loop\n"
+    << "print \"" << kFailureMarker << ": the bed did not settle below " << n(dem.settle_kinetic_energy_j)
+    << " J within " << n(options.max_settle_time_s) << " s\"\n"
+    << "jump SELF finished\n"
+    << "label settled\n"
+    << "print \"" << kSettledMarker << "\"\n"
+    << "write_restart " << kBedRestartFile << "\n"
+    << "dump bed all custom 1 " << kBedDumpFile << " id type x y z radius\n"
+    << "dump_modify bed sort id\n"
+    << "run 0\n"
+    << "undump bed\n"
+    << "print \"" << kCompleteMarker << "\"\n"
+    << "label finished\n";
+}
+
+}  // namespace
+
 std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
   const DemSpec& dem = require_dem(scene, "LIGGGHTS");
   if (!(options.insert_volume_fraction > 0.0 && options.insert_volume_fraction < options.packing_fraction &&
@@ -311,38 +342,18 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
     << "thermo_style custom step atoms ke\n"
     << "thermo " << std::max(1L, steps_for(options.thermo_interval_s, dem.time_step_s)) << "\n"
     << "thermo_modify lost error norm no\n"
-    << "run 1\nunfix ins\n\n"
-    << "# settle until the kinetic energy falls below the threshold\n"
-    << "variable settle_ke equal ke\n"
-    << "label settle_loop\n"
-    << "variable settle_i loop " << chunks << "\n"
-    << "run " << chunk << "\n"
-    << "if \"${settle_ke} < " << n(dem.settle_kinetic_energy_j) << "\" then \"jump SELF settled\"\n"
-    << "next settle_i\n"
-    << "jump SELF settle_loop\n"
-    << "print \"" << kFailureMarker << ": the bed did not settle below " << n(dem.settle_kinetic_energy_j)
-    << " J within " << n(options.max_settle_time_s) << " s\"\n"
-    << "jump SELF finished\n"
-    << "label settled\n"
-    << "print \"" << kSettledMarker << "\"\n"
-    << "write_restart " << kBedRestartFile << "\n"
-    << "dump bed all custom 1 " << kBedDumpFile << " id type x y z radius\n"
-    << "dump_modify bed sort id\n"
-    << "run 0\n"
-    << "undump bed\n"
-    << "print \"" << kCompleteMarker << "\"\n"
-    << "label finished\n";
+    << "run 1\nunfix ins\n\n";
+  write_settle_loop(s, dem, options, chunk, chunks);
   return s.str();
 }
 
-RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
-  const DemSpec& dem = require_dem(scene, "LIGGGHTS");
-  const auto n = [](double v) { return liggghts_number(v); };
-  RunScript out;
+namespace {
 
-  // domain: the grid's extent, up to the highest point any object reaches
+// The run's box (the grid's extent, up to the highest point any object
+// reaches) and each object's STL mesh at its start pose.
+void place_objects(const Scene& scene, const DemSpec& dem, const RunScriptOptions& options, RunScript* out) {
   const Grid& g = scene.ground.grid;
-  DemDomain& d = out.domain;
+  DemDomain& d = out->domain;
   d.x_min_m = g.origin_x_m;
   d.x_max_m = g.origin_x_m + g.extent_x_m();
   d.y_min_m = g.origin_y_m;
@@ -357,17 +368,99 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
       double reach = 0.0;
       for (Eigen::Index v = 0; v < o.body.V.rows(); ++v) reach = std::max(reach, o.body.V.row(v).norm());
       for (const Keyframe& key : o.keyframes) top = std::max(top, key.pose.position_m.z() + reach);
-      out.meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, o.pose_at(0.0))});
+      out->meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, o.pose_at(0.0))});
       continue;
     }
     const Aabb body = bounding_box(transformed(o.body, Pose{Eigen::Vector3d::Zero(), o.keyframes.front().pose.orientation}));
     for (const Keyframe& key : o.keyframes) top = std::max(top, key.pose.position_m.z() + body.max.z());
     Pose start = o.keyframes.front().pose;
     start.position_m = position_at(o, 0.0);
-    out.meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, start)});
+    out->meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, start)});
   }
   d.z_max_m = top + (options.top_margin_m > 0 ? options.top_margin_m : 8.0 * dem.grain_radius_m);
+}
 
+// The objects as granular walls; their force columns join the thermo line.
+void write_object_walls(std::ostringstream& s, const RunScript& out, const DemSpec& dem, std::string* thermo) {
+  if (out.meshes.empty()) return;
+  s << "# objects: STL meshes (force on each in f_objK[1..3]) made granular walls\n";
+  std::string ids;
+  for (const LiggghtsMeshFile& m : out.meshes) {
+    s << "fix " << m.fix_id << " all mesh/surface/stress file " << m.file_name << " type 1 stress on\n";
+    ids += " " + m.fix_id;
+    *thermo += fmt::format(" f_{0}[1] f_{0}[2] f_{0}[3]", m.fix_id);
+  }
+  s << "fix object_walls all wall/gran " << wall_model(dem) << " mesh n_meshes " << out.meshes.size() << " meshes"
+    << ids << "\n\n";
+}
+
+// One object's move/mesh fixes for one segment: a linear velocity and, for a
+// rotating object, a constant-rate rotation about the body origin's
+// segment-start position. Returns their ids in the order they must be unfixed.
+std::vector<std::string> write_segment_fixes(std::ostringstream& s, const ObjectSpec& o, std::size_t k,
+                                             std::size_t seg, double t0, double t1, double span_s,
+                                             const std::string& mesh_id) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  const bool turning = rotates(o);
+  const Pose a = turning ? o.pose_at(t0) : Pose{position_at(o, t0), Eigen::Quaterniond::Identity()};
+  const Pose b = turning ? o.pose_at(t1) : Pose{position_at(o, t1), Eigen::Quaterniond::Identity()};
+  const Eigen::Vector3d v = (b.position_m - a.position_m) / span_s;
+  std::vector<std::string> fixes;
+  if (!v.isZero(0.0)) {
+    const std::string id = fmt::format("move{}_{}", k, seg);
+    s << "fix " << id << " all move/mesh mesh " << mesh_id << " linear " << n(v.x()) << " " << n(v.y()) << " "
+      << n(v.z()) << "\n";
+    fixes.push_back(id);
+  }
+  const Turn turn = turning ? turn_between(a.orientation, b.orientation) : Turn{};
+  if (turn.angle_rad > 0.0) {
+    const std::string id = fmt::format("turn{}_{}", k, seg);
+    const Eigen::Vector3d& p = a.position_m;
+    s << "fix " << id << " all move/mesh mesh " << mesh_id << " rotate origin " << n(p.x()) << " " << n(p.y()) << " "
+      << n(p.z()) << " axis " << n(turn.axis.x()) << " " << n(turn.axis.y()) << " " << n(turn.axis.z())
+      << " period " << n(2.0 * std::numbers::pi * span_s / turn.angle_rad) << "\n";
+    fixes.push_back(id);
+  }
+  return {fixes.rbegin(), fixes.rend()};
+}
+
+// Keyframed motion: per object and segment a linear velocity and, for a
+// rotating object, a constant-rate rotation (the slerp between keyframes)
+// about the body origin. LIGGGHTS superposes move/mesh fixes on one mesh,
+// each later one in the frame carried by the earlier ones: linear first,
+// then rotate with its origin at the body origin's segment-start position
+// (so the centre of rotation travels with the object); superposed fixes
+// must be unfixed in reverse order. Checked against a real run in
+// tests/validation/liggghts/rotating_mesh_test.cpp.
+void write_motion(std::ostringstream& s, const Scene& scene, const DemSpec& dem, RunScript* out) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  const std::vector<double> times = segment_times(scene);
+  for (std::size_t seg = 0; seg + 1 < times.size(); ++seg) {
+    const long first = steps_for(times[seg], dem.time_step_s);
+    const long last = steps_for(times[seg + 1], dem.time_step_s);
+    if (last <= first) continue;
+    const double span_s = static_cast<double>(last - first) * dem.time_step_s;
+    std::vector<std::string> fixes;
+    s << "# segment " << seg << ": t = " << n(times[seg]) << " .. " << n(times[seg + 1]) << " s\n";
+    for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+      const auto ids = write_segment_fixes(s, scene.objects[k], k, seg, times[seg], times[seg + 1], span_s,
+                                           out->meshes[k].fix_id);
+      fixes.insert(fixes.end(), ids.begin(), ids.end());
+    }
+    s << "run " << (last - first) << "\n";
+    for (const std::string& id : fixes) s << "unfix " << id << "\n";
+    out->total_steps = last;
+  }
+}
+
+}  // namespace
+
+RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
+  const DemSpec& dem = require_dem(scene, "LIGGGHTS");
+  const auto n = [](double v) { return liggghts_number(v); };
+  RunScript out;
+  place_objects(scene, dem, options, &out);
+  const DemDomain& d = out.domain;
   const long thermo_every = std::max(1L, steps_for(options.thermo_interval_s, dem.time_step_s));
   out.dump_interval_steps = std::max(1L, steps_for(dem.dump_interval_s, dem.time_step_s));
 
@@ -383,69 +476,14 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
     << "run 0\n"
     << "change_box all z final " << n(d.z_min_m) << " " << n(d.z_max_m) << " units box\n\n";
   std::string thermo = "thermo_style custom step atoms ke";
-  if (!out.meshes.empty()) {
-    s << "# objects: STL meshes (force on each in f_objK[1..3]) made granular walls\n";
-    std::string ids;
-    for (const LiggghtsMeshFile& m : out.meshes) {
-      s << "fix " << m.fix_id << " all mesh/surface/stress file " << m.file_name << " type 1 stress on\n";
-      ids += " " + m.fix_id;
-      thermo += fmt::format(" f_{0}[1] f_{0}[2] f_{0}[3]", m.fix_id);
-    }
-    s << "fix object_walls all wall/gran " << wall_model(dem) << " mesh n_meshes " << out.meshes.size()
-      << " meshes" << ids << "\n\n";
-  }
+  write_object_walls(s, out, dem, &thermo);
   s << thermo << "\n"
     << "thermo " << thermo_every << "\n"
     << "thermo_modify lost error norm no\n"
     << "dump grains all custom " << out.dump_interval_steps << " " << kDumpDirectory
     << "/dump.*.txt id type x y z radius\n"
     << "dump_modify grains sort id\n\n";
-
-  // keyframed motion: per object and segment a linear velocity and, for a
-  // rotating object, a constant-rate rotation (the slerp between keyframes)
-  // about the body origin. LIGGGHTS superposes move/mesh fixes on one mesh,
-  // each later one in the frame carried by the earlier ones: linear first,
-  // then rotate with its origin at the body origin's segment-start position
-  // (so the centre of rotation travels with the object); superposed fixes
-  // must be unfixed in reverse order. Checked against a real run in
-  // tests/validation/rotating_mesh_test.cpp.
-  const std::vector<double> times = segment_times(scene);
-  for (std::size_t seg = 0; seg + 1 < times.size(); ++seg) {
-    const long first = steps_for(times[seg], dem.time_step_s);
-    const long last = steps_for(times[seg + 1], dem.time_step_s);
-    if (last <= first) continue;
-    const double span_s = static_cast<double>(last - first) * dem.time_step_s;
-    std::vector<std::string> fixes;
-    s << "# segment " << seg << ": t = " << n(times[seg]) << " .. " << n(times[seg + 1]) << " s\n";
-    for (std::size_t k = 0; k < scene.objects.size(); ++k) {
-      const ObjectSpec& o = scene.objects[k];
-      const bool turning = rotates(o);
-      const Pose a = turning ? o.pose_at(times[seg]) : Pose{position_at(o, times[seg]), Eigen::Quaterniond::Identity()};
-      const Pose b =
-          turning ? o.pose_at(times[seg + 1]) : Pose{position_at(o, times[seg + 1]), Eigen::Quaterniond::Identity()};
-      const Eigen::Vector3d v = (b.position_m - a.position_m) / span_s;
-      std::vector<std::string> object_fixes;
-      if (!v.isZero(0.0)) {
-        const std::string id = fmt::format("move{}_{}", k, seg);
-        s << "fix " << id << " all move/mesh mesh " << out.meshes[k].fix_id << " linear " << n(v.x()) << " "
-          << n(v.y()) << " " << n(v.z()) << "\n";
-        object_fixes.push_back(id);
-      }
-      const Turn turn = turning ? turn_between(a.orientation, b.orientation) : Turn{};
-      if (turn.angle_rad > 0.0) {
-        const std::string id = fmt::format("turn{}_{}", k, seg);
-        const Eigen::Vector3d& p = a.position_m;
-        s << "fix " << id << " all move/mesh mesh " << out.meshes[k].fix_id << " rotate origin " << n(p.x()) << " "
-          << n(p.y()) << " " << n(p.z()) << " axis " << n(turn.axis.x()) << " " << n(turn.axis.y()) << " "
-          << n(turn.axis.z()) << " period " << n(2.0 * std::numbers::pi * span_s / turn.angle_rad) << "\n";
-        object_fixes.push_back(id);
-      }
-      fixes.insert(fixes.end(), object_fixes.rbegin(), object_fixes.rend());
-    }
-    s << "run " << (last - first) << "\n";
-    for (const std::string& id : fixes) s << "unfix " << id << "\n";
-    out.total_steps = last;
-  }
+  write_motion(s, scene, dem, &out);
   s << "print \"" << kCompleteMarker << "\"\n";
   out.text = s.str();
   return out;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/io/input_file.h"
 
 namespace repose {
 
@@ -43,8 +44,7 @@ std::vector<double> numeric_row(const std::vector<std::string>& w, std::size_t c
 }  // namespace
 
 ThermoTable read_thermo_table(const std::string& log_path) {
-  std::ifstream in(log_path);
-  if (!in) throw InputError(fmt::format("{}: cannot open the log", log_path));
+  InputStream in(log_path, input_kind::kLiggghtsLog);
   ThermoTable table;
   bool in_block = false;
   for (std::string line; std::getline(in, line);) {

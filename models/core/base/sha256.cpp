@@ -114,6 +114,13 @@ std::string sha256_hex_of_file(const std::string& path) {
   if (std::filesystem::is_directory(path)) {
     throw InputError(fmt::format("{}: is a directory, expected a file", path));
   }
+  // streamed, so its size needs no bound; but a FIFO or device would block
+  // or never end (the readers' checks are in models/core/io/input_file.h,
+  // above this library)
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    throw InputError(fmt::format("{}: is not a regular file", path));
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
   Sha256 hash;

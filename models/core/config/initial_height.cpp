@@ -67,7 +67,9 @@ HeightField file_field(const Scene& scene) {
   const Grid& g = scene.ground.grid;
   const InitialHeight& init = scene.ground.initial;
   const bool png = std::filesystem::path(init.path).extension() == ".png";
-  ArrayXXdR a = png ? ArrayXXdR(read_png16(init.path) * (init.png_height_scale_m / 65535.0)) : read_npy_2d(init.path);
+  // the grid's shape is checked from the file's header, before decoding
+  ArrayXXdR a = png ? ArrayXXdR(read_png16(init.path, g.ny, g.nx) * (init.png_height_scale_m / 65535.0))
+                    : read_npy_2d(init.path, g.ny, g.nx);
   if (a.rows() != g.ny || a.cols() != g.nx) {
     throw InputError(init.path + ": the height array's shape no longer matches the scene's grid");
   }

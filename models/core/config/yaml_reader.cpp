@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
+#include "models/core/config/yaml_text_checks.h"
 
 namespace repose {
 
@@ -291,11 +293,32 @@ Eigen::Vector3d YamlMap::vec3_or(const std::string& key, const Range& each, cons
 }
 
 YamlValue parse_yaml(const std::string& text, const std::string& file) {
+  // yaml-cpp's nodes take about 85 bytes per byte of text (input_file.h)
+  require_memory(memory_estimate::product(text.size(), 90),
+                 fmt::format("{}: parsing {} of YAML", file, format_bytes(text.size())));
+  // the second-document check is on the text: yaml-cpp 0.7's LoadAll, which
+  // would count documents, loops forever on some inputs (a fuzz finding,
+  // tests/fuzz/regressions/yaml/), and Load ignores what follows the first
+  check_single_document(text, file);
+  YAML::Node root;
   try {
-    return YamlValue(file, YAML::Load(text), "");
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {  // syntax errors, and too deep nesting
+    // an unterminated quote makes the parser fail further down: name the quote
+    if (const auto quote = find_unclosed_quote(text, e.mark.line)) {
+      throw InputError(yaml_error_message(
+          file, *quote, "yaml", "a quoted string closed on the line where it opens",
+          fmt::format("an unterminated quote (the parser then failed at line {}, column {}: {})",
+                      one_based(e.mark.line), one_based(e.mark.column), e.msg)));
+    }
     throw InputError(yaml_error_message(file, e.mark, "yaml", "valid YAML syntax", "a syntax error (" + e.msg + ")"));
   }
+  check_quotes_closed(root, text, file);
+  return YamlValue(file, root, "");
+}
+
+YamlValue read_yaml_file(const std::string& path, const InputKind& kind) {
+  return parse_yaml(read_input_file(path, kind), path);
 }
 
 }  // namespace repose

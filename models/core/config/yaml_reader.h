@@ -19,6 +19,8 @@
 #include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
 
+#include "models/core/io/input_file.h"
+
 namespace repose {
 
 // The allowed interval of a number; infinite bounds mean unbounded. A number
@@ -127,8 +129,15 @@ class YamlMap {
 };
 
 // Parses a document; a YAML syntax error becomes the same one-line InputError
-// (key path "yaml"). An empty document gives a null node.
+// (key path "yaml"). An empty document gives a null node. Refused at their
+// line and column (yaml_text_checks.h): a second document in the text (even
+// one that is a syntax error), and a quote that is not closed on the line
+// where it opens (reported at the quote, not as a missing key further down).
 YamlValue parse_yaml(const std::string& text, const std::string& file);
+// Reads the file through input_file.h's checks (a regular file within
+// kind's size bound: input_kind::kScene, kCalibration, kExperiment, ...) and
+// parses it as parse_yaml does. Every YAML file a loader reads comes here.
+YamlValue read_yaml_file(const std::string& path, const InputKind& kind);
 
 // "a list of 3 finite numbers > 0"
 std::string describe_list_of(std::size_t n, const Range& each);

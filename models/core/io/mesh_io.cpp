@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
 #include "models/core/io/input_file.h"
 
 namespace repose {
@@ -39,14 +40,13 @@ std::string lower(std::string s) {
   return s;
 }
 
-std::string read_bytes(const std::string& path) {
-  require_regular_file(path, "mesh");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot be read (permissions?)");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) fail(path, "cannot be read");
-  return buffer.str();
+std::string read_bytes(const std::string& path) { return read_input_file(path, input_kind::kMesh); }
+
+// A text mesh holds at most one vertex or face per 8 bytes ("v 0 0 0\n"):
+// its arrays take at most about 8 times the text, and the text itself.
+void require_memory_for_text(const std::string& path, const std::string& text) {
+  require_memory(memory_estimate::product(text.size(), 9),
+                 fmt::format("{}: a text mesh of {}", path, format_bytes(text.size())));
 }
 
 std::vector<std::string> split_words(const std::string& line) {
@@ -167,6 +167,7 @@ float read_f32(const std::string& bytes, std::size_t at) { return std::bit_cast<
 
 TriangleMesh parse_binary_stl(const std::string& path, const std::string& bytes) {
   const std::uint32_t count = read_u32(bytes, 80);
+  require_memory(memory_estimate::triangle_mesh_bytes(count), fmt::format("{}: a mesh of {} triangles", path, count));
   VertexWelder welder;
   std::vector<Eigen::Vector3i> faces;
   faces.reserve(count);
@@ -255,7 +256,10 @@ TriangleMesh parse_stl(const std::string& path, const std::string& bytes) {
   if (bytes.size() >= 84 && bytes.size() == 84 + 50 * static_cast<std::size_t>(read_u32(bytes, 80))) {
     return parse_binary_stl(path, bytes);
   }
-  if (starts_with_solid(bytes) && bytes.find('\0') == std::string::npos) return parse_ascii_stl(path, bytes);
+  if (starts_with_solid(bytes) && bytes.find('\0') == std::string::npos) {
+    require_memory_for_text(path, bytes);
+    return parse_ascii_stl(path, bytes);
+  }
   if (bytes.size() < 84) fail(path, fmt::format("not an STL file ({} bytes: too short for binary, no 'solid')", bytes.size()));
   fail(path, fmt::format("truncated or corrupt binary STL: header says {} triangles ({} bytes), file has {} bytes",
                          read_u32(bytes, 80), 84 + 50 * static_cast<std::size_t>(read_u32(bytes, 80)), bytes.size()));
@@ -280,7 +284,9 @@ TriangleMesh read_mesh(const std::string& path) {
   const std::string ext = lower(fs::path(path).extension().string());
   if (ext != ".obj" && ext != ".stl") fail(path, "expected a .obj or .stl mesh file");
   const std::string bytes = read_bytes(path);
-  return ext == ".obj" ? parse_obj(path, bytes) : parse_stl(path, bytes);
+  if (ext == ".stl") return parse_stl(path, bytes);
+  require_memory_for_text(path, bytes);
+  return parse_obj(path, bytes);
 }
 
 void write_stl(const std::string& path, const TriangleMesh& mesh) {

@@ -10,11 +10,13 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <tuple>
 #include <limits>
 #include <optional>
 #include <string_view>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
 #include "models/core/io/input_file.h"
 
 namespace repose {
@@ -216,12 +218,10 @@ void store_le(std::uint64_t v, int bytes, std::string& out) {
   for (int k = 0; k < bytes; ++k) out.push_back(static_cast<char>((v >> (8 * k)) & 0xff));
 }
 
-std::string read_exactly(std::ifstream& in, std::uint64_t n, const std::string& path, const char* what) {
+std::string read_exactly(InputFile& in, std::uint64_t n, const char* what) {
   std::string buf(n, '\0');
-  in.read(buf.data(), static_cast<std::streamsize>(n));
-  if (static_cast<std::uint64_t>(in.gcount()) != n) {
-    throw InputError(fmt::format("{}: truncated: {} needs {} bytes, file has {}", path, what, n, in.gcount()));
-  }
+  const std::size_t got = in.read(buf.data(), buf.size());
+  if (got != n) throw InputError(fmt::format("{}: truncated: {} needs {} bytes, file has {}", in.path(), what, n, got));
   return buf;
 }
 
@@ -279,16 +279,17 @@ void write_npy(const std::string& path, const double* values, std::size_t count,
   if (!out) throw InputError(fmt::format("{}: write failed: {}", path, std::strerror(errno)));
 }
 
-}  // namespace
+// What the header says, checked against the file's size: everything needed
+// to decode the data, known before a byte of it is read.
+struct NpyLayout {
+  NpyHeader header;
+  std::uint64_t rows = 0;
+  std::uint64_t cols = 0;
+};
 
-ArrayXXdR read_npy_2d(const std::string& path) {
-  require_regular_file(path, ".npy");
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw InputError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
-  const std::uint64_t file_size = static_cast<std::uint64_t>(in.tellg());
-  in.seekg(0);
-
-  const std::string preamble = read_exactly(in, kMagicSize + 2, path, "the magic and version");
+NpyLayout read_layout(InputFile& in) {
+  const std::string& path = in.path();
+  const std::string preamble = read_exactly(in, kMagicSize + 2, "the magic and version");
   if (preamble.compare(0, kMagicSize, kMagic, kMagicSize) != 0) {
     throw InputError(fmt::format("{}: not a .npy file (bad magic)", path));
   }
@@ -299,51 +300,88 @@ ArrayXXdR read_npy_2d(const std::string& path) {
                                  major, minor));
   }
   const int length_bytes = major == 1 ? 2 : 4;
-  const std::string length_field = read_exactly(in, length_bytes, path, "the header length");
+  const std::string length_field = read_exactly(in, length_bytes, "the header length");
   const std::uint64_t header_bytes =
       load_le(reinterpret_cast<const unsigned char*>(length_field.data()), length_bytes);
-  const std::uint64_t data_offset = kMagicSize + 2 + length_bytes + header_bytes;
   if (header_bytes > kMaxHeaderBytes) {
     throw InputError(fmt::format("{}: bad .npy header: header length {} is implausibly large (corrupt file?)", path,
                                  header_bytes));
   }
-  if (data_offset > file_size) {
+  if (header_bytes > in.remaining()) {
     throw InputError(fmt::format("{}: truncated header: header says {} bytes, file has {} after the preamble", path,
-                                 header_bytes, file_size - (kMagicSize + 2 + length_bytes)));
+                                 header_bytes, in.remaining()));
   }
-  const std::string header_text = read_exactly(in, header_bytes, path, "the header");
-  const NpyHeader h = HeaderParser(header_text, path).parse();
-  const auto [rows, cols] = rows_cols(h, path);
-
+  NpyLayout l;
+  l.header = HeaderParser(read_exactly(in, header_bytes, "the header"), path).parse();
+  std::tie(l.rows, l.cols) = rows_cols(l.header, path);
   // reject shapes that cannot fit before multiplying further or allocating
-  if ((cols != 0 && rows > kMaxElementCount / cols) || rows * cols > kMaxElementCount ||
-      rows > static_cast<std::uint64_t>(std::numeric_limits<Eigen::Index>::max()) ||
-      cols > static_cast<std::uint64_t>(std::numeric_limits<Eigen::Index>::max())) {
-    throw InputError(fmt::format("{}: shape {} is too large (more than {} elements)", path, shape_text(h.shape),
-                                 kMaxElementCount));
+  constexpr auto kMaxIndex = static_cast<std::uint64_t>(std::numeric_limits<Eigen::Index>::max());
+  if ((l.cols != 0 && l.rows > kMaxElementCount / l.cols) || l.rows * l.cols > kMaxElementCount ||
+      l.rows > kMaxIndex || l.cols > kMaxIndex) {
+    throw InputError(fmt::format("{}: shape {} is too large (more than {} elements)", path,
+                                 shape_text(l.header.shape), kMaxElementCount));
   }
-  const std::uint64_t count = rows * cols;
-  const std::uint64_t data_bytes = count * static_cast<std::uint64_t>(h.item_bytes);
-  const std::uint64_t available = file_size - data_offset;
-  if (available < data_bytes) {
+  const std::uint64_t data_bytes = l.rows * l.cols * static_cast<std::uint64_t>(l.header.item_bytes);
+  if (in.remaining() < data_bytes) {
     throw InputError(fmt::format("{}: truncated: shape {} needs {} bytes of data, file has {}", path,
-                                 shape_text(h.shape), data_bytes, available));
+                                 shape_text(l.header.shape), data_bytes, in.remaining()));
   }
-  if (available > data_bytes) {
+  if (in.remaining() > data_bytes) {
     throw InputError(fmt::format("{}: {} unexpected bytes after the data: shape {} needs {} bytes, file has {}",
-                                 path, available - data_bytes, shape_text(h.shape), data_bytes, available));
+                                 path, in.remaining() - data_bytes, shape_text(l.header.shape), data_bytes,
+                                 in.remaining()));
   }
+  return l;
+}
 
-  const std::string data = read_exactly(in, data_bytes, path, "the data");
-  const auto* p = reinterpret_cast<const unsigned char*>(data.data());
-  ArrayXXdR a(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
-  for (std::uint64_t k = 0; k < count; ++k) {
-    // C order: k = r * cols + c; Fortran order: k = c * rows + r
-    const std::uint64_t r = h.fortran_order ? k % rows : k / cols;
-    const std::uint64_t c = h.fortran_order ? k / rows : k % cols;
-    a(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = element_value(p + k * h.item_bytes, h.dtype);
+// Decodes the data in chunks, so that the file's bytes are never held whole
+// beside the array.
+ArrayXXdR read_data(InputFile& in, const NpyLayout& l) {
+  const NpyHeader& h = l.header;
+  const std::uint64_t count = l.rows * l.cols;
+  require_memory(memory_estimate::grid_bytes(l.cols, l.rows, 1),
+                 fmt::format("{}: an array of {} x {} values", in.path(), l.rows, l.cols));
+  ArrayXXdR a(static_cast<Eigen::Index>(l.rows), static_cast<Eigen::Index>(l.cols));
+  constexpr std::uint64_t kChunkElements = 1 << 16;
+  std::string chunk;
+  for (std::uint64_t first = 0; first < count; first += kChunkElements) {
+    const std::uint64_t n = std::min(kChunkElements, count - first);
+    chunk = read_exactly(in, n * static_cast<std::uint64_t>(h.item_bytes), "the data");
+    const auto* p = reinterpret_cast<const unsigned char*>(chunk.data());
+    for (std::uint64_t k = first; k < first + n; ++k) {
+      // C order: k = r * cols + c; Fortran order: k = c * rows + r
+      const std::uint64_t r = h.fortran_order ? k % l.rows : k / l.cols;
+      const std::uint64_t c = h.fortran_order ? k / l.rows : k % l.cols;
+      a(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
+          element_value(p + (k - first) * h.item_bytes, h.dtype);
+    }
   }
   return a;
+}
+
+}  // namespace
+
+NpyShape read_npy_shape(const std::string& path) {
+  InputFile in = InputFile::open(path, input_kind::kNpy);
+  const NpyLayout l = read_layout(in);
+  return {l.rows, l.cols};
+}
+
+ArrayXXdR read_npy_2d(const std::string& path) {
+  InputFile in = InputFile::open(path, input_kind::kNpy);
+  const NpyLayout l = read_layout(in);
+  return read_data(in, l);
+}
+
+ArrayXXdR read_npy_2d(const std::string& path, Eigen::Index rows, Eigen::Index cols) {
+  REPOSE_DEMAND(rows >= 0 && cols >= 0);
+  InputFile in = InputFile::open(path, input_kind::kNpy);
+  const NpyLayout l = read_layout(in);
+  if (l.rows != static_cast<std::uint64_t>(rows) || l.cols != static_cast<std::uint64_t>(cols)) {
+    throw InputError(fmt::format("{}: its header declares {} rows x {} columns (shape {}); expected {} x {}", path,
+                                 l.rows, l.cols, shape_text(l.header.shape), rows, cols));
+  }
+  return read_data(in, l);
 }
 
 void write_npy_2d(const std::string& path, const ArrayXXdR& a, NpyType type) {

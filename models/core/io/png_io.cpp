@@ -10,8 +10,10 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
 #include "models/core/io/input_file.h"
 
 namespace repose {
@@ -41,16 +43,37 @@ extern "C" void png_ignore_warning(png_structp, png_const_charp) {}
 // ---- reading ----
 
 struct PngReader {
-  std::FILE* file = nullptr;
+  std::optional<InputFile> file;
   png_structp png = nullptr;
   png_infop info = nullptr;
   PngErrorSink errors;
+  bool ended_early = false;  // the file ended before libpng had what it needed
+  char read_error[256] = {0};
 
   ~PngReader() {
     if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
-    if (file) std::fclose(file);
   }
 };
+
+// libpng's read callback over the checked, bounded InputFile. An exception
+// must not cross libpng's C frames: the message is kept and png_error
+// (a longjmp) is called outside the catch block.
+extern "C" void png_read_from_input_file(png_structp png, png_bytep data, png_size_t n) {
+  auto* r = static_cast<PngReader*>(png_get_io_ptr(png));
+  std::size_t got = 0;
+  bool failed = false;
+  try {
+    got = r->file->read(data, n);
+  } catch (const std::exception& e) {
+    std::snprintf(r->read_error, sizeof r->read_error, "%s", e.what());
+    failed = true;
+  }
+  if (failed) png_error(png, r->read_error);
+  if (got < n) {
+    r->ended_early = true;
+    png_error(png, "Read Error");
+  }
+}
 
 struct PngLayout {
   png_uint_32 width = 0;
@@ -65,7 +88,7 @@ enum class Transform { kGreyAs8Or16, kRgb8 };
 // Reads the header and sets up transformations; false on a libpng error.
 bool read_png_header(PngReader* r, Transform transform, PngLayout* out) {
   if (setjmp(png_jmpbuf(r->png))) return false;
-  png_init_io(r->png, r->file);
+  png_set_read_fn(r->png, r, png_read_from_input_file);
   png_set_sig_bytes(r->png, 8);
   png_read_info(r->png, r->info);
   out->width = png_get_image_width(r->png, r->info);
@@ -109,11 +132,9 @@ const char* colour_type_name(int t) {
 
 // Opens the file, checks the signature and creates libpng's structs.
 void open_png(const std::string& path, PngReader& r) {
-  require_regular_file(path, "PNG");
-  r.file = std::fopen(path.c_str(), "rb");
-  if (!r.file) throw InputError(fmt::format("{}: cannot open: {}", path, std::strerror(errno)));
+  r.file.emplace(InputFile::open(path, input_kind::kPng));
   png_byte signature[8];
-  if (std::fread(signature, 1, 8, r.file) != 8 || png_sig_cmp(signature, 0, 8) != 0) {
+  if (r.file->read(signature, 8) != 8 || png_sig_cmp(signature, 0, 8) != 0) {
     throw InputError(fmt::format("{}: not a PNG file (bad signature)", path));
   }
   r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r.errors, png_error_to_sink, png_ignore_warning);
@@ -124,13 +145,27 @@ void open_png(const std::string& path, PngReader& r) {
 
 // libpng says only "Read Error" when the file ends early.
 std::string read_failure(const std::string& path, const PngReader& r) {
-  if (std::feof(r.file)) return fmt::format("{}: truncated PNG: the file ends early ({})", path, r.errors.message);
+  if (r.read_error[0] != '\0') return r.read_error;  // already "PATH: REASON"
+  if (r.ended_early) return fmt::format("{}: truncated PNG: the file ends early ({})", path, r.errors.message);
   return fmt::format("{}: bad PNG: {}", path, r.errors.message);
+}
+
+// The size the header declares, refused when it is not `expected` (a height
+// map for a known grid) or too large: before a pixel is decoded.
+void check_declared_size(const std::string& path, const PngLayout& layout, const std::optional<PngSize>& expected) {
+  if (expected && (layout.width != expected->width || layout.height != expected->height)) {
+    throw InputError(fmt::format("{}: its header declares {} x {} pixels (width x height); expected {} x {}", path,
+                                 layout.width, layout.height, expected->width, expected->height));
+  }
+  if (static_cast<std::uint64_t>(layout.width) * layout.height > kMaxPixels) {
+    throw InputError(fmt::format("{}: PNG of {} x {} pixels is too large (more than {} pixels)", path, layout.width,
+                                 layout.height, kMaxPixels));
+  }
 }
 
 // Reads the whole image (after `transform`) as rows of bytes, top row first.
 std::vector<png_byte> read_png_bytes(const std::string& path, Transform transform, PngLayout& layout,
-                                     const char* wanted) {
+                                     const char* wanted, const std::optional<PngSize>& expected) {
   PngReader r;
   open_png(path, r);
   if (!read_png_header(&r, transform, &layout)) throw InputError(read_failure(path, r));
@@ -138,10 +173,11 @@ std::vector<png_byte> read_png_bytes(const std::string& path, Transform transfor
     throw InputError(fmt::format("{}: PNG colour type is {} ({}-bit); expected {}", path,
                                  colour_type_name(layout.color_type), layout.bit_depth, wanted));
   }
-  if (static_cast<std::uint64_t>(layout.width) * layout.height > kMaxPixels) {
-    throw InputError(fmt::format("{}: PNG of {} x {} pixels is too large (more than {} pixels)", path, layout.width,
-                                 layout.height, kMaxPixels));
-  }
+  check_declared_size(path, layout, expected);
+  // the decoded rows, and the array of doubles a height map becomes
+  require_memory(memory_estimate::sum(memory_estimate::product(layout.row_bytes, layout.height),
+                                      memory_estimate::image_bytes(layout.width, layout.height, sizeof(double))),
+                 fmt::format("{}: a PNG of {} x {} pixels", path, layout.width, layout.height));
   std::vector<png_byte> pixels(layout.row_bytes * layout.height);
   std::vector<png_bytep> rows(layout.height);
   for (png_uint_32 y = 0; y < layout.height; ++y) rows[y] = pixels.data() + y * layout.row_bytes;
@@ -199,10 +235,25 @@ void write_png_bytes(const std::string& path, int width, int height, int bit_dep
 
 }  // namespace
 
-ArrayXXdR read_png16(const std::string& path) {
+PngSize read_png_size(const std::string& path) {
+  PngReader r;
+  open_png(path, r);
+  PngLayout layout;
+  if (!read_png_header(&r, Transform::kGreyAs8Or16, &layout)) throw InputError(read_failure(path, r));
+  return {layout.width, layout.height};
+}
+
+ArrayXXdR read_png16(const std::string& path) { return read_png16(path, std::nullopt); }
+
+ArrayXXdR read_png16(const std::string& path, Eigen::Index rows, Eigen::Index cols) {
+  REPOSE_DEMAND(rows >= 0 && cols >= 0 && rows <= 0xffffffffLL && cols <= 0xffffffffLL);
+  return read_png16(path, PngSize{static_cast<std::uint32_t>(cols), static_cast<std::uint32_t>(rows)});
+}
+
+ArrayXXdR read_png16(const std::string& path, const std::optional<PngSize>& expected) {
   PngLayout layout;
   const std::vector<png_byte> pixels =
-      read_png_bytes(path, Transform::kGreyAs8Or16, layout, "16-bit or 8-bit grey");
+      read_png_bytes(path, Transform::kGreyAs8Or16, layout, "16-bit or 8-bit grey", expected);
   const int nx = static_cast<int>(layout.width);
   const int ny = static_cast<int>(layout.height);
   const bool sixteen = layout.bit_depth == 16;
@@ -245,7 +296,7 @@ void write_png_rgb(const std::string& path, const RgbImage& image) {
 
 RgbImage read_png_rgb(const std::string& path) {
   PngLayout layout;
-  std::vector<png_byte> pixels = read_png_bytes(path, Transform::kRgb8, layout, "RGB");
+  std::vector<png_byte> pixels = read_png_bytes(path, Transform::kRgb8, layout, "RGB", std::nullopt);
   REPOSE_DEMAND(layout.row_bytes == static_cast<std::size_t>(layout.width) * 3);
   RgbImage image;
   image.width = static_cast<int>(layout.width);

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <random>
 #include <system_error>
+#include <utility>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -15,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/run/interrupt_cleanup.h"
 
 namespace repose {
 namespace fs = std::filesystem;
@@ -116,11 +118,18 @@ OutputDirectory OutputDirectory::open(const std::string& target_text, bool force
   return OutputDirectory(target, make_sibling(target, "tmp", create_directory), force);
 }
 
+OutputDirectory::OutputDirectory(fs::path target, fs::path temporary, bool force)
+    : target_(std::move(target)),
+      temporary_(std::move(temporary)),
+      force_(force),
+      interrupt_slot_(remove_on_interrupt(temporary_)) {}
+
 OutputDirectory::OutputDirectory(OutputDirectory&& other) noexcept
     : target_(std::move(other.target_)),
       temporary_(std::move(other.temporary_)),
       force_(other.force_),
-      committed_(other.committed_) {
+      committed_(other.committed_),
+      interrupt_slot_(std::exchange(other.interrupt_slot_, -1)) {
   other.temporary_.clear();
 }
 
@@ -128,6 +137,7 @@ OutputDirectory::~OutputDirectory() {
   if (temporary_.empty()) return;
   std::error_code ec;  // best effort: a destructor must not throw
   fs::remove_all(temporary_, ec);
+  forget_on_interrupt(interrupt_slot_);
 }
 
 std::string OutputDirectory::path(std::string_view name) const {
@@ -159,6 +169,7 @@ void OutputDirectory::commit() {
     rename_or_throw(temporary_, target_);
   }
   temporary_.clear();
+  forget_on_interrupt(std::exchange(interrupt_slot_, -1));
   committed_ = true;
 }
 
@@ -167,14 +178,17 @@ void write_file_atomically(const std::string& path, const std::function<void(con
   if (fs::is_directory(target)) throw InputError(fmt::format("{}: is a directory, expected a file name", path));
   remove_stale_siblings(target);
   const std::string temporary = make_sibling(target, "tmp", create_file).string();
+  const int slot = remove_on_interrupt(temporary);
   try {
     write(temporary);
     rename_or_throw(temporary, target);
   } catch (...) {
     std::error_code ec;
     fs::remove(temporary, ec);
+    forget_on_interrupt(slot);
     throw;
   }
+  forget_on_interrupt(slot);
 }
 
 }  // namespace repose

@@ -9,8 +9,10 @@
 //   write_npy_2d(out.path("height.npy"), h);
 //   out.commit();
 //
-// Temporaries of killed runs (their process is gone) are removed by the next
-// open() of the same target. Not for folders shared between machines: the
+// A run ended by SIGTERM, SIGINT or SIGHUP removes its temporary before it
+// dies (interrupt_cleanup.h). Temporaries of runs killed otherwise (SIGKILL,
+// a crash: their process is gone) are removed by the next open() of the
+// same target. Not for folders shared between machines: the
 // liveness check of a temporary's owner is by process id on this host.
 
 #include <filesystem>
@@ -45,13 +47,13 @@ class OutputDirectory {
   bool committed() const { return committed_; }
 
  private:
-  OutputDirectory(std::filesystem::path target, std::filesystem::path temporary, bool force)
-      : target_(std::move(target)), temporary_(std::move(temporary)), force_(force) {}
+  OutputDirectory(std::filesystem::path target, std::filesystem::path temporary, bool force);
 
   std::filesystem::path target_;
   std::filesystem::path temporary_;  // empty once committed or moved from
   bool force_ = false;
   bool committed_ = false;
+  int interrupt_slot_ = -1;  // remove_on_interrupt's slot for temporary_
 };
 
 // Writes one file atomically: `write` gets a temporary path beside `path`

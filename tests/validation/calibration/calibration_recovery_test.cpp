@@ -32,18 +32,20 @@ TEST(CalibrationRecovery, RecoversKnownParametersFromPileIndentationAndDrag) {
   const Truth truth[] = {{0.7, 0.02}, {35.0 * kDeg, 1.0 * kDeg}, {0.15, 0.02}};
   ASSERT_EQ(problem.free().size(), 3u);
   EXPECT_LT(fit.final_cost, 1e-3 * fit.initial_cost);
+  // every parameter is recovered within its stated tolerance, whatever the
+  // covariance says of it; alpha (displaced volume) and theta (settled
+  // slopes), which these scenes measure, are also determined with a finite
+  // standard error
   for (std::size_t k = 0; k < 3; ++k) {
-    const std::string status = determination(fit, problem, k);
     const double value = fit.values[problem.free()[k]];
-    SCOPED_TRACE(problem.spec().parameters[k].label() + " = " + std::to_string(value) + ", " + status);
-    if (status == "determined") {
-      EXPECT_NEAR(value, truth[k].value, truth[k].tolerance);
-      EXPECT_TRUE(std::isfinite(fit.uncertainty.standard_error[k]));
-    }
+    SCOPED_TRACE(problem.spec().parameters[k].label() + " = " + std::to_string(value) + ", " +
+                 determination(fit, problem, k));
+    EXPECT_NEAR(value, truth[k].value, truth[k].tolerance);
   }
-  // alpha (displaced volume) and theta (settled slopes) are what these scenes measure
-  EXPECT_EQ(determination(fit, problem, 0), "determined");
-  EXPECT_EQ(determination(fit, problem, 1), "determined");
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(determination(fit, problem, k), "determined");
+    EXPECT_TRUE(std::isfinite(fit.uncertainty.standard_error[k]));
+  }
   // the fitted parameters reproduce the reference surfaces
   for (const SceneError& e : fit.scenes) EXPECT_LT(e.rmse_fitted_m, 0.1 * e.rmse_initial_m) << e.name;
 }

@@ -1,6 +1,9 @@
 #include "validation/liggghts/liggghts_dump.h"
 
+#include <sys/stat.h>
+
 #include <cstdlib>
+#include <utility>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -97,6 +100,32 @@ TEST_F(LiggghtsDump, RefusesMalformedFilesWithTheReason) {
   }
   EXPECT_THROW(read_dump_file((dir_ / "missing.txt").string()), InputError);
   EXPECT_THROW(read_last_dump_frame(write("empty.txt", "")), InputError);
+}
+
+// A count the file cannot hold was allocated first (a few bytes declaring
+// 10^15 atoms ended in bad_alloc); now it is refused from the file's size.
+TEST_F(LiggghtsDump, RefusesACountTheFileCannotHoldBeforeAllocating) {
+  const std::string message = error_of(
+      "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1000000000000000\nITEM: BOX BOUNDS ff ff ff\n0 1\n0 1\n0 1\n"
+      "ITEM: ATOMS id x y z radius\n1 0 0 0 0.1\n");
+  EXPECT_NE(message.find("NUMBER OF ATOMS 1000000000000000 is more rows than the file can hold"), std::string::npos)
+      << message;
+}
+
+// A FIFO waited forever for a writer; a directory or device is no dump either.
+TEST_F(LiggghtsDump, RefusesFilesThatAreNotRegularFiles) {
+  const std::string fifo = (dir_ / "dump.0.txt").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const auto& [path, reason] : {std::pair<std::string, std::string>{fifo, "is a FIFO (named pipe)"},
+                                     {"/dev/zero", "is a character device"},
+                                     {dir_.string(), "is a directory"}}) {
+    try {
+      read_dump_file(path);
+      ADD_FAILURE() << path << " was read";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path + ": " + reason), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST_F(LiggghtsDump, ListsDumpFilesByStep) {

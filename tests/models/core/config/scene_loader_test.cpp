@@ -8,6 +8,7 @@
 #include <fstream>
 #include <numbers>
 #include <regex>
+#include <utility>
 
 #include "models/core/base/error.h"
 #include "models/ground/ground_section.h"
@@ -93,6 +94,18 @@ TEST(SceneLoader, ErrorsPointAtTheOffendingLineAndColumn) {
   EXPECT_EQ(error_of((bad / "unknown_key_nested.yaml").string()).rfind((bad / "unknown_key_nested.yaml").string() + ":5:3: ", 0), 0u);
   // a missing key: the map that lacks it (ground's first key)
   EXPECT_EQ(error_of((bad / "missing_required.yaml").string()).rfind((bad / "missing_required.yaml").string() + ":4:3: ", 0), 0u);
+}
+
+// YAML mistakes are reported where they are: the second document at its
+// '---', an unterminated quote at the quote (not "missing key" further down).
+TEST(SceneLoader, YamlMistakesPointAtTheirOwnLineAndColumn) {
+  const fs::path bad = kScenes / "bad";
+  for (const auto& [name, location] : {std::pair<std::string, std::string>{"yaml_second_document.yaml", ":7:1: yaml: "},
+                                       {"yaml_unterminated_quote.yaml", ":2:7: name: "},
+                                       {"yaml_unterminated_quote_paired.yaml", ":2:7: yaml: "}}) {
+    const std::string file = (bad / name).string();
+    EXPECT_EQ(error_of(file).rfind(file + location, 0), 0u) << error_of(file);
+  }
 }
 
 TEST(SceneLoader, MissingSceneFileIsAnInputError) {

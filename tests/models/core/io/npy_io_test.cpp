@@ -15,6 +15,8 @@
 #include <string>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
+#include <sys/stat.h>
 
 #include "tests/support/temp_dir.h"
 
@@ -317,6 +319,35 @@ TEST_F(NpyIo, MalformedHeadersAreInputErrors) {
   bad_version[6] = 4;
   write_all(path("v.npy"), bad_version);
   expect_input_error(path("v.npy"), "version 4.0");
+}
+
+// The shape is checked from the header, before the data is read or memory
+// allocated: with a budget of one byte, the wrong shape is what is reported.
+TEST_F(NpyIo, ExpectedShapeIsCheckedFromTheHeaderBeforeDecoding) {
+  write_all(path("a.npy"), npy_file("{'descr': '<f8', 'fortran_order': False, 'shape': (3, 4), }") +
+                               f8_data({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}));
+  const NpyShape shape = read_npy_shape(path("a.npy"));
+  EXPECT_EQ(shape.rows, 3u);
+  EXPECT_EQ(shape.cols, 4u);
+  EXPECT_EQ(read_npy_2d(path("a.npy"), 3, 4)(2, 3), 12.0);
+  set_memory_budget_bytes(1);
+  try {
+    (void)read_npy_2d(path("a.npy"), 4, 3);
+    ADD_FAILURE() << "a 3 x 4 array was accepted as 4 x 3";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("its header declares 3 rows x 4 columns (shape (3, 4)); expected 4 x 3"),
+              std::string::npos)
+        << e.what();
+  }
+  // without an expected shape the budget refuses the 96 bytes
+  expect_input_error(path("a.npy"), "needs about 96 bytes of memory, more than the memory budget of 1 bytes");
+  set_memory_budget_bytes(std::nullopt);
+}
+
+TEST_F(NpyIo, FifoAndDeviceAreRefusedWithoutBlocking) {
+  ASSERT_EQ(::mkfifo(path("pipe.npy").c_str(), 0600), 0);
+  expect_input_error(path("pipe.npy"), "is a FIFO (named pipe), not a regular .npy file");
+  expect_input_error("/dev/zero", "is a character device, not a regular .npy file");
 }
 
 }  // namespace

@@ -11,6 +11,9 @@
 #include <string>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
+#include <sys/stat.h>
+#include <zlib.h>
 
 #include "tests/support/temp_dir.h"
 
@@ -177,6 +180,70 @@ TEST_F(PngIo, RgbReaderConvertsGrey) {
   write_reference_png(path("g.png"), 2, 1, PNG_FORMAT_GRAY, {7, 200});
   const RgbImage back = read_png_rgb(path("g.png"));
   EXPECT_EQ(back.rgb, (std::vector<std::uint8_t>{7, 7, 7, 200, 200, 200}));
+}
+
+// A PNG whose header declares width x height 16-bit grey pixels, followed by
+// one IDAT of a few compressed zero rows and IEND: a few hundred bytes that
+// would decode into width * height * 2 bytes of pixels.
+std::string png_declaring(std::uint32_t width, std::uint32_t height) {
+  auto u32 = [](std::uint32_t v) {
+    return std::string{static_cast<char>(v >> 24), static_cast<char>(v >> 16), static_cast<char>(v >> 8),
+                       static_cast<char>(v)};
+  };
+  auto chunk = [&](const std::string& type, const std::string& data) {
+    const std::string body = type + data;
+    const auto crc = static_cast<std::uint32_t>(
+        ::crc32(0, reinterpret_cast<const Bytef*>(body.data()), static_cast<uInt>(body.size())));
+    return u32(static_cast<std::uint32_t>(data.size())) + body + u32(crc);
+  };
+  const std::string ihdr = u32(width) + u32(height) + std::string{16, 0, 0, 0, 0};  // 16-bit grey
+  std::string raw(4 * (1 + 2 * static_cast<std::size_t>(width)), '\0');               // 4 rows, filter 0
+  uLongf packed_size = compressBound(static_cast<uLong>(raw.size()));
+  std::string packed(packed_size, '\0');
+  ::compress(reinterpret_cast<Bytef*>(packed.data()), &packed_size, reinterpret_cast<const Bytef*>(raw.data()),
+             static_cast<uLong>(raw.size()));
+  packed.resize(packed_size);
+  return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", ihdr) + chunk("IDAT", packed) + chunk("IEND", "");
+}
+
+// The case: a small PNG whose header says 16384^2 for a 32^2 grid was
+// decoded (2.6 GB) before its shape was compared. Now the header decides:
+// with a budget of one byte, the wrong size is what is reported.
+TEST_F(PngIo, ExpectedSizeIsCheckedFromTheHeaderBeforeDecoding) {
+  write_all(path("huge.png"), png_declaring(16384, 16384));
+  const PngSize size = read_png_size(path("huge.png"));
+  EXPECT_EQ(size.width, 16384u);
+  EXPECT_EQ(size.height, 16384u);
+  set_memory_budget_bytes(1);
+  try {
+    (void)read_png16(path("huge.png"), 32, 32);
+    ADD_FAILURE() << "a 16384^2 PNG was accepted for a 32^2 grid";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("its header declares 16384 x 16384 pixels (width x height); expected 32 x 32"),
+              std::string::npos)
+        << e.what();
+  }
+  set_memory_budget_bytes(std::nullopt);
+}
+
+TEST_F(PngIo, DecodingBeyondTheMemoryBudgetIsRefusedWithTheEstimate) {
+  write_all(path("huge.png"), png_declaring(16384, 16384));
+  set_memory_budget_bytes(std::uint64_t{64} << 20);
+  // 16384^2 pixels: 2 bytes decoded plus 8 as a double each
+  expect_input_error(path("huge.png"), "a PNG of 16384 x 16384 pixels needs about 2.5 GB of memory");
+  set_memory_budget_bytes(std::nullopt);
+  // the same construction at a size that fits decodes: the refusals above are the size's
+  write_all(path("small.png"), png_declaring(5, 4));
+  const ArrayXXdR small = read_png16(path("small.png"), 4, 5);
+  EXPECT_EQ(small.rows(), 4);
+  EXPECT_EQ(small.cols(), 5);
+  EXPECT_EQ(small.abs().maxCoeff(), 0.0);
+}
+
+TEST_F(PngIo, FifoAndDeviceAreRefusedWithoutBlocking) {
+  ASSERT_EQ(::mkfifo(path("pipe.png").c_str(), 0600), 0);
+  expect_input_error(path("pipe.png"), "is a FIFO (named pipe), not a regular PNG file");
+  expect_input_error("/dev/zero", "is a character device, not a regular PNG file");
 }
 
 }  // namespace

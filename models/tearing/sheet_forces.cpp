@@ -1,0 +1,148 @@
+#include "models/tearing/sheet_forces.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace repose {
+
+SpringConstants spring_constants(const SheetModel& model, const SheetParams& params) {
+  return {0.75 * params.stiffness_n_per_m, 0.375 * params.stiffness_n_per_m,
+          model.spec.bending_stiffness_n_m / (model.cell_size_m * model.cell_size_m)};
+}
+
+std::array<CellSpring, 6> cell_springs(const SheetModel& model, int cell) {
+  const auto [v00, v10, v11, v01] = model.corners(cell);
+  const double h = model.cell_size_m, d = h * std::numbers::sqrt2;
+  return {CellSpring{v00, v10, h, 0.5, false}, CellSpring{v10, v11, h, 0.5, false},
+          CellSpring{v01, v11, h, 0.5, false}, CellSpring{v00, v01, h, 0.5, false},
+          CellSpring{v00, v11, d, 1.0, true},  CellSpring{v10, v01, d, 1.0, true}};
+}
+
+namespace {
+
+bool edge_held(const std::array<int, 2>& cells, const SheetState& state) {
+  return (cells[0] >= 0 && state.intact(cells[0])) || (cells[1] >= 0 && state.intact(cells[1]));
+}
+
+double spring_constant(const SpringConstants& k, const CellSpring& s, double weight) {
+  return (s.diagonal ? k.diagonal_n_per_m : k.edge_n_per_m) * s.share * weight;
+}
+
+}  // namespace
+
+bool bending_acts(const BendingTerm& t, const SheetState& state) {
+  return edge_held(t.cells_ab, state) && edge_held(t.cells_bc, state);
+}
+
+namespace {
+
+// The spring vectors of a cell and whether any is stretched past `limit`.
+struct CellStretch {
+  std::array<Eigen::Vector3d, 6> d;
+  std::array<double, 6> length;
+  bool over = false;
+};
+
+CellStretch stretch_of(const std::array<CellSpring, 6>& springs, const Eigen::Matrix3Xd& x, double limit) {
+  CellStretch s;
+  for (int k = 0; k < 6; ++k) {
+    s.d[k] = x.col(springs[k].b) - x.col(springs[k].a);
+    s.length[k] = s.d[k].norm();
+    s.over = s.over || s.length[k] > (1.0 + limit) * springs[k].rest_length_m;
+  }
+  return s;
+}
+
+void add_cell_forces(const std::array<CellSpring, 6>& springs, const CellStretch& s, const SpringConstants& k,
+                     double weight, Eigen::Matrix3Xd* forces) {
+  for (int q = 0; q < 6; ++q) {
+    if (s.length[q] == 0.0) continue;  // coincident ends: no direction to push along
+    const CellSpring& sp = springs[q];
+    const Eigen::Vector3d f = (spring_constant(k, sp, weight) * (s.length[q] - sp.rest_length_m) / s.length[q]) * s.d[q];
+    forces->col(sp.a) += f;
+    forces->col(sp.b) -= f;
+  }
+}
+
+void add_bending_forces(const SheetModel& model, const SpringConstants& k, const SheetState& state,
+                        Eigen::Matrix3Xd* forces) {
+  const Eigen::Matrix3Xd& x = state.positions;
+  for (const BendingTerm& t : model.bending) {
+    if (!bending_acts(t, state)) continue;
+    const Eigen::Vector3d g = (k.bending_n_per_m * t.weight) * (x.col(t.a) - 2.0 * x.col(t.b) + x.col(t.c));
+    forces->col(t.a) -= g;
+    forces->col(t.b) += 2.0 * g;
+    forces->col(t.c) -= g;
+  }
+}
+
+}  // namespace
+
+void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
+                     Eigen::Matrix3Xd* forces) {
+  forces->setZero(3, model.vertex_count());
+  const SpringConstants k = spring_constants(model, params);
+  for (int c = 0; c < model.cell_count(); ++c) {
+    if (!state.intact(c)) continue;
+    const std::array<CellSpring, 6> springs = cell_springs(model, c);
+    add_cell_forces(springs, stretch_of(springs, state.positions, INFINITY), k, model.cell_stiffness[c], forces);
+  }
+  add_bending_forces(model, k, state, forces);
+}
+
+bool cell_overstretched(const SheetModel& model, const SheetParams& params, const SheetState& state, int c) {
+  return stretch_of(cell_springs(model, c), state.positions, cell_tear_strain(model, params, c)).over;
+}
+
+int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
+                             Eigen::Matrix3Xd* forces) {
+  forces->setZero(3, model.vertex_count());
+  const SpringConstants k = spring_constants(model, params);
+  int torn = 0;
+  for (int c = 0; c < model.cell_count(); ++c) {
+    if (!state->intact(c)) continue;
+    const std::array<CellSpring, 6> springs = cell_springs(model, c);
+    const CellStretch s = stretch_of(springs, state->positions, cell_tear_strain(model, params, c));
+    if (s.over) {
+      state->torn_step[static_cast<std::size_t>(c)] = step_number;
+      ++torn;
+    } else {
+      add_cell_forces(springs, s, k, model.cell_stiffness[c], forces);
+    }
+  }
+  add_bending_forces(model, k, *state, forces);
+  return torn;
+}
+
+double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state) {
+  const SpringConstants k = spring_constants(model, params);
+  const Eigen::Matrix3Xd& x = state.positions;
+  double energy = 0.0;
+  for (int c = 0; c < model.cell_count(); ++c) {
+    if (!state.intact(c)) continue;
+    for (const CellSpring& s : cell_springs(model, c)) {
+      const double stretch = (x.col(s.b) - x.col(s.a)).norm() - s.rest_length_m;
+      energy += 0.5 * spring_constant(k, s, model.cell_stiffness[c]) * stretch * stretch;
+    }
+  }
+  for (const BendingTerm& t : model.bending) {
+    if (bending_acts(t, state)) {
+      energy += 0.5 * k.bending_n_per_m * t.weight * (x.col(t.a) - 2.0 * x.col(t.b) + x.col(t.c)).squaredNorm();
+    }
+  }
+  return energy;
+}
+
+double kinetic_energy(const SheetModel& model, const SheetState& state) {
+  return 0.5 * (state.velocities.colwise().squaredNorm().transpose().array() * model.mass_kg.array()).sum();
+}
+
+double max_spring_strain(const SheetModel& model, const SheetState& state, int cell) {
+  double strain = -1.0;
+  for (const CellSpring& s : cell_springs(model, cell)) {
+    strain = std::max(strain, (state.positions.col(s.b) - state.positions.col(s.a)).norm() / s.rest_length_m - 1.0);
+  }
+  return strain;
+}
+
+}  // namespace repose

@@ -1,0 +1,65 @@
+#pragma once
+// The sheet's internal forces and energy (springs of intact cells, bending
+// terms whose edges still hold; sheet_model.h), and the springs' strains.
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "models/tearing/sheet_model.h"
+#include "models/tearing/sheet_params.h"
+#include "models/tearing/sheet_state.h"
+
+namespace repose {
+
+// Spring constants of a cell of relative fibre density 1 (N/m).
+struct SpringConstants {
+  double edge_n_per_m = 0.0;      // a full (interior) edge: 3/4 E t
+  double diagonal_n_per_m = 0.0;  // 3/8 E t
+  double bending_n_per_m = 0.0;   // D / h^2
+};
+SpringConstants spring_constants(const SheetModel& model, const SheetParams& params);
+
+// One of a cell's six springs: vertices, rest length, and the fraction of
+// the edge/diagonal constant the cell holds (1/2 for an edge, 1 for a diagonal).
+struct CellSpring {
+  int a = 0, b = 0;
+  double rest_length_m = 0.0;
+  double share = 0.0;
+  bool diagonal = false;
+};
+std::array<CellSpring, 6> cell_springs(const SheetModel& model, int cell);
+
+// Whether bending term t acts: both its edges have an intact cell.
+bool bending_acts(const BendingTerm& t, const SheetState& state);
+
+// Internal forces (N) on every vertex, 3 x vertex_count, overwritten.
+void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
+                     Eigen::Matrix3Xd* forces);
+
+// The tear rule of tearing.h and internal_forces in one pass over the
+// springs (each cell's verdict depends on its own springs only, so tearing
+// a cell before the next is judged changes nothing): cells over their limit
+// are marked torn at step_number, the forces of the rest accumulated.
+// Returns the number of cells torn.
+int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
+                             Eigen::Matrix3Xd* forces);
+
+// Whether cell c has a spring past its tear strain: the one
+// rule both tear_and_internal_forces and tearing.h apply.
+bool cell_overstretched(const SheetModel& model, const SheetParams& params, const SheetState& state, int c);
+
+// The strain past which cell c tears: tear_strain x its tear factor.
+inline double cell_tear_strain(const SheetModel& model, const SheetParams& params, int c) {
+  return params.tear_strain * model.cell_tear_factor[c];
+}
+
+// Elastic energy of the intact springs and acting bending terms (J).
+double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state);
+// Kinetic energy of all vertices (J).
+double kinetic_energy(const SheetModel& model, const SheetState& state);
+
+// The largest strain (L - L0) / L0 of a cell's springs.
+double max_spring_strain(const SheetModel& model, const SheetState& state, int cell);
+
+}  // namespace repose

@@ -1,0 +1,75 @@
+#pragma once
+// What a paper sheet is and how it is held (the seed paper's sections 3.2
+// and 4): its size and grammage, the mesh resolution, the fibre images that
+// set its stiffness and mass, the grips that hold and pull it, a notch cut
+// before pulling, gravity and damping. Validated once; the sheet's fixed
+// description (sheet_model.h) is built from it. The fitted quantities
+// (stiffness, tear strain) are SheetParams (sheet_params.h).
+//
+// The sheet lies in the plane z = 0 with its lower-left corner at the
+// origin, x to the right, y up; the viewer looks from +z. The seed's
+// experiment pulls "the right side towards the viewer and the left away":
+// seed_twist_grips() below.
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "models/tearing/fibre_options.h"
+
+namespace repose {
+
+// A grip holds every vertex whose rest position lies in its rectangle (edges
+// included) and moves it at a constant velocity along the held axes; along
+// the other axes the vertex moves freely (a roller).
+struct GripSpec {
+  double x_min_m = 0.0, x_max_m = 0.0, y_min_m = 0.0, y_max_m = 0.0;
+  Eigen::Vector3d velocity_m_per_s = Eigen::Vector3d::Zero();
+  std::array<bool, 3> held_axes = {true, true, true};  // x, y, z
+};
+
+struct SheetSpec {
+  double width_m = 0.1;
+  double height_m = 0.1;
+  // Mass per area (kg/m^2); 0.08 is 80 g/m^2 office paper.
+  double grammage_kg_per_m2 = 0.08;
+  // Square cells across the width; the cells up the height follow, and
+  // height_m must be a whole number of cells.
+  int cells_x = 50;
+  // Plate bending stiffness D (N m) of the sheet at mean fibre density;
+  // 3e-4 N m is E t^3 / 12 for E = 4 GPa, t = 0.1 mm.
+  double bending_stiffness_n_m = 3.0e-4;
+  // Spring constants scale as (relative fibre density)^exponent
+  // (sheet_model.h); 1 is proportional. In [0, 8].
+  double stiffness_density_exponent = 1.0;
+  // A cell's tear strain is tear_strain x (relative fibre density)^exponent
+  // (sheet_model.h); 0, the default, is the seed's single limit. In [0, 8].
+  double tear_strain_density_exponent = 0.0;
+  // Velocity damping (1/s): each step v /= 1 + damping_per_s * dt (air drag
+  // and internal losses lumped, applied implicitly so it never destabilises).
+  double damping_per_s = 2.0e3;
+  Eigen::Vector3d gravity_m_per_s2{0.0, -9.81, 0.0};
+  // A cut from the top edge straight down at x = notch_x_m, notch_length_m
+  // long (0: none): the cells it crosses start torn.
+  double notch_length_m = 0.0;
+  double notch_x_m = 0.05;
+  std::vector<GripSpec> grips;
+  FibreOptions fibres;
+
+  int cells_y() const;  // height_m / cell size, rounded
+  double cell_size_m() const { return width_m / cells_x; }
+
+  // Throws FieldError (an InputError) naming the field and the rule (including a grip that
+  // holds no vertex and two grips that hold the same vertex).
+  void validate() const;
+};
+
+// The seed's experiment: two grips along the top edge, each `grip_depth_m`
+// deep and reaching to within gap_m / 2 of the middle; the left one moves
+// away from the viewer (-z) and the right one towards it (+z), both at
+// speed_m_per_s, so the sheet tears down from the top between them.
+std::vector<GripSpec> seed_twist_grips(double width_m, double height_m, double grip_depth_m, double gap_m,
+                                       double speed_m_per_s);
+
+}  // namespace repose

@@ -1,0 +1,33 @@
+#pragma once
+// What a run of the sheet changes: vertex positions and velocities, which
+// cells are torn and when, the time, and what the grips feel.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "models/tearing/sheet_model.h"
+
+namespace repose {
+
+struct SheetState {
+  Eigen::Matrix3Xd positions;   // 3 x vertex_count (m)
+  Eigen::Matrix3Xd velocities;  // 3 x vertex_count (m/s)
+  // Per cell: -1 while intact, 0 for the notch cut before the run, n >= 1
+  // when it tore at the start of step n.
+  std::vector<int> torn_step;
+  long steps = 0;
+  double time_s = 0.0;
+  // 3 x grip count: the force each grip exerts on the sheet along its held
+  // axes (N) during the last step, and the work the grips have done (J).
+  Eigen::Matrix3Xd grip_force_n;
+  double grip_work_j = 0.0;
+
+  bool intact(int cell) const { return torn_step[static_cast<std::size_t>(cell)] < 0; }
+  int torn_count() const;
+};
+
+// The sheet at rest in its rest shape, the notch cut.
+SheetState make_sheet_state(const SheetModel& model);
+
+}  // namespace repose

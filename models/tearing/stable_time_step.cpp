@@ -1,0 +1,38 @@
+#include "models/tearing/stable_time_step.h"
+
+#include <cmath>
+
+#include "models/core/base/error.h"
+#include "models/tearing/sheet_forces.h"
+
+namespace repose {
+
+double stable_time_step_s(const SheetModel& model, const SheetParams& params) {
+  params.validate();
+  const SpringConstants k = spring_constants(model, params);
+  const Eigen::VectorXd& m = model.mass_kg;
+  Eigen::VectorXd bound = Eigen::VectorXd::Zero(model.vertex_count());
+  for (int c = 0; c < model.cell_count(); ++c) {
+    for (const CellSpring& s : cell_springs(model, c)) {
+      const double ks = (s.diagonal ? k.diagonal_n_per_m : k.edge_n_per_m) * s.share * model.cell_stiffness[c];
+      const double cross = ks / std::sqrt(m[s.a] * m[s.b]);
+      bound[s.a] += ks / m[s.a] + cross;
+      bound[s.b] += ks / m[s.b] + cross;
+    }
+  }
+  constexpr double kCoefficient[3] = {1.0, -2.0, 1.0};
+  for (const BendingTerm& t : model.bending) {
+    const int v[3] = {t.a, t.b, t.c};
+    const double kb = k.bending_n_per_m * t.weight;
+    for (int p = 0; p < 3; ++p) {
+      for (int q = 0; q < 3; ++q) {
+        bound[v[p]] += kb * std::abs(kCoefficient[p] * kCoefficient[q]) / std::sqrt(m[v[p]] * m[v[q]]);
+      }
+    }
+  }
+  const double omega_max = std::sqrt(bound.maxCoeff());
+  REPOSE_DEMAND(std::isfinite(omega_max));
+  return omega_max > 0.0 ? 2.0 / omega_max : INFINITY;
+}
+
+}  // namespace repose

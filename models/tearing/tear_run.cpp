@@ -1,0 +1,82 @@
+#include "models/tearing/tear_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "models/core/base/error.h"
+#include "models/core/config/fields.h"
+#include "models/tearing/explicit_integrator.h"
+#include "models/tearing/implicit_integrator.h"
+#include "models/tearing/stable_time_step.h"
+
+namespace repose {
+
+void TearRunOptions::validate() const {
+  if (!(std::isfinite(duration_s) && duration_s > 0.0)) {
+    throw FieldError("duration_s", "a duration > 0 s", fmt::format("{}", duration_s));
+  }
+  const double most = integrator == Integrator::kExplicit ? 1.0 : 1000.0;
+  if (!(time_step_fraction > 0.0 && time_step_fraction <= most)) {
+    throw FieldError("time_step_fraction", fmt::format("a number in (0, {}] for this integrator", most),
+                     fmt::format("{}", time_step_fraction));
+  }
+  if (!(std::isfinite(stop_at_depth_m) && stop_at_depth_m >= 0.0)) {
+    throw FieldError("stop_at_depth_m", "a depth >= 0 m", fmt::format("{}", stop_at_depth_m));
+  }
+}
+
+namespace {
+
+template <class Integrator>
+void pull(const SheetModel& model, const TearRunOptions& options, const ProgressFn& progress, Integrator* integrator,
+          TearRun* run) {
+  const long steps = static_cast<long>(std::ceil(options.duration_s / run->time_step_s));
+  const long check_every = std::max(1L, steps / 200);
+  for (long s = 0; s < steps; ++s) {
+    integrator->step(&run->state);
+    for (Eigen::Index g = 0; g < run->state.grip_force_n.cols(); ++g) {
+      run->peak_grip_force_n = std::max(run->peak_grip_force_n, run->state.grip_force_n.col(g).norm());
+    }
+    if (s % check_every != 0) continue;
+    report(progress, static_cast<double>(s) / static_cast<double>(steps), "tearing");
+    if (options.stop_at_depth_m > 0.0 && measure_tear_path(model, run->state).depth_m >= options.stop_at_depth_m) {
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearRunOptions& options,
+                 const ProgressFn& progress) {
+  options.validate();
+  params.validate();
+  const auto start = std::chrono::steady_clock::now();
+  TearRun run;
+  run.stable_time_step_s = stable_time_step_s(model, params);
+  run.time_step_s = options.time_step_fraction * run.stable_time_step_s;
+  run.state = make_sheet_state(model);
+  if (options.integrator == TearRunOptions::Integrator::kExplicit) {
+    ExplicitIntegrator integrator(model, params, run.time_step_s);
+    pull(model, options, progress, &integrator, &run);
+  } else {
+    ImplicitIntegrator integrator(model, params, run.time_step_s);
+    pull(model, options, progress, &integrator, &run);
+  }
+  REPOSE_DEMAND(run.state.positions.allFinite());
+  run.steps = run.state.steps;
+  run.path = measure_tear_path(model, run.state);
+  run.grip_work_j = run.state.grip_work_j;
+  // the notch is not torn by the pull: take it off when the tear holds it
+  const bool from_notch = !model.notch_cells.empty() && run.path.holds_notch;
+  const double notch_depth_m = from_notch ? static_cast<double>(model.notch_cells.size()) * model.cell_size_m : 0.0;
+  run.tear_length_m = std::max(0.0, run.path.depth_m - notch_depth_m);
+  if (run.tear_length_m > 0.0) run.work_per_tear_length_j_per_m = run.grip_work_j / run.tear_length_m;
+  run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+}  // namespace repose

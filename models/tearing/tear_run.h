@@ -1,0 +1,48 @@
+#pragma once
+// A tear run: the sheet pulled by its grips with either integrator for a
+// given time, what the grips felt, and the tear it made.
+
+#include "models/core/base/progress.h"
+#include "models/tearing/sheet_model.h"
+#include "models/tearing/sheet_params.h"
+#include "models/tearing/sheet_state.h"
+#include "models/tearing/tear_path.h"
+
+namespace repose {
+
+struct TearRunOptions {
+  enum class Integrator { kExplicit, kImplicit };
+  Integrator integrator = Integrator::kExplicit;
+  double duration_s = 0.02;
+  // The step as a fraction of the explicit stable limit: in (0, 1] for the
+  // explicit integrator, (0, 1000] for the implicit one.
+  double time_step_fraction = 0.9;
+  // Stop early once the tear has reached this depth below the top edge (m);
+  // 0: run the whole duration.
+  double stop_at_depth_m = 0.0;
+
+  void validate() const;  // throws FieldError (an InputError) naming the field
+};
+
+struct TearRun {
+  SheetState state;
+  TearPath path;
+  double time_step_s = 0.0;
+  double stable_time_step_s = 0.0;  // of the explicit integrator
+  long steps = 0;
+  // Largest force (N) any grip exerted along its held axes over the run.
+  double peak_grip_force_n = 0.0;
+  double grip_work_j = 0.0;
+  // How far the tear ran below the notch (m): path.depth_m minus the notch.
+  double tear_length_m = 0.0;
+  // grip_work_j / tear_length_m (J/m), elastic energy still stored included;
+  // 0 when the sheet did not tear.
+  double work_per_tear_length_j_per_m = 0.0;
+  double wall_seconds = 0.0;
+};
+
+// progress, when given, hears the fraction of the duration done.
+TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearRunOptions& options,
+                 const ProgressFn& progress = {});
+
+}  // namespace repose

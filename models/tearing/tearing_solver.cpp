@@ -1,0 +1,147 @@
+#include "models/tearing/tearing_solver.h"
+
+#include <filesystem>
+#include <random>
+
+#include <fmt/format.h>
+
+#include "models/core/base/cpu_time.h"
+#include "models/core/base/error.h"
+#include "models/core/config/scene.h"
+#include "models/tearing/fibre_image.h"
+#include "models/tearing/sheet_model.h"
+#include "models/tearing/tear_edge_layers.h"
+#include "models/tearing/tear_image.h"
+#include "models/tearing/tear_path.h"
+#include "models/tearing/tear_run.h"
+#include "models/tearing/tearing_section.h"
+
+namespace repose {
+
+namespace {
+
+// One scalar per cell (or vertex) as a HeightField on a grid of that pitch.
+HeightField grid_field(int nx, int ny, double pitch_m, double origin_m, const std::vector<double>& values) {
+  Grid grid;
+  grid.nx = nx;
+  grid.ny = ny;
+  grid.cell_size_m = pitch_m;
+  grid.origin_x_m = grid.origin_y_m = origin_m;
+  HeightField field(grid);
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) field.at(i, j) = values[static_cast<std::size_t>(j) * nx + i];
+  }
+  return field;
+}
+
+class CompiledTearing final : public CompiledSolver {
+ public:
+  explicit CompiledTearing(const Scene& scene) : section_(*scene.section<TearingSection>()), run_options_(section_.run) {
+    run_options_.duration_s = scene.time.duration_s;  // the scene's time, however it was changed
+    run_options_.validate();
+    std::mt19937_64 rng(scene.seed);
+    const SheetSpec& spec = section_.sheet;
+    images_ = draw_fibre_images(spec.fibres, spec.width_m, spec.height_m, rng);
+    model_ = build_sheet_model(spec, images_);
+    const SheetParams& p = section_.params;
+    parameters_ = {
+        {"stiffness_scale", "N/m", 1.0, 1.0, 1.0e9, p.stiffness_n_per_m,
+         "in-plane stiffness E t of the sheet at mean fibre density"},
+        {"tear_strain", "1", 1.0, 1.0e-6, 10.0, p.tear_strain, "a cell tears when a spring stretches past this strain"}};
+  }
+
+  const std::vector<ParameterInfo>& parameters() const override { return parameters_; }
+
+  Run run(const std::vector<double>& values_si, const RunOptions& options) const override {
+    check_values(parameters_, values_si, "tearing");
+    const Stopwatch clock;
+    SheetParams params;
+    params.stiffness_n_per_m = values_si[0];
+    params.tear_strain = values_si[1];
+    params.validate();
+    const TearRunOptions& tear = run_options_;
+    const TearRun pulled = run_tear(model_, params, tear, options.progress);
+    Run run;
+    run.solver = "tearing";
+    run.stages = {tear.integrator == TearRunOptions::Integrator::kExplicit ? "explicit" : "implicit", "tearing"};
+    add_measures(pulled, &run);
+    add_fields(pulled.state, &run);
+    run.wall_s = clock.wall_s();
+    run.cpu_s = clock.cpu_s();
+    if (!options.output_dir.empty()) write_files(pulled.state, options.output_dir, &run);
+    return run;
+  }
+
+ private:
+  static void add_measures(const TearRun& t, Run* run) {
+    run->set("tear.length_m", t.tear_length_m, "m");
+    run->set("tear.depth_m", t.path.depth_m, "m");
+    run->set("tear.tortuosity", t.path.tortuosity, "1");
+    run->set("tear.roughness_m", t.path.roughness_m, "m");
+    run->set("tear.deviation_m", t.path.deviation_m, "m");
+    run->set("tear.cells", t.path.tear_cells, "count");
+    run->set("tear.stray_cells", t.path.stray_cells, "count");
+    run->set("tear.from_notch", t.path.holds_notch ? 1.0 : 0.0, "1");
+    run->set("tear.work_per_length_j_per_m", t.work_per_tear_length_j_per_m, "J/m");
+    run->set("grip.peak_force_n", t.peak_grip_force_n, "N");
+    run->set("grip.work_j", t.grip_work_j, "J");
+    run->set("steps", static_cast<double>(t.steps), "count");
+    run->set("time_step_s", t.time_step_s, "s");
+    run->set("stable_time_step_s", t.stable_time_step_s, "s");
+  }
+
+  void add_fields(const SheetState& state, Run* run) const {
+    const double h = model_.cell_size_m;
+    std::vector<double> torn(static_cast<std::size_t>(model_.cell_count()));
+    for (int c = 0; c < model_.cell_count(); ++c) {
+      const int step = state.torn_step[static_cast<std::size_t>(c)];
+      torn[static_cast<std::size_t>(c)] = step < 0 ? -1.0 : step * (state.steps > 0 ? state.time_s / state.steps : 0.0);
+    }
+    run->fields["torn_time_s"] = grid_field(model_.cells_x, model_.cells_y, h, 0.0, torn);
+    std::vector<double> z(static_cast<std::size_t>(model_.vertex_count()));
+    for (int v = 0; v < model_.vertex_count(); ++v) z[static_cast<std::size_t>(v)] = state.positions(2, v);
+    run->fields["displacement_z_m"] = grid_field(model_.cells_x + 1, model_.cells_y + 1, h, -0.5 * h, z);
+    Grid pixels;
+    pixels.nx = images_.nx();
+    pixels.ny = images_.ny();
+    pixels.cell_size_m = images_.pixel_size_m;
+    run->fields["fibre_composite"] = HeightField(pixels, images_.composite);
+  }
+
+  void write_files(const SheetState& state, const std::string& dir, Run* run) const {
+    for (const std::string& path : write_fibre_pngs(images_, dir + "/fibres_")) {
+      run->files.push_back(std::filesystem::path(path).filename().string());
+    }
+    write_png_rgb(dir + "/tear_map.png", draw_tear_image(model_, state, images_, 8));
+    const TearEdgeOptions edge;
+    write_png_rgb(dir + "/tear_edge.png",
+                  draw_layered_tear_edge(images_, trace_layer_cuts(model_, state, images_, edge), edge));
+    run->files.push_back("tear_map.png");
+    run->files.push_back("tear_edge.png");
+  }
+
+  TearingSection section_;
+  TearRunOptions run_options_;
+  FibreImages images_;
+  SheetModel model_;
+  std::vector<ParameterInfo> parameters_;
+};
+
+}  // namespace
+
+std::vector<SectionType> TearingSolver::sections() const { return {tearing_section_type()}; }
+
+bool TearingSolver::can_run(const Scene& scene, std::string* why) const {
+  if (scene.has_section(TearingSection::kKey)) return true;
+  if (why != nullptr) *why = "the scene has no tearing: section";
+  return false;
+}
+
+std::unique_ptr<CompiledSolver> TearingSolver::compile(const Scene& scene) const {
+  if (!scene.has_section(TearingSection::kKey)) {
+    throw InputError(fmt::format("{}: the tearing solver needs a tearing: section", scene.source_path));
+  }
+  return std::make_unique<CompiledTearing>(scene);
+}
+
+}  // namespace repose

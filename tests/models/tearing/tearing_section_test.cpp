@@ -1,0 +1,80 @@
+// The `tearing:` section: read with defaults, errors at the key, twist or
+// grips, written back to an equal section.
+#include "models/tearing/tearing_section.h"
+
+#include <gtest/gtest.h>
+
+#include "experiments/solvers/solver_registry.h"
+#include "models/core/base/error.h"
+#include "models/core/config/scene_loader.h"
+
+namespace repose {
+namespace {
+
+std::string scene_text(const std::string& tearing) {
+  return "name: t\nseed: 3\ntime: {step_s: 0.001, duration_s: 0.001}\n"
+         "ground: {extent_m: [0.1, 0.1], resolution: [2, 2], initial_height: {kind: flat, height_m: 0}, material: sand}\n"
+         "tearing:\n" + tearing;
+}
+
+Scene load(const std::string& tearing) {
+  return load_scene_from_string(scene_text(tearing), "/tmp/tearing_section_test.yaml", solver_registry().sections());
+}
+
+std::string error_of(const std::string& tearing) {
+  try {
+    load(tearing);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(TearingSection, ReadsTheSheetFibresTwistAndParameters) {
+  const Scene scene = load(
+      "  cells_x: 20\n  tear_strain: 0.03\n  integrator: implicit\n  time_step_fraction: 5\n"
+      "  fibres: {layers: 4, grain_direction_deg: 90}\n  twist: {grip_depth_m: 0.01, gap_m: 0.02, speed_m_per_s: 2}\n");
+  const TearingSection* s = scene.section<TearingSection>();
+  ASSERT_NE(s, nullptr);
+  EXPECT_EQ(s->sheet.cells_x, 20);
+  EXPECT_DOUBLE_EQ(s->params.tear_strain, 0.03);
+  EXPECT_DOUBLE_EQ(s->params.stiffness_n_per_m, SheetParams{}.stiffness_n_per_m);  // the default
+  EXPECT_EQ(s->run.integrator, TearRunOptions::Integrator::kImplicit);
+  EXPECT_EQ(s->sheet.fibres.layers, 4);
+  EXPECT_NEAR(s->sheet.fibres.grain_direction_rad, std::numbers::pi / 2, 1e-15);
+  ASSERT_EQ(s->sheet.grips.size(), 2u);
+  EXPECT_DOUBLE_EQ(s->sheet.grips[0].x_max_m, 0.04);
+  EXPECT_DOUBLE_EQ(s->sheet.grips[1].velocity_m_per_s.z(), 2.0);
+}
+
+TEST(TearingSection, WritesWhatReadsBackToTheSameSection) {
+  const Scene scene = load("  cells_x: 10\n  notch_length_m: 0.01\n  fibres: {grain_spread_deg: 30}\n"
+                           "  grips: [{x_min_m: 0, x_max_m: 0.02, y_min_m: 0.09, y_max_m: 0.1, velocity_m_per_s: [0, 0, 1],"
+                           " hold_z: true, hold_x: false}]\n");
+  const Scene again = load_scene_from_string(scene_to_yaml(scene), "/tmp/again.yaml", solver_registry().sections());
+  const TearingSection& a = *scene.section<TearingSection>();
+  const TearingSection& b = *again.section<TearingSection>();
+  EXPECT_EQ(a.sheet.cells_x, b.sheet.cells_x);
+  EXPECT_EQ(a.sheet.notch_length_m, b.sheet.notch_length_m);
+  EXPECT_EQ(a.sheet.fibres.grain_spread_rad, b.sheet.fibres.grain_spread_rad);
+  ASSERT_EQ(b.sheet.grips.size(), 1u);
+  EXPECT_EQ(a.sheet.grips[0].held_axes, b.sheet.grips[0].held_axes);
+  EXPECT_FALSE(b.sheet.grips[0].held_axes[0]);
+  EXPECT_EQ(a.sheet.grips[0].velocity_m_per_s, b.sheet.grips[0].velocity_m_per_s);
+}
+
+TEST(TearingSection, ErrorsNameTheKey) {
+  EXPECT_NE(error_of("  cells_x: 0\n").find("cells_x"), std::string::npos);
+  EXPECT_NE(error_of("  height_m: 0.0512\n").find("height_m"), std::string::npos);
+  EXPECT_NE(error_of("  fibres: {layers: 0}\n").find("layers"), std::string::npos);
+  EXPECT_NE(error_of("  fibres: {clump_length_min_m: 0.0001}\n").find("clump_length_min_m"), std::string::npos);
+  EXPECT_NE(error_of("  tear_strain: -1\n").find("tear_strain"), std::string::npos);
+  EXPECT_NE(error_of("  time_step_fraction: 2\n").find("time_step_fraction"), std::string::npos);
+  EXPECT_NE(error_of("  colour: red\n").find("colour"), std::string::npos);
+  EXPECT_NE(error_of("  twist: {}\n  grips: []\n").find("grips"), std::string::npos);
+  EXPECT_NE(error_of("  grips: [{x_min_m: 0.5, x_max_m: 0.6, y_min_m: 0, y_max_m: 0.1}]\n").find("grips[0]"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace repose

@@ -1,0 +1,78 @@
+// `--solver tearing` through the registry: parameters, a run's measures and
+// fields, determinism, the files it writes, values outside their interval.
+#include "models/tearing/tearing_solver.h"
+
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "experiments/solvers/solver_registry.h"
+#include "models/core/base/error.h"
+#include "models/core/config/scene_loader.h"
+
+namespace repose {
+namespace {
+
+// A 3 cm sheet, 15 cells, twisted for 2 ms.
+Scene small_scene() {
+  return load_scene_from_string(
+      "name: t\nseed: 5\ntime: {step_s: 0.001, duration_s: 0.002}\n"
+      "ground: {extent_m: [0.1, 0.1], resolution: [2, 2], initial_height: {kind: flat, height_m: 0}, material: sand}\n"
+      "tearing:\n  width_m: 0.03\n  height_m: 0.03\n  cells_x: 15\n  notch_length_m: 0.004\n  notch_x_m: 0.015\n"
+      "  twist: {grip_depth_m: 0.006, gap_m: 0.004, speed_m_per_s: 4}\n",
+      "/tmp/tearing_solver_test.yaml", solver_registry().sections());
+}
+
+TEST(TearingSolver, DeclaresItsParametersAndRunsDeterministically) {
+  const auto compiled = solver_registry().get("tearing").compile(small_scene());
+  ASSERT_EQ(compiled->parameters().size(), 2u);
+  EXPECT_EQ(compiled->parameters()[0].name, "stiffness_scale");
+  EXPECT_EQ(compiled->parameters()[1].name, "tear_strain");
+  const repose::Run a = compiled->run(compiled->default_values(), {});
+  const repose::Run b = compiled->run(compiled->default_values(), {});
+  EXPECT_GT(a.measure("tear.length_m").value, 0.0);
+  EXPECT_GE(a.measure("tear.tortuosity").value, 1.0);
+  EXPECT_GT(a.measure("grip.peak_force_n").value, 0.0);
+  EXPECT_EQ(a.measure("grip.peak_force_n").unit, "N");
+  EXPECT_EQ(a.measures, b.measures);
+  EXPECT_TRUE((a.field("displacement_z_m").heights() == b.field("displacement_z_m").heights()).all());
+  EXPECT_EQ(a.field("torn_time_s").nx(), 15);
+  EXPECT_EQ(a.field("displacement_z_m").nx(), 16);
+  EXPECT_EQ(a.field("fibre_composite").nx(), 120);
+}
+
+TEST(TearingSolver, AStifferSheetTearsUnderMoreForce) {
+  const auto compiled = solver_registry().get("tearing").compile(small_scene());
+  std::vector<double> values = compiled->default_values();
+  const double soft = compiled->run(values, {}).measure("grip.peak_force_n").value;
+  values[0] *= 2.0;
+  const double stiff = compiled->run(values, {}).measure("grip.peak_force_n").value;
+  EXPECT_GT(stiff, 1.2 * soft);
+}
+
+TEST(TearingSolver, WritesItsPicturesWhenGivenAFolder) {
+  const auto compiled = solver_registry().get("tearing").compile(small_scene());
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "repose_tearing_solver_test";
+  std::filesystem::create_directories(dir);
+  RunOptions options;
+  options.output_dir = dir.string();
+  const repose::Run run = compiled->run(compiled->default_values(), options);
+  for (const std::string& file : run.files) EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
+  EXPECT_NE(std::find(run.files.begin(), run.files.end(), "tear_edge.png"), run.files.end());
+  std::filesystem::remove_all(dir);
+}
+
+TEST(TearingSolver, RefusesValuesOutsideTheirIntervalAndScenesWithoutTheSection) {
+  const auto compiled = solver_registry().get("tearing").compile(small_scene());
+  std::vector<double> values = compiled->default_values();
+  values[1] = 20.0;
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+  Scene plain = small_scene();
+  plain.sections.erase("tearing");
+  std::string why;
+  EXPECT_FALSE(solver_registry().get("tearing").can_run(plain, &why));
+  EXPECT_NE(why.find("tearing"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace repose
