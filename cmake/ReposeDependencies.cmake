@@ -13,6 +13,9 @@ find_package(Ceres REQUIRED)
 find_package(CGAL REQUIRED)
 # CMake's own FindBullet: Debian's BulletConfig.cmake is broken (relative paths).
 find_package(Bullet REQUIRED MODULE)
+# Bullet in double precision (-DBT_USE_DOUBLE_PRECISION and the -float64 libraries):
+# the rigid-body reference (validation/bullet) uses it; never mix the two builds in one target.
+pkg_check_modules(BULLET_FLOAT64 REQUIRED IMPORTED_TARGET bullet-float64)
 pkg_check_modules(ODE REQUIRED IMPORTED_TARGET ode)
 # OSMesa alone: linking libGL before it makes glGetString return NULL.
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)

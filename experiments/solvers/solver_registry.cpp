@@ -5,7 +5,9 @@
 #include "models/tearing/tearing_solver.h"
 #include "models/snow/snow_solver.h"
 #include "models/terrain/terrain_solver.h"
+#include "validation/bullet/bullet_solver.h"
 #include "validation/liggghts/liggghts_solver.h"
+#include "validation/ode/ode_solver.h"
 
 namespace repose {
 
@@ -15,6 +17,8 @@ SolverRegistry make_registry() {
   SolverRegistry registry;
   registry.add(std::make_shared<GroundSolver>());
   registry.add(std::make_shared<LiggghtsSolver>());
+  registry.add(std::make_shared<BulletSolver>());
+  registry.add(std::make_shared<OdeSolver>());
   registry.add(std::make_shared<TearingSolver>());
   registry.add(std::make_shared<SnowSolver>());
   registry.add(std::make_shared<TerrainSolver>());

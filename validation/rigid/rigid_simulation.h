@@ -1,0 +1,52 @@
+#pragma once
+// The two phases of a rigid-body reference run, written once for every
+// engine (rigid_world.h): settling a bed until its kinetic energy falls
+// below a threshold, and moving the objects along their keyframes for the
+// scene's duration. Both count steps and measure wall and CPU time.
+
+#include <string>
+#include <vector>
+
+#include "models/core/config/scene.h"
+#include "validation/particles/grain_set.h"
+#include "validation/rigid/rigid_world.h"
+
+namespace repose {
+
+struct RigidPhaseSummary {
+  long steps = 0;
+  double simulated_s = 0.0;
+  double kinetic_energy_j = 0.0;  // at the end
+  bool settled = false;           // settling: the threshold was reached
+  double wall_time_s = 0.0;
+  double cpu_time_s = 0.0;        // of this process
+};
+
+// Steps until the kinetic energy, checked every check_interval_s, is below
+// threshold_j, or max_time_s has passed (settled = false then).
+RigidPhaseSummary settle(RigidWorld& world, double threshold_j, double check_interval_s, double max_time_s);
+
+struct RigidFrame {
+  double time_s = 0.0;
+  GrainSet grains;
+};
+
+// Steps ceil(duration_s / time step) times; before each step the objects
+// are placed at ObjectSpec::pose_at(end of that step). With frames, the
+// grains are recorded every frame_interval_s (to the nearest step) and at the end.
+RigidPhaseSummary run_motion(RigidWorld& world, const std::vector<ObjectSpec>& objects, double duration_s,
+                             double frame_interval_s = 0.0, std::vector<RigidFrame>* frames = nullptr);
+
+// The grains that left the ground box (centre beyond a side wall or below
+// the floor by more than its radius) or are not finite; empty when none.
+std::vector<long> lost_grains(const GrainSet& grains, const RigidBounds& bounds);
+
+// Throws std::runtime_error "ENGINE: PHASE lost N of M grains (first: grain G at (x, y, z))"
+// when any grain is lost: material is never lost silently.
+void demand_no_grain_lost(const GrainSet& grains, const RigidBounds& bounds, const std::string& engine,
+                          const std::string& phase);
+
+// CPU time of this process (s).
+double process_cpu_time_s();
+
+}  // namespace repose

@@ -1,0 +1,99 @@
+#include "validation/rigid/rigid_solver.h"
+
+#include <filesystem>
+#include <numbers>
+
+#include "validation/rigid/grain_file.h"
+#include "validation/rigid/rigid_reference.h"
+#include "validation/rigid/rigid_setup.h"
+
+namespace repose {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<ParameterInfo> contact_parameters(const DemSpec& dem) {
+  return {
+      {"friction", "1", 1.0, 0.0, 2.0, dem.friction, "sliding friction coefficient, every pair"},
+      {"restitution", "1", 1.0, 0.01, 1.0, dem.restitution, "coefficient of restitution, every pair"},
+      {"rolling_friction", "1", 1.0, 0.0, 1.0, dem.rolling_friction,
+       "rolling resistance mu_r: torque mu_r r_eff N (the floor keeps its own on a rough floor)"},
+  };
+}
+
+void set_measures(const RigidReferenceResult& r, const RigidEngine& engine, Run& run) {
+  run.set("grain_count", static_cast<double>(r.grain_count), "count");
+  run.set("steps", static_cast<double>(r.run.steps), "count");
+  run.set("particle_steps_per_cpu_s", r.particle_steps_per_cpu_s, "1/s");
+  run.set("run_wall_s", r.run.wall_time_s, "s");
+  run.set("run_cpu_s", r.run.cpu_time_s, "s");
+  run.set("bed_steps", static_cast<double>(r.bed.settle.steps), "count");
+  run.set("bed_wall_s", r.bed.settle.wall_time_s, "s");
+  run.set("bed_cpu_s", r.bed.settle.cpu_time_s, "s");
+  run.set("bed_kinetic_energy_j", r.bed.settle.kinetic_energy_j, "J");
+  run.set("time_step_s", engine.rigid.time_step_s, "s");
+  run.set("solver_iterations", engine.rigid.solver_iterations, "count");
+  for (const auto& [name, kg] : r.mass_held_kg) run.set("mass_held_kg." + name, kg, "kg");
+  if (r.column) {
+    run.set("column.height_initial_m", r.column->height_initial_m, "m");
+    run.set("column.aspect_ratio", r.column->aspect_ratio, "1");
+    run.set("column.front_initial_m", r.column->front_initial_m, "m");
+    run.set("column.front_final_m", r.column->front_final_m, "m");
+    run.set("column.height_final_m", r.column->height_final_m, "m");
+    run.set("column.runout_normalised", r.column->runout_normalised, "1");
+  }
+  if (r.pile) {
+    run.set("pile.flank_angle_mean_deg", r.pile->mean_rad * 180.0 / std::numbers::pi, "deg");
+    run.set("pile.flank_angle_std_deg", r.pile->std_rad * 180.0 / std::numbers::pi, "deg");
+  }
+  run.details["engine_version"] = r.engine_version;
+  run.details["bed_cache_key"] = r.bed.key;
+}
+
+class CompiledRigid final : public CompiledSolver {
+ public:
+  CompiledRigid(RigidInputs in, RigidEngine engine)
+      : in_(std::move(in)), engine_(std::move(engine)), parameters_(contact_parameters(in_.dem)) {}
+  const std::vector<ParameterInfo>& parameters() const override { return parameters_; }
+
+  Run run(const std::vector<double>& values_si, const RunOptions& options) const override {
+    check_values(parameters_, values_si, engine_.name);
+    RigidInputs in = in_;
+    in.dem.friction = values_si[0];
+    in.dem.restitution = values_si[1];
+    in.dem.rolling_friction = values_si[2];
+    const RigidReferenceResult r = run_rigid_reference(engine_, in);
+    Run run;
+    run.solver = engine_.name;
+    run.wall_s = r.run.wall_time_s;
+    run.cpu_s = r.run.cpu_time_s;
+    run.fields["height_initial"] = r.height_initial;
+    run.fields["height_final"] = r.height_final;
+    run.fields["material_per_area_final"] = r.material_per_area_final;
+    run.stages = {r.bed.from_cache ? "bed:cached" : "bed:settled", engine_.name + "-run"};
+    set_measures(r, engine_, run);
+    if (!options.output_dir.empty()) {
+      write_rigid_reference(r, options.output_dir);
+      run.files = {"height_initial.npy", "height_final.npy", "material_per_area_final.npy", "grains_initial.npy",
+                   "grains_final.npy", engine_.name + "_manifest.json"};
+      if (r.column) run.files.push_back("runout.csv");
+      if (r.pile) run.files.push_back("pile_flank_angles.csv");
+    }
+    return run;
+  }
+
+ private:
+  RigidInputs in_;
+  RigidEngine engine_;
+  std::vector<ParameterInfo> parameters_;
+};
+
+}  // namespace
+
+std::unique_ptr<CompiledSolver> compile_rigid(const Scene& scene, RigidEngine engine) {
+  RigidInputs in = rigid_inputs(scene, engine.name);
+  return std::make_unique<CompiledRigid>(std::move(in), std::move(engine));
+}
+
+}  // namespace repose
