@@ -15,6 +15,7 @@ class BulletSolver final : public Solver {
   // Needs the dem section only (the bullet: section is optional).
   bool can_run(const Scene& scene, std::string* why) const override;
   std::unique_ptr<CompiledSolver> compile(const Scene& scene) const override;
+  bool thread_safe() const override { return false; }  // Bullet's contact thresholds and margins are process-wide
 };
 
 }  // namespace repose

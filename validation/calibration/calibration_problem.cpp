@@ -253,7 +253,8 @@ std::vector<std::vector<double>> CalibrationProblem::fit_residuals(const std::ve
   std::vector<std::vector<std::vector<double>>> parts(free_points.size(), std::vector<std::vector<double>>(fit.size()));
   std::vector<std::vector<double>> values;
   for (const auto& point : free_points) values.push_back(with_free(point));
-  parallel_for(free_points.size() * fit.size(), spec_.solver.threads, [&](std::size_t task) {
+  const int threads = solver_->thread_safe() ? spec_.solver.threads : 1;
+  parallel_for(free_points.size() * fit.size(), threads, [&](std::size_t task) {
     const std::size_t point = task / fit.size(), scene = task % fit.size();
     parts[point][scene] = residuals(*fit[scene], run(*fit[scene], values[point]));
   });

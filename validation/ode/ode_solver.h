@@ -15,6 +15,7 @@ class OdeSolver final : public Solver {
   // Needs the dem section only (the ode: section is optional).
   bool can_run(const Scene& scene, std::string* why) const override;
   std::unique_ptr<CompiledSolver> compile(const Scene& scene) const override;
+  bool thread_safe() const override { return false; }  // ODE's random seed is process-wide
 };
 
 }  // namespace repose

@@ -77,6 +77,10 @@ class Solver {
   // is missing or inconsistent; `repose check` calls it for every solver
   // that can run the scene, so that run refuses nothing check accepted.
   virtual std::unique_ptr<CompiledSolver> compile(const Scene& scene) const = 0;
+  // Whether CompiledSolver::run may be called from several threads at once.
+  // An engine that keeps process-wide state (Bullet's margins, ODE's random
+  // seed) says no, and calibration then runs it on one thread.
+  virtual bool thread_safe() const { return true; }
 };
 
 }  // namespace repose
