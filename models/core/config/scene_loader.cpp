@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/base/memory_budget.h"
 #include "models/core/io/input_file.h"
 #include "models/core/io/mesh_io.h"
 #include "models/core/io/npy_io.h"
@@ -336,6 +337,25 @@ CameraSpec read_camera(const YamlValue& value) {
   return c;
 }
 
+// What a run of the scene will hold, estimated before anything is allocated
+// for it: the ground as about eight grids of doubles (heights, scratch
+// copies, depth images, erosion memory), each body about three times (its
+// mesh, the world copy, the swept copy), the camera's render at supersample 2.
+void require_scene_memory(const Scene& s) {
+  namespace est = memory_estimate;
+  const Grid& g = s.ground.grid;
+  std::uint64_t triangles = 0;
+  for (const ObjectSpec& o : s.objects) triangles = est::sum(triangles, static_cast<std::uint64_t>(o.body.F.rows()));
+  std::uint64_t bytes = est::sum(est::grid_bytes(static_cast<std::uint64_t>(g.nx), static_cast<std::uint64_t>(g.ny), 8),
+                                 est::product(3, est::triangle_mesh_bytes(triangles)));
+  if (s.camera) {
+    bytes = est::sum(bytes, est::image_bytes(2 * static_cast<std::uint64_t>(s.camera->width_px),
+                                             2 * static_cast<std::uint64_t>(s.camera->height_px), 16));
+  }
+  require_memory(bytes, fmt::format("{}: the scene ({} x {} cells, {} objects of {} triangles)", s.source_path, g.nx,
+                                    g.ny, s.objects.size(), triangles));
+}
+
 const std::vector<std::string> kCommonKeys = {"name", "seed", "time", "ground", "objects", "camera"};
 
 // Object names key per-object results: they must be unique.
@@ -375,10 +395,14 @@ Scene read_scene(const Context& ctx, const YamlValue& root, const SectionTypes& 
   s.ground = read_ground(ctx, map.required("ground", "a map with extent_m, cell_size_m or resolution, initial_height"));
   if (auto objects = map.get("objects")) {
     const auto items = objects->list();
-    for (std::size_t k = 0; k < items.size(); ++k) s.objects.push_back(read_object(ctx, items[k], k));
+    for (std::size_t k = 0; k < items.size(); ++k) {
+      s.objects.push_back(read_object(ctx, items[k], k));
+      require_scene_memory(s);  // as the bodies are made, not after: 50,000 spheres would not fit
+    }
     check_unique_names(s.objects, *objects);
   }
   if (auto c = map.get("camera")) s.camera = read_camera(*c);
+  require_scene_memory(s);
   read_sections(map, sections, s);
   return s;
 }
