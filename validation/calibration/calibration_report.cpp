@@ -9,6 +9,7 @@
 
 #include "models/core/base/error.h"
 #include "models/core/io/npy_io.h"
+#include "models/core/run/repository_path.h"
 #include "validation/observables/calibration_observables.h"
 
 namespace repose {
@@ -51,7 +52,7 @@ std::string calibrated_parameters_yaml(const CalibrationOutputs& o) {
   const CalibrationProblem& problem = o.problem;
   std::string text = fmt::format("# The parameters of solver {} calibrated by repose calibrate, in their units.\n",
                                  problem.spec().fitted_solver);
-  text += fmt::format("# calibration: {} ({})\n# fit scenes:", problem.spec().name, problem.spec().source_path);
+  text += fmt::format("# calibration: {} ({})\n# fit scenes:", problem.spec().name, repository_relative(problem.spec().source_path));
   for (const PreparedScene& s : problem.scenes()) {
     if (s.fit()) text += " " + s.entry.name;
   }
@@ -122,7 +123,7 @@ void write_calibration_report(const CalibrationOutputs& o, const std::vector<std
   std::ofstream out;
   open_file(out, path);
   out << fmt::format("# Calibration: {}\n\n", problem.spec().name);
-  out << fmt::format("From `{}`; command `{}`; git commit {}.\n\n", problem.spec().source_path, o.command_line, o.git_commit);
+  out << fmt::format("From `{}`; command `{}`; git commit {}.\n\n", repository_relative(problem.spec().source_path), o.command_line, o.git_commit);
   out << "## Parameters\n\n| parameter | initial | fitted | standard error | status | bounds |\n|---|---|---|---|---|---|\n";
   for (std::size_t p = 0; p < problem.spec().parameters.size(); ++p) {
     const ParameterSpec& spec = problem.spec().parameters[p];
