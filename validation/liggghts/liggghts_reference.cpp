@@ -92,7 +92,6 @@ void write_manifest(const fs::path& path, const LiggghtsReferenceResult& r, cons
 }  // namespace
 
 nlohmann::json liggghts_results_json(const LiggghtsReferenceResult& r) {
-  constexpr double deg = 180.0 / std::numbers::pi;
   nlohmann::json json;
   json["liggghts_version"] = r.run.version;
   json["script_sha256"] = r.script_sha256;
@@ -107,24 +106,7 @@ nlohmann::json liggghts_results_json(const LiggghtsReferenceResult& r) {
   json["bed_cpu_s"] = r.bed.cpu_time_s;
   json["particle_steps_per_cpu_s"] =
       r.run.cpu_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.cpu_time_s : 0.0;
-  if (r.column) {
-    const ColumnCollapse& c = *r.column;
-    json["column"] = {{"shape", c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder"},
-                      {"width_m", c.geometry.width_m},
-                      {"slot_gap_m", c.geometry.gap_m},
-                      {"height_initial_m", c.height_initial_m},
-                      {"aspect_ratio", c.aspect_ratio},
-                      {"front_initial_m", c.front_initial_m},
-                      {"front_final_m", c.front_final_m},
-                      {"front_final_spread_m", c.front_final_spread_m},
-                      {"height_final_m", c.height_final_m},
-                      {"runout_normalised", c.runout_normalised}};
-  }
-  if (r.pile) {
-    json["pile"] = {{"flank_angle_mean_deg", r.pile->mean_rad * deg},
-                    {"flank_angle_std_deg", r.pile->std_rad * deg},
-                    {"azimuth_count", static_cast<long>(r.pile->angle_rad.size())}};
-  }
+  json.update(column_results_json(r.column, r.pile));
   for (const auto& [name, kg] : r.mass_held_kg) json["mass_held_kg"][name] = kg;
   return json;
 }

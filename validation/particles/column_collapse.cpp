@@ -1,5 +1,7 @@
 #include "validation/particles/column_collapse.h"
 
+#include <numbers>
+
 #include <fstream>
 
 #include <fmt/format.h>
@@ -51,6 +53,30 @@ void write_runout_csv(const std::string& path, const ColumnCollapse& collapse) {
     out << fmt::format("{},{}\n", collapse.time_s[k], collapse.front_m[k]);
   }
   if (!out) throw InputError(fmt::format("{}: write failed", path));
+}
+
+nlohmann::json column_results_json(const std::optional<ColumnCollapse>& column, const std::optional<FlankAngles>& pile) {
+  constexpr double deg = 180.0 / std::numbers::pi;
+  nlohmann::json json = nlohmann::json::object();
+  if (column) {
+    const ColumnCollapse& c = *column;
+    json["column"] = {{"shape", c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder"},
+                      {"width_m", c.geometry.width_m},
+                      {"slot_gap_m", c.geometry.gap_m},
+                      {"height_initial_m", c.height_initial_m},
+                      {"aspect_ratio", c.aspect_ratio},
+                      {"front_initial_m", c.front_initial_m},
+                      {"front_final_m", c.front_final_m},
+                      {"front_final_spread_m", c.front_final_spread_m},
+                      {"height_final_m", c.height_final_m},
+                      {"runout_normalised", c.runout_normalised}};
+  }
+  if (pile) {
+    json["pile"] = {{"flank_angle_mean_deg", pile->mean_rad * deg},
+                    {"flank_angle_std_deg", pile->std_rad * deg},
+                    {"azimuth_count", pile->angle_rad.size()}};
+  }
+  return json;
 }
 
 }  // namespace repose

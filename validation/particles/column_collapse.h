@@ -10,11 +10,15 @@
 // minus the initial front, both measured the same way, so that the
 // measurement's offset of about a grain radius cancels.
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "validation/particles/grain_set.h"
 #include "validation/particles/column_geometry.h"
+#include "validation/particles/particle_observables.h"
 
 namespace repose {
 
@@ -49,5 +53,10 @@ ColumnCollapse measure_column_collapse(const ColumnGeometry& geometry, const Gra
 
 // CSV "time_s,front_m" of the front over the frames.
 void write_runout_csv(const std::string& path, const ColumnCollapse& collapse);
+
+// A particle reference's column and pile results as JSON members "column"
+// and "pile" (each left out when absent; angles in degrees, as in files),
+// written alike by every engine.
+nlohmann::json column_results_json(const std::optional<ColumnCollapse>& column, const std::optional<FlankAngles>& pile);
 
 }  // namespace repose

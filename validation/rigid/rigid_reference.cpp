@@ -42,29 +42,6 @@ nlohmann::json options_json(const std::string& text) {
   return json;
 }
 
-nlohmann::json column_json(const RigidReferenceResult& r) {
-  constexpr double deg = 180.0 / std::numbers::pi;
-  nlohmann::json json = nlohmann::json::object();
-  if (r.column) {
-    const ColumnCollapse& c = *r.column;
-    json["column"] = {{"shape", c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder"},
-                      {"width_m", c.geometry.width_m},
-                      {"height_initial_m", c.height_initial_m},
-                      {"aspect_ratio", c.aspect_ratio},
-                      {"front_initial_m", c.front_initial_m},
-                      {"front_final_m", c.front_final_m},
-                      {"front_final_spread_m", c.front_final_spread_m},
-                      {"height_final_m", c.height_final_m},
-                      {"runout_normalised", c.runout_normalised}};
-  }
-  if (r.pile) {
-    json["pile"] = {{"flank_angle_mean_deg", r.pile->mean_rad * deg},
-                    {"flank_angle_std_deg", r.pile->std_rad * deg},
-                    {"azimuth_count", r.pile->angle_rad.size()}};
-  }
-  return json;
-}
-
 void write_manifest(const std::string& path, const RigidReferenceResult& r) {
   nlohmann::json json = {{"engine", r.engine},
                          {"engine_version", r.engine_version},
@@ -77,7 +54,7 @@ void write_manifest(const std::string& path, const RigidReferenceResult& r) {
                          {"run", phase_json(r.run)},
                          {"mass_held_kg", nlohmann::json::object()}};
   for (const auto& [name, kg] : r.mass_held_kg) json["mass_held_kg"][name] = kg;
-  json.update(column_json(r));
+  json.update(column_results_json(r.column, r.pile));
   std::ofstream out(path);
   out << json.dump(2) << "\n";
   if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
