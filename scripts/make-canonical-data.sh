@@ -48,6 +48,9 @@ for seed in "${seeds[@]}"; do
     order+=("$scene/seed$seed")
   done
 done
+# the coarse-grain LIGGGHTS rung of the default calibration's ladder: one bed
+scenes[ref_indent_deep_coarse/seed1]=experiments/scenes/ref_indent_deep_coarse.yaml
+order+=(ref_indent_deep_coarse/seed1)
 if [[ $# -gt 0 ]]; then order=("$@"); fi
 
 # the files kept in data/NAME (the rest of the run folder is large or regenerable)

@@ -57,7 +57,11 @@ def transects(run_dir, scene):
         with open(os.path.join(run_dir, "data", f)) as fh:
             rows = list(csv.DictReader(fh))
         s = [float(r["distance_m"]) * 1e3 for r in rows]
-        for key, label, style in (("start_m", "start", ":"), ("reference_m", "reference", "-"),
+        if rows and "reference_seed_min_m" in rows[0]:
+            ax.fill_between(s, [float(r["reference_seed_min_m"]) * 1e3 for r in rows],
+                            [float(r["reference_seed_max_m"]) * 1e3 for r in rows], color="0.85",
+                            label="reference, range of its seeds")
+        for key, label, style in (("start_m", "start", ":"), ("reference_m", "reference (mean of seeds)", "-"),
                                   ("heuristic_initial_m", "heuristic, initial parameters", "--"),
                                   ("heuristic_fitted_m", "heuristic, fitted", "-")):
             ax.plot(s, [float(r[key]) * 1e3 for r in rows], style, label=label)
@@ -89,23 +93,20 @@ def ladder(run_dir, calibration):
     lad = calibration.get("ladder")
     if not lad:
         return
-    fig, ax = plt.subplots(figsize=(7, 4.5), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(8, 4.8), constrained_layout=True)
     markers = {"ground": "o", "ground-multires": "s", "liggghts": "^"}
-    for kind in markers:
-        rungs = [r for r in lad["rungs"] if r["kind"] == kind]
-        if not rungs:
-            continue
-        # the yardstick has RMSE 0: drawn at the bottom edge
-        floor = 0.05
-        ax.loglog([r["wall_time_s"] for r in rungs], [max(r["rmse_m"] * 1e3, floor) for r in rungs],
-                  markers[kind], label=kind)
-        for r in rungs:
-            ax.annotate(r["label"], (r["wall_time_s"], max(r["rmse_m"] * 1e3, floor)), fontsize=7,
-                        xytext=(4, 4), textcoords="offset points")
-    ax.set_xlabel("wall time (s)")
-    ax.set_ylabel("surface RMSE against the yardstick (mm)")
-    ax.set_title(f"speed/accuracy ladder: {lad['scene']} (yardstick {lad['yardstick']})")
-    ax.legend(fontsize=8)
+    # every rung at its measured (time, error); numbered on the plot, named in the legend
+    for n, r in enumerate(lad["rungs"], start=1):
+        t = r["cpu_time_s"] if r.get("cpu_time_s") is not None else r["wall_time_s"]
+        ax.loglog([t], [r["rmse_m"] * 1e3], markers.get(r["kind"], "x"), label=f"{n}: {r['label']}")
+        ax.annotate(str(n), (t, r["rmse_m"] * 1e3), fontsize=8, xytext=(4, 3), textcoords="offset points")
+    if lad.get("noise_floor_m") is not None:
+        ax.axhspan(ax.get_ylim()[0], lad["noise_floor_m"] * 1e3, color="0.85", zorder=0,
+                   label=f"reference noise floor ({lad['noise_floor_m'] * 1e3:.2f} mm, seed to seed)")
+    ax.set_xlabel("time (s): CPU for LIGGGHTS, wall (one thread) for the heuristic")
+    ax.set_ylabel("RMSE of the surface change against the reference (mm)")
+    ax.set_title(f"speed/accuracy ladder: {lad['scene']}\n(reference: {lad['yardstick']})", fontsize=9)
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.savefig(os.path.join(run_dir, "ladder.png"), dpi=110)
     plt.close(fig)
 

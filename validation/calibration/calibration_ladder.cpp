@@ -14,17 +14,13 @@
 #include "validation/calibration/reference_cost.h"
 #include "validation/particles/dem_section.h"
 #include "validation/observables/calibration_observables.h"
+#include "validation/observables/surface_change.h"
 
 namespace repose {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Yardstick {
-  std::string label;
-  HeightField final_height;
-};
 
 // A surface on the yardstick's grid: area-weighted from finer cells, bilinear from coarser ones.
 HeightField onto(const HeightField& field, const Grid& target) {
@@ -33,28 +29,50 @@ HeightField onto(const HeightField& field, const Grid& target) {
                                                         : resample_bilinear(field, target);
 }
 
+// The scene's reference: its start and final surfaces (means over its seeds).
+struct Yardstick {
+  std::string label;
+  HeightField initial, final_height;
+};
+
+// RMSE of a rung's surface change (final - initial, each brought onto the
+// yardstick's grid) against the yardstick's. Comparing changes rather than
+// final surfaces lets a DEM run on another random bed be compared too.
+double change_rmse_m(const HeightField& initial, const HeightField& final_height, const Yardstick& yard,
+                     const std::optional<CalibrationRegion>& region) {
+  const Grid& g = yard.initial.grid();
+  HeightField shifted = yard.initial;
+  shifted.heights() += onto(final_height, g).heights() - onto(initial, g).heights();
+  return score_change(yard.initial, shifted, yard.final_height, region).rmse_m;
+}
+
 std::string millimetres(double m) { return fmt::format("{:.3g} mm", m * 1e3); }
 
 struct LiggghtsRun {
   LadderRung rung;
-  HeightField final_height;
+  std::string directory;
+  HeightField initial_height, final_height;
 };
+
+HeightField read_heights(const std::string& path, const Grid& grid, const std::string& scene_path) {
+  const NpyShape shape = read_npy_shape(path);
+  if (shape.rows != grid.ny || shape.cols != grid.nx) {
+    throw InputError(fmt::format("{}: {} x {} heights, its scene's grid ({}) is {} x {}", path, shape.rows, shape.cols,
+                                 scene_path, grid.ny, grid.nx));
+  }
+  return HeightField(grid, read_npy_2d(path, grid.ny, grid.nx));
+}
 
 LiggghtsRun load_liggghts_rung(const LadderReference& ref, const SectionTypes& sections) {
   const Scene scene = load_scene(ref.scene_path, sections);
   if (dem_of(scene) == nullptr) {
     throw InputError(ref.scene_path + ": a ladder LIGGGHTS scene needs a dem section (its grain size)");
   }
-  const std::string path = (fs::path(ref.directory) / "height_final.npy").string();
   const Grid& grid = scene.ground.grid;
-  const NpyShape shape = read_npy_shape(path);
-  if (shape.rows != grid.ny || shape.cols != grid.nx) {
-    throw InputError(fmt::format("{}: {} x {} heights, its scene's grid ({}) is {} x {}", path, shape.rows, shape.cols,
-                                 ref.scene_path, grid.ny, grid.nx));
-  }
-  const ArrayXXdR a = read_npy_2d(path, grid.ny, grid.nx);
   LiggghtsRun run;
-  run.final_height = HeightField(grid, a);
+  run.directory = ref.directory;
+  run.initial_height = read_heights((fs::path(ref.directory) / "height_initial.npy").string(), grid, ref.scene_path);
+  run.final_height = read_heights((fs::path(ref.directory) / "height_final.npy").string(), grid, ref.scene_path);
   run.rung.kind = "liggghts";
   run.rung.resolution_m = 2.0 * dem_of(scene)->grain_radius_m;
   run.rung.label = "LIGGGHTS d = " + millimetres(run.rung.resolution_m);
@@ -63,6 +81,27 @@ LiggghtsRun load_liggghts_rung(const LadderReference& ref, const SectionTypes& s
   run.rung.wall_time_s = cost->wall_s;
   run.rung.cpu_time_s = cost->cpu_s;
   return run;
+}
+
+// A LIGGGHTS rung's error. A run that is one of the reference's own seeds is
+// compared with the mean of the other seeds (comparing it with a mean that
+// holds it would flatter it): its error is then the reference's noise.
+double liggghts_rung_rmse_m(LiggghtsRun& run, const PreparedScene& s, const Yardstick& yard) {
+  const auto& seeds = s.entry.reference.directories;
+  const auto own = std::find_if(seeds.begin(), seeds.end(),
+                                [&](const std::string& d) { return fs::equivalent(d, run.directory); });
+  if (own == seeds.end() || seeds.size() < 2) {
+    return change_rmse_m(run.initial_height, run.final_height, yard, s.entry.rmse_region);
+  }
+  std::vector<HeightField> initial, final_height;
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    if (k == static_cast<std::size_t>(own - seeds.begin())) continue;
+    initial.push_back(s.seed_initial[k]);
+    final_height.push_back(s.seed_final[k]);
+  }
+  run.rung.label += " (one seed, against the others' mean)";
+  const Yardstick others{"", mean_field(initial), mean_field(final_height)};
+  return change_rmse_m(run.initial_height, run.final_height, others, s.entry.rmse_region);
 }
 
 // The scene on a grid of cell size h over the same extent.
@@ -111,7 +150,8 @@ LadderRung solver_rung(const CalibrationProblem& problem, const PreparedScene& s
   const LadderSpec& spec = *problem.spec().ladder;
   HeightField result;
   rung.wall_time_s = timed_run(problem, s, scene, values, spec.timing_repeats, &result);
-  rung.rmse_m = surface_rmse_m(onto(result, yard.final_height.grid()), yard.final_height, s.entry.rmse_region);
+  rung.rmse_m = change_rmse_m(scene.ground.initial.given ? *scene.ground.initial.given : yard.initial, result, yard,
+                              s.entry.rmse_region);
   return rung;
 }
 
@@ -142,12 +182,11 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
   std::vector<LiggghtsRun> runs;
   for (const LadderReference& ref : spec.liggghts) runs.push_back(load_liggghts_rung(ref, problem.registry().sections()));
   std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.rung.resolution_m < b.rung.resolution_m; });
-  Yardstick yard{"the scene's reference", s.reference_final};
-  if (!runs.empty()) {
-    runs.front().rung.yardstick = true;
-    yard = {runs.front().rung.label, runs.front().final_height};
-  }
+  const std::size_t seeds = std::max<std::size_t>(1, s.seed_final.size());
+  const Yardstick yard{fmt::format("the scene's reference (mean of {} seed{})", seeds, seeds > 1 ? "s" : ""), s.initial,
+                       s.reference_final};
   ladder.yardstick = yard.label;
+  if (const auto noise = noise_floor(s.seed_initial, s.seed_final, s.entry.rmse_region)) ladder.noise_floor_m = noise->rmse_m;
 
   const std::string solver = problem.solver().name();
   const double own = s.scene.ground.grid.cell_size_m;
@@ -171,10 +210,11 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
                                        {label, solver + "-multires", own}));
   }
   for (LiggghtsRun& run : runs) {
-    run.rung.rmse_m = surface_rmse_m(onto(run.final_height, yard.final_height.grid()), yard.final_height, s.entry.rmse_region);
+    run.rung.rmse_m = liggghts_rung_rmse_m(run, s, yard);
     ladder.rungs.push_back(run.rung);
   }
   if (!runs.empty() && own_time && *own_time > 0.0) {
+    // the finest grains: the reference's own resolution
     ladder.liggghts_over_ground_time = runs.front().rung.wall_time_s / *own_time;
     if (runs.front().rung.cpu_time_s) ladder.liggghts_over_ground_cpu_time = *runs.front().rung.cpu_time_s / *own_time;
   }

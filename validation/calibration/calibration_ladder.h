@@ -1,15 +1,16 @@
 #pragma once
 // The speed/accuracy ladder of a calibrated scene: each rung is a way to
-// compute the scene's final surface, as (wall time, surface RMSE against the
-// yardstick). The yardstick is the finest LIGGGHTS reference (smallest
-// grains) of the ladder, or the scene's own reference when the ladder lists
-// none. Rungs:
+// compute the scene's surface change, as (time, RMSE of its change Δh
+// against the yardstick's). The yardstick is the scene's own reference (the
+// mean of its seeds), drawn with its noise floor (seed-to-seed, as a band):
+// no rung is placed at a made-up error. Rungs:
 //   - the calibrated ground model at each listed cell size (the reference's
 //     initial surface resampled onto that grid, the result back onto the
 //     yardstick's grid: area-weighted when finer, bilinear when coarser);
 //   - the multi-resolution ground model at the scene's cell size (every
 //     object on the coarse grid, coarse_factor as listed);
-//   - each LIGGGHTS run of the ladder, its cost from its manifest.
+//   - each LIGGGHTS run of the ladder, its cost from its manifest; a run that
+//     is one of the reference's seeds is compared with the other seeds' mean.
 // The heuristic's time is the fastest of timing_repeats runs.
 
 #include <optional>
@@ -27,13 +28,13 @@ struct LadderRung {
   double resolution_m = 0.0;  // cell size, or grain diameter for LIGGGHTS
   double wall_time_s = 0.0;
   std::optional<double> cpu_time_s;  // LIGGGHTS: its own CPU time
-  double rmse_m = 0.0;      // surface RMSE against the yardstick (rmse region of the scene)
-  bool yardstick = false;
+  double rmse_m = 0.0;      // RMSE of Δh against the yardstick's (rmse region of the scene)
 };
 
 struct Ladder {
   std::string scene;
   std::string yardstick;    // label of the yardstick
+  std::optional<double> noise_floor_m;  // the yardstick's seed-to-seed noise (2 or more seeds)
   std::vector<LadderRung> rungs;
   // The finest LIGGGHTS run's wall time over the ground model's at the scene's own cell size.
   std::optional<double> liggghts_over_ground_time;

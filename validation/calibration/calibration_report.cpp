@@ -1,5 +1,6 @@
 #include "validation/calibration/calibration_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -140,14 +141,23 @@ std::vector<std::string> write_calibration_figure_data(const CalibrationOutputs&
       const std::string name = fmt::format("{}_transect_{}.csv", base, t);
       std::ofstream out;
       open_file(out, path(name));
-      out << "distance_m,x_m,y_m,start_m,reference_m,heuristic_initial_m,heuristic_fitted_m\n";
+      out << "distance_m,x_m,y_m,start_m,reference_m,heuristic_initial_m,heuristic_fitted_m,"
+             "reference_seed_min_m,reference_seed_max_m\n";
       const ObservableSpec& line = lines[t];
       for (int i = 0; i < line.samples; ++i) {
         const double f = static_cast<double>(i) / (line.samples - 1);
         const Eigen::Vector2d p = line.from_m + f * (line.to_m - line.from_m);
-        out << fmt::format("{},{},{},{},{},{},{}\n", f * (line.to_m - line.from_m).norm(), p.x(), p.y(),
+        // the seeds' spread of the final surface, each seed's change on the common start
+        double lo = s.reference_final.sample(p.x(), p.y()), hi = lo;
+        for (std::size_t k = 0; k < s.seed_final.size(); ++k) {
+          const double h = s.initial.sample(p.x(), p.y()) + s.seed_final[k].sample(p.x(), p.y()) -
+                           s.seed_initial[k].sample(p.x(), p.y());
+          lo = std::min(lo, h);
+          hi = std::max(hi, h);
+        }
+        out << fmt::format("{},{},{},{},{},{},{},{},{}\n", f * (line.to_m - line.from_m).norm(), p.x(), p.y(),
                            s.initial.sample(p.x(), p.y()), s.reference_final.sample(p.x(), p.y()),
-                           e.heuristic_initial_params.sample(p.x(), p.y()), e.heuristic_fitted.sample(p.x(), p.y()));
+                           e.heuristic_initial_params.sample(p.x(), p.y()), e.heuristic_fitted.sample(p.x(), p.y()), lo, hi);
       }
       names.push_back(name);
     }
@@ -193,11 +203,13 @@ void write_calibration_report(const CalibrationOutputs& o, const std::vector<std
   }
   if (o.ladder) {
     const Ladder& l = *o.ladder;
-    out << fmt::format("\n## Speed/accuracy ladder ({}; yardstick: {})\n\n| rung | wall time (s) | surface RMSE (mm) |\n|---|---|---|\n",
-                       l.scene, l.yardstick);
+    out << fmt::format("\n## Speed/accuracy ladder ({}; yardstick: {}; its noise floor {})\n\n"
+                       "| rung | wall time (s) | RMSE of Δh (mm) | RMSE / noise floor |\n|---|---|---|---|\n",
+                       l.scene, l.yardstick, l.noise_floor_m ? mm(*l.noise_floor_m) + " mm" : "unknown (one seed)");
     for (const LadderRung& r : l.rungs) {
-      out << fmt::format("| {}{} | {:.4g}{} | {} |\n", r.label, r.yardstick ? " (yardstick)" : "", r.wall_time_s,
-                         r.cpu_time_s ? fmt::format(" (CPU {:.4g})", *r.cpu_time_s) : "", mm(r.rmse_m));
+      out << fmt::format("| {} | {:.4g}{} | {} | {} |\n", r.label, r.wall_time_s,
+                         r.cpu_time_s ? fmt::format(" (CPU {:.4g})", *r.cpu_time_s) : "", mm(r.rmse_m),
+                         l.noise_floor_m ? ratio(r.rmse_m, *l.noise_floor_m) : "-");
     }
     if (l.liggghts_over_ground_time) {
       out << fmt::format("\nLIGGGHTS / ground model time at the scene's resolution: {:.3g} (wall), {:.3g} (LIGGGHTS CPU time "

@@ -98,7 +98,7 @@ struct LadderSpec {
   std::vector<double> heuristic_cell_sizes_m;  // >= 1 entries; the ground model at each
   bool multires = true;                  // also the scene's resolution with objects on the coarse grid
   int multires_coarse_factor = 2;
-  std::vector<LadderReference> liggghts;  // the finest grain size is the yardstick
+  std::vector<LadderReference> liggghts;  // LIGGGHTS rungs (grain sizes); the yardstick is the scene's reference
   int timing_repeats = 3;                // heuristic runs timed per rung (the fastest counts)
 };
 
