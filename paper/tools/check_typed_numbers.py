@@ -20,7 +20,7 @@ STRUCTURAL = ("label", "ref", "eqref", "pageref", "cite", "citep", "citet", "inp
               "begin", "end", "newcommand", "renewcommand", "setcounter", "bibliographystyle", "bibliography",
               "path", "url", "href", "hypersetup", "cline", "multicolumn")
 ARGUMENTS = r"(?:\s*\[[^\]]*\]|\s*\{(?:[^{}]|\{[^{}]*\})*\})*"
-STRUCTURE = re.compile(r"\\(?:" + "|".join(STRUCTURAL) + r")\*?" + ARGUMENTS)
+STRUCTURE = re.compile(r"\\(?:" + "|".join(STRUCTURAL) + r")(?![A-Za-z])\*?" + ARGUMENTS)
 LENGTH = re.compile(r"-?\d*\.?\d+\s*(?:pt|em|ex|cm|mm|in|bp)\b|-?\d*\.?\d+\s*\\(?:text|line|column|paper)width")
 COMMENT = re.compile(r"(?<!\\)%.*")
 PARAMETER = re.compile(r"#\d")  # a macro's parameter (#1) in a definition
