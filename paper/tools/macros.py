@@ -17,8 +17,7 @@ def latex_number(text):
     if not m:
         return escape(text)
     sign = "-" if m.group(2) == "-" else ""
-    mantissa = "" if m.group(1) in ("1", "1.0") else m.group(1) + r"\times"
-    return rf"\ensuremath{{{mantissa}10^{{{sign}{m.group(3)}}}}}"
+    return rf"\ensuremath{{{m.group(1)}\times10^{{{sign}{m.group(3)}}}}}"
 
 
 def source_value(folder, source):

@@ -4,6 +4,7 @@ the runs were made with."""
 import os
 
 from latex import GENERATED_HEADER, escape
+from run_cache import shown_path
 from values import read_json
 
 
@@ -40,7 +41,7 @@ def provenance_rows(root, statuses):
         build = manifest.get("build", {})
         commit = build.get("git_commit", "unknown")[:10] + ("+dirty" if build.get("git_dirty") else "")
         runs = len(manifest.get("runs", [])) or 1
-        rows.append({"id": status.entry.id, "folder": os.path.relpath(status.folder, root), "state": status.state,
+        rows.append({"id": status.entry.id, "folder": shown_path(root, status.folder), "state": status.state,
                      "commit": commit, "seeds": _seeds(manifest), "runs": runs,
                      "wall_s": f"{float(manifest.get('total_wall_s', 0.0)):.1f}", "cpu_s": _cpu_s(manifest),
                      "engines": _engines(manifest)})

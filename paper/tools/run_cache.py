@@ -34,6 +34,12 @@ class RunStatus:
         return self.state in (FRESH, STALE)
 
 
+def shown_path(root, path):
+    """A path as messages show it: relative inside the repository, absolute outside."""
+    relative = os.path.relpath(path, root)
+    return path if relative.startswith("..") else relative
+
+
 def record_path(cache, entry_id):
     return os.path.join(cache, f"{entry_id}.paper.json")
 
@@ -62,7 +68,7 @@ def status_of(root, cache, libraries, entry, engines):
     current = fingerprint(root, libraries, entry, engines)
     record = _read_record(record_path(cache, entry.id))
     if record is None or not os.path.exists(os.path.join(folder, "manifest.json")):
-        return RunStatus(entry, folder, MISSING, ["never run into " + os.path.relpath(folder, root)], {}, current)
+        return RunStatus(entry, folder, MISSING, ["never run into " + shown_path(root, folder)], {}, current)
     reasons = changes(record["fingerprint"], current)
     return RunStatus(entry, folder, STALE if reasons else FRESH, reasons, record["fingerprint"]["code"], current)
 

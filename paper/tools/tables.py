@@ -2,7 +2,7 @@
 the run folders' JSON lists or CSV rows as inputs.yaml describes them."""
 import os
 
-from latex import GENERATED_HEADER, escape, not_yet_run
+from latex import GENERATED_HEADER, not_yet_run
 from macros import latex_number
 from values import ValueMissing, format_value, lookup, read_csv, read_json
 

@@ -24,6 +24,7 @@ macros:
 class MacrosTest(unittest.TestCase):
     def test_scientific_notation_is_latex(self):
         self.assertEqual(latex_number("1.2e+04"), r"\ensuremath{1.2\times10^{4}}")
+        self.assertEqual(latex_number("1.0e+04"), r"\ensuremath{1.0\times10^{4}}")
         self.assertEqual(latex_number("3.0e-05"), r"\ensuremath{3.0\times10^{-5}}")
         self.assertEqual(latex_number("0.42"), "0.42")
         self.assertEqual(latex_number("not_run"), r"not\_run")
