@@ -3,8 +3,8 @@
 A fingerprint is a JSON object of named components, each a hash or a version:
   experiment   the experiment (or calibration) file's SHA-256
   inputs       every file or folder the file names (scenes, reference data,
-               plot scripts), and what those scenes name in turn (meshes,
-               contours), by content hash
+               plot scripts), what those scenes name in turn (meshes,
+               contours), and the entry's depends_on, by content hash
   code         per solver involved, a hash of its source folders
                (code_version.py), and one for the command that ran it
   engines      the library versions `repose --version` prints and the
@@ -74,7 +74,8 @@ def engine_versions(repose_bin):
 
 def fingerprint(root, libraries, entry, engines):
     """The fingerprint of an experiment or calibration entry (inputs.ExperimentInput)."""
-    inputs = {p: tree_hash(root, [p]) for p in referenced_paths(root, entry.path)}
+    named = referenced_paths(root, entry.path) + list(entry.depends_on)
+    inputs = {p: tree_hash(root, [p]) if os.path.exists(os.path.join(root, p)) else "absent" for p in named}
     return {"experiment": {entry.path: sha256_file(os.path.join(root, entry.path))},
             "inputs": inputs,
             "code": code_versions(root, libraries, entry.command, entry.solvers),

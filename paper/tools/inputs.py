@@ -30,6 +30,7 @@ class ExperimentInput:
     modes: tuple               # modes that run it; otherwise a fresh cached folder is used
     optional: bool = False     # absent file: its numbers print as "not yet run"
     estimate_s: float = 60.0   # first-run estimate, until a manifest gives the real time
+    depends_on: tuple = ()     # files/folders it reads that its file does not name (a plot's reference data)
 
 
 @dataclass(frozen=True)
@@ -56,6 +57,7 @@ class ColumnInput:
     key: str                   # JSON key path in each row, or CSV column
     format: str = "{}"
     scale: float = 1.0
+    if_missing: str = ""       # printed when a row has no such key (empty: that is an error)
 
 
 @dataclass(frozen=True)
@@ -107,7 +109,8 @@ def _allowed(entry, keys, where):
 
 def _experiment(entry, k):
     where = f"experiments[{k}]"
-    _allowed(entry, ("id", "command", "file", "folder", "solvers", "modes", "optional", "estimate_s"), where)
+    _allowed(entry, ("id", "command", "file", "folder", "solvers", "modes", "optional", "estimate_s", "depends_on"),
+             where)
     eid = str(_require(entry, "id", where))
     if not ENTRY_ID.match(eid):
         raise InputsError(f"{where}.id: expected lower-case letters, digits and _, got '{eid}'")
@@ -127,7 +130,8 @@ def _experiment(entry, k):
     if estimate <= 0:
         raise InputsError(f"{where}.estimate_s: expected > 0, got {estimate}")
     return ExperimentInput(eid, command, str(path), tuple(entry.get("solvers", ())), modes,
-                           bool(entry.get("optional", False)), estimate)
+                           bool(entry.get("optional", False)), estimate,
+                           tuple(str(d) for d in entry.get("depends_on", ())))
 
 
 def _source(entry, where):
@@ -162,10 +166,11 @@ def _table(name, entry):
     _allowed(entry, ("from", "file", "rows", "columns", "caption", "filter"), where)
     columns = []
     for c, col in enumerate(_require(entry, "columns", where)):
-        _allowed(col, ("heading", "key", "format", "scale"), f"{where}.columns[{c}]")
+        _allowed(col, ("heading", "key", "format", "scale", "if_missing"), f"{where}.columns[{c}]")
         columns.append(ColumnInput(str(_require(col, "heading", f"{where}.columns[{c}]")),
                                    str(_require(col, "key", f"{where}.columns[{c}]")),
-                                   str(col.get("format", "{}")), float(col.get("scale", 1.0))))
+                                   str(col.get("format", "{}")), float(col.get("scale", 1.0)),
+                                   str(col.get("if_missing", ""))))
     flt = entry.get("filter", {})
     return TableInput(name, str(_require(entry, "from", where)), str(_require(entry, "file", where)),
                       str(entry.get("rows", "")), tuple(columns), str(_require(entry, "caption", where)),

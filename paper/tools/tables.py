@@ -27,6 +27,8 @@ def cell(row, column, where):
     try:
         value = lookup(row, column.key)
     except (KeyError, IndexError):
+        if column.if_missing:
+            return column.if_missing
         raise ValueMissing(f"{where}: a row has no '{column.key}'") from None
     if value is None or value == "":
         return "--"

@@ -65,6 +65,16 @@ class FingerprintTest(unittest.TestCase):
         write(self.root, "experiments/runner/run.cpp", "// runner, changed\n")
         self.assertEqual(changes(old, self.current()), ["code of repose experiment: changed"])
 
+    def test_what_the_entry_depends_on_beyond_its_file_is_an_input(self):
+        entry = ExperimentInput("press", "experiment", "experiments/press.yaml", ("ground",), ("quick",),
+                                depends_on=("data/pile",))
+        write(self.root, "data/pile/height_final.csv", "1\n")
+        libraries = cmake_libraries(self.root)
+        old = fingerprint(self.root, libraries, entry, ENGINES)
+        write(self.root, "data/pile/height_final.csv", "2\n")
+        self.assertEqual(changes(old, fingerprint(self.root, libraries, entry, ENGINES)),
+                         ["input data/pile: changed"])
+
     def test_an_engine_version_change_is_named(self):
         old = self.current()
         reasons = changes(old, self.current(["Bullet 3.25", "LIGGGHTS 3.8.0"]))
