@@ -10,7 +10,9 @@ packages=(
   liggghts libliggghts-dev liggghts-doc mpi-default-dev openmpi-bin
   libyaml-cpp-dev libcli11-dev libfmt-dev libpng-dev nlohmann-json3-dev ccache
   libgtest-dev libgmock-dev libbenchmark-dev clang libclang-rt-14-dev
-  python3-matplotlib python3-numpy
+  python3-matplotlib python3-numpy python3-yaml
+  # the paper (scripts/make-paper.sh): LaTeX, latexmk, pdftoppm/pdfinfo
+  texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk poppler-utils
 )
 
 missing=()

@@ -18,6 +18,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from figure_output import save  # noqa: E402
 
 
 def load(run_dir, name):
@@ -43,7 +44,7 @@ def maps(run_dir, scene):
         ax.set_xlabel("cell i (x)")
         ax.set_ylabel("cell j (y)")
     out = f"maps_{name}.png"
-    fig.savefig(os.path.join(run_dir, out), dpi=110)
+    save(fig, run_dir, out, dpi=110)
     plt.close(fig)
 
 
@@ -71,7 +72,7 @@ def transects(run_dir, scene):
         ax.set_xlabel("distance along the transect (mm)")
         ax.set_ylabel("height (mm)")
         ax.legend(fontsize=8)
-    fig.savefig(os.path.join(run_dir, f"transects_{name}.png"), dpi=110)
+    save(fig, run_dir, f"transects_{name}.png", dpi=110)
     plt.close(fig)
 
 
@@ -85,7 +86,7 @@ def cost(run_dir, calibration):
     ax.set_ylabel("cost (0.5 sum of squared residuals)")
     ax.set_title("Levenberg-Marquardt cost per start")
     ax.legend(fontsize=8)
-    fig.savefig(os.path.join(run_dir, "cost.png"), dpi=110)
+    save(fig, run_dir, "cost.png", dpi=110)
     plt.close(fig)
 
 
@@ -107,7 +108,7 @@ def ladder(run_dir, calibration):
     ax.set_ylabel("RMSE of the surface change against the reference (mm)")
     ax.set_title(f"speed/accuracy ladder: {lad['scene']}\n(reference: {lad['yardstick']})", fontsize=9)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
-    fig.savefig(os.path.join(run_dir, "ladder.png"), dpi=110)
+    save(fig, run_dir, "ladder.png", dpi=110)
     plt.close(fig)
 
 

@@ -25,6 +25,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from figure_output import save  # noqa: E402
 
 A_SMALL = 2.5
 A_LARGE = 3.0
@@ -76,7 +77,7 @@ def main(folder):
     axes[0].set_ylabel("normalised runout (L$_\\infty$ - L$_0$)/L$_0$")
     fig.suptitle("Granular column collapse: DEM reference vs published laws")
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "dem_column_collapse.png"), dpi=130)
+    save(fig, folder, "dem_column_collapse.png", dpi=130)
     with open(os.path.join(folder, "dem_column_collapse_fits.csv"), "w") as f:
         f.write("geometry,range,a_min,a_max,prefactor,exponent,points\n")
         for row in fits:

@@ -14,6 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from figure_output import save  # noqa: E402
 
 
 def sweep_value(name):
@@ -48,7 +49,7 @@ def main(folder):
     ax.grid(alpha=0.3)
     ax.legend(loc="lower right")
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "dem_repose_angle.png"), dpi=130)
+    save(fig, folder, "dem_repose_angle.png", dpi=130)
     with open(os.path.join(folder, "dem_repose_angle.csv"), "w") as f:
         f.write("rolling_friction,flank_angle_mean_deg,flank_angle_std_deg,azimuth_count\n")
         for row in zip(mu, mean, std, count):

@@ -10,6 +10,7 @@ import sys
 import matplotlib.image as mpimg
 import matplotlib.pyplot as plt
 import numpy as np
+from figure_output import save
 
 
 def run_names(folder):
@@ -34,7 +35,7 @@ def main():
         ax.imshow(mpimg.imread(os.path.join(folder, name, "height_final.png")))
         ax.set_title(name, fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "footprints.png"), dpi=110)
+    save(fig, folder, "footprints.png", dpi=110)
     plt.close(fig)
 
     fig, axes = grid_figure(len(names))
@@ -47,7 +48,7 @@ def main():
         ax.set_title(f"{name}: change (mm)", fontsize=9)
         fig.colorbar(image, ax=ax, fraction=0.046)
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "footprint_changes.png"), dpi=110)
+    save(fig, folder, "footprint_changes.png", dpi=110)
     plt.close(fig)
 
 

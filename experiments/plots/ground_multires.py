@@ -10,6 +10,7 @@ import sys
 
 import matplotlib.pyplot as plt
 import numpy as np
+from figure_output import save
 
 FULL, HALF = "simple_false", "simple_true"
 
@@ -45,7 +46,7 @@ def main():
     axes[2].set_title(f"half - full (mm), RMSE {1e3 * rmse:.3f} mm")
     fig.colorbar(image, ax=axes[2], fraction=0.046)
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "multires.png"), dpi=110)
+    save(fig, folder, "multires.png", dpi=110)
     plt.close(fig)
 
 

@@ -11,6 +11,7 @@ import sys
 
 import matplotlib.pyplot as plt
 import numpy as np
+from figure_output import save
 
 PAPER_MS = {"no_sweep": 22.1, "substeps_10": 220.5, "sweep": 26.5}
 LABELS = {"no_sweep": "no sweep", "substeps_10": "10 substeps", "sweep": "sweep"}
@@ -47,7 +48,7 @@ def plot_times(folder, ms):
     ax.set_title("Sphere dragged 10 cells per frame (Table 1)")
     ax.legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "table1.png"), dpi=120)
+    save(fig, folder, "table1.png", dpi=120)
     plt.close(fig)
 
 
@@ -64,7 +65,7 @@ def plot_profiles(folder):
     ax.set_title("Streaks: the furrow floor along the path")
     ax.legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "streaks.png"), dpi=120)
+    save(fig, folder, "streaks.png", dpi=120)
     plt.close(fig)
 
 

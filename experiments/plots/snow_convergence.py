@@ -10,6 +10,7 @@ import sys
 
 import matplotlib.pyplot as plt
 import numpy as np
+from figure_output import save
 
 REFERENCE = 1024
 MAPS = ("ground", "table")
@@ -45,7 +46,7 @@ def main():
     ax.set_ylabel(f"error of P against N = {REFERENCE}")
     ax.legend()
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "convergence.png"), dpi=110)
+    save(fig, folder, "convergence.png", dpi=110)
     plt.close(fig)
 
 

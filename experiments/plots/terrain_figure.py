@@ -11,6 +11,7 @@ import sys
 import matplotlib.pyplot as plt
 import matplotlib.tri as mtri
 import numpy as np
+from figure_output import save
 
 
 def read_obj(path):
@@ -73,7 +74,7 @@ def main():
         ax.set_xlabel("x (m)")
         ax.set_ylabel("y (m)")
     fig.tight_layout()
-    fig.savefig(os.path.join(folder, "terrain.png"), dpi=130)
+    save(fig, folder, "terrain.png", dpi=130)
     plt.close(fig)
 
 
