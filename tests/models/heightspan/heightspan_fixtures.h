@@ -91,3 +91,18 @@ inline double relative_imbalance(const HeightSpanState& state, double initial_m3
 }
 
 }  // namespace repose::testing
+
+namespace repose::testing {
+
+// Puts `height_m` of material on the top span of every column whose top
+// is at `top_z_m` (to 1 um): the floor of an upright bucket, a plate.
+inline double fill_spans(SpanMap* map, double height_m, double top_z_m) {
+  for (std::int64_t c = 0; c < static_cast<std::int64_t>(map->grid.cell_count()); ++c) {
+    if (map->count(c) == 0) continue;
+    Span& s = map->begin(c)[map->count(c) - 1];
+    if (std::abs(s.top_m - top_z_m) < 1e-6) s.material_m += height_m;
+  }
+  return map->material_m3();
+}
+
+}  // namespace repose::testing
