@@ -136,11 +136,19 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
     const auto [gi, gj] = ground_cell(s.index);
     return ground->height.at(gi, gj);
   };
+  // the columns with spans and one ring around them: nothing else can exchange with a span
+  int i0 = map.grid.nx, i1 = -1, j0 = map.grid.ny, j1 = -1;
+  for (int j = 0; j < map.grid.ny; ++j) {
+    for (int i = 0; i < map.grid.nx; ++i) {
+      if (map.count(map.cell(i, j)) == 0) continue;
+      i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+    }
+  }
   std::vector<Flux> fluxes;
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
-    for (int j = -1; j <= map.grid.ny; ++j) {
-      for (int i = -1; i <= map.grid.nx; ++i) {
+    for (int j = j0 - 1; j <= j1 + 1; ++j) {
+      for (int i = i0 - 1; i <= i1 + 1; ++i) {
         if (cols.count(i, j) > 0) add_span_fluxes(cols, rule, i, j, &fluxes);
         add_ground_fluxes(cols, rule, i, j, &fluxes);
       }
