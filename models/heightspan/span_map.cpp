@@ -7,12 +7,6 @@ namespace repose {
 
 namespace {
 
-struct Hit {
-  std::int64_t cell;
-  double z;
-  int winding;  // +1 entering the body (face turned down), -1 leaving it
-};
-
 bool lex_less(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
 }
@@ -36,7 +30,7 @@ bool owns_edge(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
 
 bool covers(double w, const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return w > 0.0 || (w == 0.0 && owns_edge(u, v)); }
 
-void rasterise(Eigen::Vector3d a, Eigen::Vector3d b, Eigen::Vector3d c, const Grid& grid, std::vector<Hit>* hits) {
+void rasterise(Eigen::Vector3d a, Eigen::Vector3d b, Eigen::Vector3d c, const Grid& grid, std::vector<SpanHit>* hits) {
   const double area = edge_function(a.head<2>(), b.head<2>(), c.head<2>());
   if (area == 0.0) return;  // vertical: seen edge-on
   const int winding = area < 0.0 ? +1 : -1;  // counter-clockwise from above: turned up, the ray leaves
@@ -81,12 +75,16 @@ bool SpanMap::cell_at(double x_m, double y_m, int* i, int* j) const {
 }
 
 SpanMap peel_spans(const TriangleMesh& mesh, const Grid& grid) {
-  std::vector<Hit> hits;
+  std::vector<SpanHit> hits;
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
     rasterise(mesh.V.row(mesh.F(f, 0)), mesh.V.row(mesh.F(f, 1)), mesh.V.row(mesh.F(f, 2)), grid, &hits);
   }
+  return spans_from_hits(std::move(hits), grid);
+}
+
+SpanMap spans_from_hits(std::vector<SpanHit> hits, const Grid& grid) {
   // bottom to top per cell; at one height entries first, so touching parts merge
-  std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
+  std::sort(hits.begin(), hits.end(), [](const SpanHit& a, const SpanHit& b) {
     if (a.cell != b.cell) return a.cell < b.cell;
     if (a.z != b.z) return a.z < b.z;
     return a.winding > b.winding;

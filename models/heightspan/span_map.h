@@ -16,9 +16,10 @@
 // Spans that touch merge; spans thinner than 1e-9 cell (a grazing ray) are
 // dropped.
 //
-// Departure from the paper, which renders the HS map with graphics hardware
-// by depth peeling: the OSMesa path is not implemented; the CPU path is the
-// only one (heightspan_solver.h says so in Run::details).
+// The OSMesa path (osmesa_span_peeling.h) depth-peels the same mesh with
+// OpenGL, as the paper does with graphics hardware, and builds the spans
+// from its layers by the same rule (spans_from_hits); the two agree to the
+// depth buffer's resolution (tested).
 //
 // Storage: compressed rows, cell c's spans are spans[first[c] .. first[c+1]),
 // ordered bottom to top; cells are row-major over the grid (j outer).
@@ -57,6 +58,17 @@ struct SpanMap {
 // The spans of a closed, outward-oriented mesh (world coordinates) over
 // `grid`, with no material on them.
 SpanMap peel_spans(const TriangleMesh& mesh, const Grid& grid);
+
+// Where the vertical line through a cell's centre meets the body's surface.
+struct SpanHit {
+  std::int64_t cell;
+  double z;
+  int winding;  // +1 entering the body (a face turned down), -1 leaving it
+};
+
+// The spans (no material) from every cell's hits, in any order, by the
+// winding rule above.
+SpanMap spans_from_hits(std::vector<SpanHit> hits, const Grid& grid);
 
 // Index (within its cell) of the highest span whose bottom is at or below
 // z, -1 when none: the span a point at height z rests on or lies inside.
