@@ -49,8 +49,9 @@ void HeightSpanSection::write_yaml(YAML::Emitter& out) const {
 }
 
 std::string HeightSpanSection::summary() const {
-  std::string text = fmt::format("heightspan: near ground {} cells, substeps of {} cells / {:.6g} deg, bulk density {} "
-                                 "kg/m^3, frames every {} s",
+  std::string text = fmt::format("heightspan: span maps by {}, near ground {} cells, substeps of {} cells / {:.6g} "
+                                 "deg, bulk density {} kg/m^3, frames every {} s",
+                                 options.span_maps == HeightSpanSpec::SpanMaps::kCpu ? "cpu" : "osmesa",
                                  options.near_ground_cells, options.max_substep_cells,
                                  options.max_substep_angle_rad / kRadPerDeg, options.bulk_density_kg_m3,
                                  options.frame_interval_s);

@@ -12,6 +12,7 @@
 //     bulk_density_kg_m3: 1600      # to report held material as mass (LIGGGHTS reports kg)
 //     particle_spread_m_s: 0.02     # std. dev. of the horizontal velocity added to released particles
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
+//     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}
 //                                   # per object; absent: meshes that are not convex hold material
 //
@@ -33,6 +34,8 @@ struct HeightSpanSpec {
   double bulk_density_kg_m3 = 1600.0;  // (0, 1e5]
   double particle_spread_m_s = 0.02;   // [0, 100]
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
+  enum class SpanMaps { kCpu, kOsmesa };
+  SpanMaps span_maps = SpanMaps::kCpu;
 };
 
 // Throws FieldError naming the field and the rule; the loader and the model
@@ -47,6 +50,8 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
   v.number("bulk_density_kg_m3", s.bulk_density_kg_m3, Range::any());
   v.number("particle_spread_m_s", s.particle_spread_m_s, Range::any());
   v.number("frame_interval_s", s.frame_interval_s, Range::any());
+  using M = HeightSpanSpec::SpanMaps;
+  v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});
 }
 
 class HeightSpanSection final : public SceneSection {

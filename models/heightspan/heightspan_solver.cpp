@@ -168,7 +168,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     nlohmann::json maps = nlohmann::json::array();
     for (const HeldObject& h : model_.held) maps.push_back(object_name(model_, h.object));
     run->details["built"] = {{"span_maps", maps},
-                             {"span_map_path", "cpu depth peeling (the OSMesa path is not implemented)"},
+                             {"span_map_path", model_.options.span_maps == HeightSpanSpec::SpanMaps::kOsmesa
+                                                   ? "osmesa depth peeling"
+                                                   : "cpu depth peeling"},
                              {"particles", r.particles_built},
                              {"path", "height-span model"}};
     if (!options.output_dir.empty()) {

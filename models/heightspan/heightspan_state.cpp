@@ -6,12 +6,14 @@ namespace repose {
 
 HeightSpanState make_heightspan_state(const HeightSpanModel& model, HeightField initial) {
   HeightSpanState state;
+  state.peeler = model.options.span_maps == HeightSpanSpec::SpanMaps::kOsmesa ? std::shared_ptr<SpanPeeler>(make_osmesa_span_peeler())
+                                                                           : std::shared_ptr<SpanPeeler>(make_cpu_span_peeler());
   state.ground = make_ground_state(model.ground, std::move(initial));
   for (const HeldObject& h : model.held) {
     const ObjectSpec& o = model.ground.objects[static_cast<std::size_t>(h.object)];
     ObjectSpans spans;
     spans.pose = o.pose_at(0.0);
-    spans.map = peel_spans(transformed(o.body, spans.pose), model.map_grid(h, spans.pose));
+    spans.map = state.peeler->peel(transformed(o.body, spans.pose), model.map_grid(h, spans.pose));
     state.held.push_back(std::move(spans));
   }
   state.rng.seed(model.seed);

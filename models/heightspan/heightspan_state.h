@@ -10,6 +10,7 @@
 #include "models/ground/ground_state.h"
 #include "models/heightspan/particles.h"
 #include "models/heightspan/span_map.h"
+#include "models/heightspan/span_peeler.h"
 
 namespace repose {
 
@@ -25,11 +26,14 @@ struct HeightSpanState {
   std::vector<ObjectSpans> held;  // one per model.held
   ParticleSystem particles;
   std::mt19937_64 rng;
+  // peels the maps as objects turn (heightspan.span_maps); shared by copies of a state on one thread
+  std::shared_ptr<SpanPeeler> peeler;
 };
 
 // The state at time 0: the ground's (make_ground_state), each held object's
 // map at its first pose with no material on it, no particles, the generator
-// seeded with the model's seed.
+// seeded with the model's seed, the peeler the options ask for (InputError
+// when OpenGL cannot be started for the OSMesa path).
 HeightSpanState make_heightspan_state(const HeightSpanModel& model, HeightField initial);
 
 // Material on every held object's spans (m^3).

@@ -47,7 +47,8 @@ void substep(const HeightSpanModel& model, const GroundParams& params, Underside
     const int o = model.held[k].object;
     const Eigen::Vector3d motion = to[o].position_m - from[o].position_m;
     ObjectSpans& spans = state->held[k];
-    report->resampled += move_spans(model, model.held[k], to[o], motion / dt_s, &spans, &state->particles, &state->rng)
+    report->resampled += move_spans(model, model.held[k], to[o], motion / dt_s, *state->peeler, &spans, &state->particles,
+                                     &state->rng)
                              .resampled;
     report->taken_up_m3 += take_up_ground(ground, &spans.map, &state->ground);
     ceiling.undersides.push_back(underside_of(spans.map, ground.grid, top_at(ground.objects[o], to[o])));

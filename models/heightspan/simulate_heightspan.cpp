@@ -37,7 +37,8 @@ std::vector<std::string> heightspan_stages(const HeightSpanModel& model, const G
   stages.push_back(osmesa && !model.ground_path.empty() ? "collision:osmesa" : "collision:cpu");
   stages.push_back("displacement");
   if (!model.held.empty()) {
-    stages.push_back("span-maps:cpu");
+    stages.push_back(model.options.span_maps == HeightSpanSpec::SpanMaps::kOsmesa ? "span-maps:osmesa"
+                                                                                 : "span-maps:cpu");
     stages.push_back("span-erosion");
   }
   bool erodes = false;

@@ -63,15 +63,15 @@ double carry_material(const SpanMap& old_map, const Pose& from, const Pose& to, 
 }  // namespace
 
 MotionReport move_spans(const HeightSpanModel& model, const HeldObject& held, const Pose& to,
-                        const Eigen::Vector3d& velocity_m_s, ObjectSpans* spans, ParticleSystem* particles,
-                        std::mt19937_64* rng) {
+                        const Eigen::Vector3d& velocity_m_s, SpanPeeler& peeler, ObjectSpans* spans,
+                        ParticleSystem* particles, std::mt19937_64* rng) {
   MotionReport report;
   if (spans->pose.orientation.angularDistance(to.orientation) <= kNoRotationRad) {
     translate(model, held, to, spans);
     return report;
   }
   const ObjectSpec& object = model.ground.objects[static_cast<std::size_t>(held.object)];
-  SpanMap map = peel_spans(transformed(object.body, to), model.map_grid(held, to));
+  SpanMap map = peeler.peel(transformed(object.body, to), model.map_grid(held, to));
   report.resampled = true;
   report.released_m3 = carry_material(spans->map, spans->pose, to, velocity_m_s, model.options.particle_spread_m_s,
                                       &map, particles, rng);

@@ -30,6 +30,7 @@ struct HeightSpanModel;
 struct HeldObject;
 struct ObjectSpans;
 struct ParticleSystem;
+class SpanPeeler;
 
 struct MotionReport {
   bool resampled = false;    // the object turned: peeled again
@@ -41,7 +42,7 @@ struct MotionReport {
 inline constexpr double kNoRotationRad = 1e-9;
 
 MotionReport move_spans(const HeightSpanModel& model, const HeldObject& held, const Pose& to,
-                        const Eigen::Vector3d& velocity_m_s, ObjectSpans* spans, ParticleSystem* particles,
-                        std::mt19937_64* rng);
+                        const Eigen::Vector3d& velocity_m_s, SpanPeeler& peeler, ObjectSpans* spans,
+                        ParticleSystem* particles, std::mt19937_64* rng);
 
 }  // namespace repose

@@ -54,6 +54,22 @@ TEST(SimulateHeightSpan, FramesAtTimeZeroAndEveryInterval) {
   EXPECT_EQ(frames, (std::vector<int>{0, 1, 2, 3}));  // 0, 0.5, 1.0, 1.5 s
 }
 
+TEST(SimulateHeightSpan, TheOsmesaSpanMapsGiveTheSameScoop) {
+  Scene s = scoop_scene();
+  const HeightSpanModel cpu_model = build_heightspan_model(s);
+  HeightSpanSection section = heightspan_section(s);
+  section.options.span_maps = HeightSpanSpec::SpanMaps::kOsmesa;
+  const HeightSpanModel gl_model = build_heightspan_model(with_heightspan(s, section));
+  const HeightSpanRun cpu = simulate_heightspan(cpu_model, default_params(cpu_model.ground), make_initial_height(s));
+  const HeightSpanRun gl = simulate_heightspan(gl_model, default_params(gl_model.ground), make_initial_height(s));
+  EXPECT_NE(std::find(gl.stages.begin(), gl.stages.end(), "span-maps:osmesa"), gl.stages.end());
+  EXPECT_LT(gl.max_abs_imbalance_m3, 1e-12 * gl.initial_m3);
+  const double held_max = *std::max_element(cpu.held_m3[0].begin(), cpu.held_m3[0].end());
+  for (std::size_t k = 0; k < cpu.held_m3[0].size(); ++k) {
+    EXPECT_NEAR(gl.held_m3[0][k], cpu.held_m3[0][k], 0.01 * held_max) << "step " << k;
+  }
+}
+
 TEST(SimulateHeightSpan, NothingFallsNoParticlesAreBuilt) {
   Scene s = testing::bed_scene(40, 40, 0.005, 0.01,
                                {testing::mesh_object("bucket", testing::bucket_mesh(), {key(0, 0.1, 0.1, 0.1)})}, 5);

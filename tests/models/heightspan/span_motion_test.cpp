@@ -23,7 +23,8 @@ struct Bucket {
     testing::fill_spans(&state.held[0].map, 0.01, 0.08);
   }
   MotionReport move(const Pose& to) {
-    return move_spans(model, model.held[0], to, Eigen::Vector3d::Zero(), &state.held[0], &state.particles, &state.rng);
+    return move_spans(model, model.held[0], to, Eigen::Vector3d::Zero(), *state.peeler, &state.held[0], &state.particles,
+                      &state.rng);
   }
 };
 
