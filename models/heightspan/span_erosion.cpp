@@ -1,6 +1,7 @@
 #include "models/heightspan/span_erosion.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -110,6 +111,97 @@ void add_ground_fluxes(const Columns& cols, const PassRule& rule, int i, int j, 
   }
 }
 
+// The surfaces' amounts and one pass's sums: what each gives and takes.
+struct Exchange {
+  const GroundModel& model;
+  SpanMap& map;
+  GroundState* ground;
+  const Columns& cols;
+  std::size_t n_spans, n_local;
+  // per surface: outflow, then inflow; spans first, then the columns' ground (and air)
+  std::vector<double> out, in, released_m, release_z;
+
+  Exchange(const GroundModel& m, SpanMap& sm, GroundState* g, const Columns& c)
+      : model(m), map(sm), ground(g), cols(c), n_spans(sm.spans.size()), n_local(c.local_count()),
+        out(n_spans + n_local), in(n_spans + n_local), released_m(n_local), release_z(n_local, -kInf) {}
+
+  std::size_t key(const Surface& s) const {
+    return static_cast<std::size_t>(s.kind == Kind::kSpan ? s.index : static_cast<std::int64_t>(n_spans) + s.index);
+  }
+  std::int64_t ground_cell(std::int64_t local) const {
+    const int i = static_cast<int>(local % cols.stride()) - 1, j = static_cast<int>(local / cols.stride()) - 1;
+    return model.cell(i + cols.off.di, j + cols.off.dj);
+  }
+  double& amount_of(const Surface& s) {
+    if (s.kind == Kind::kSpan) return map.spans[static_cast<std::size_t>(s.index)].material_m;
+    return ground->height.heights().data()[ground_cell(s.index)];
+  }
+
+  // a surface gives at most what it has, takes at most its room
+  void scale(std::vector<Flux>* fluxes) {
+    std::fill(out.begin(), out.end(), 0.0);
+    std::fill(in.begin(), in.end(), 0.0);
+    for (const Flux& f : *fluxes) out[key(f.from)] += f.amount_m;
+    for (Flux& f : *fluxes) {
+      const double has = amount_of(f.from), total = out[key(f.from)];
+      if (total > has) f.amount_m *= has / total;
+      if (f.to.kind != Kind::kAir) in[key(f.to)] += f.amount_m;
+    }
+    for (Flux& f : *fluxes) {
+      if (f.to.kind == Kind::kAir) continue;
+      const double room = std::max(0.0, f.to.room_m - f.to.level_m), total = in[key(f.to)];
+      if (total > room) f.amount_m *= room / total;
+    }
+  }
+
+  void apply(const std::vector<Flux>& fluxes, SpanErosionResult* result) {
+    const double area = model.grid.cell_area_m2();
+    for (const Flux& f : fluxes) {
+      if (!(f.amount_m > 0.0)) continue;
+      ++result->moves;
+      amount_of(f.from) -= f.amount_m;
+      if (f.from.kind == Kind::kGround) {
+        result->from_ground_m3 += f.amount_m * area;
+        ground->erosion.touch(ground_cell(f.from.index));
+      }
+      if (f.to.kind == Kind::kAir) {  // released after the passes
+        released_m[f.to.index] += f.amount_m;
+        release_z[f.to.index] = std::max(release_z[f.to.index], f.release_z_m);
+        result->to_particles_m3 += f.amount_m * area;
+        continue;
+      }
+      amount_of(f.to) += f.amount_m;
+      if (f.to.kind == Kind::kGround) {
+        result->to_ground_m3 += f.amount_m * area;
+        ground->erosion.touch(ground_cell(f.to.index));
+      }
+    }
+  }
+
+  // one particle per column the material left into
+  void release(const Eigen::Vector3d& velocity_m_s, double spread_m_s, ParticleSystem* particles,
+               std::mt19937_64* rng) const {
+    for (std::size_t l = 0; l < n_local; ++l) {
+      if (!(released_m[l] > 0.0)) continue;
+      const int i = static_cast<int>(l % cols.stride()) - 1, j = static_cast<int>(l / cols.stride()) - 1;
+      const Eigen::Vector3d at(map.grid.centre_x(i), map.grid.centre_y(j), release_z[l]);
+      particles->release({at, velocity_m_s, released_m[l] * model.grid.cell_area_m2()}, spread_m_s, rng);
+    }
+  }
+};
+
+// The columns with spans: [i0, i1] x [j0, j1] (empty when i1 < i0).
+std::array<int, 4> span_columns(const SpanMap& map) {
+  std::array<int, 4> box{map.grid.nx, -1, map.grid.ny, -1};
+  for (int j = 0; j < map.grid.ny; ++j) {
+    for (int i = 0; i < map.grid.nx; ++i) {
+      if (map.count(map.cell(i, j)) == 0) continue;
+      box = {std::min(box[0], i), std::max(box[1], i), std::min(box[2], j), std::max(box[3], j)};
+    }
+  }
+  return box;
+}
+
 }  // namespace
 
 SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& params,
@@ -123,27 +215,9 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   const PassRule rule{g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, kErosionToleranceFraction * g.cell_size_m,
                       model.options.near_ground_cells * g.cell_size_m};
   const Columns cols{map, ground->height, ground_offset(map.grid, g)};
-  const std::size_t n_spans = map.spans.size(), n_local = cols.local_count();
-  // per surface: outflow, then inflow; spans first, then the columns' ground (and air)
-  std::vector<double> out(n_spans + n_local), in(n_spans + n_local), released_m(n_local), release_z(n_local, -kInf);
-  auto key = [&](const Surface& s) { return s.kind == Kind::kSpan ? s.index : static_cast<std::int64_t>(n_spans) + s.index; };
-  auto ground_cell = [&](std::int64_t local) {
-    const int i = static_cast<int>(local % cols.stride()) - 1, j = static_cast<int>(local / cols.stride()) - 1;
-    return std::pair<int, int>{i + cols.off.di, j + cols.off.dj};
-  };
-  auto amount_of = [&](const Surface& s) -> double& {
-    if (s.kind == Kind::kSpan) return map.spans[static_cast<std::size_t>(s.index)].material_m;
-    const auto [gi, gj] = ground_cell(s.index);
-    return ground->height.at(gi, gj);
-  };
+  Exchange exchange(model.ground, map, ground, cols);
   // the columns with spans and one ring around them: nothing else can exchange with a span
-  int i0 = map.grid.nx, i1 = -1, j0 = map.grid.ny, j1 = -1;
-  for (int j = 0; j < map.grid.ny; ++j) {
-    for (int i = 0; i < map.grid.nx; ++i) {
-      if (map.count(map.cell(i, j)) == 0) continue;
-      i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
-    }
-  }
+  const auto [i0, i1, j0, j1] = span_columns(map);
   std::vector<Flux> fluxes;
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
@@ -155,51 +229,10 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
     }
     if (fluxes.empty()) break;
     result.passes = p + 1;
-    // a surface gives at most what it has, takes at most its room
-    std::fill(out.begin(), out.end(), 0.0);
-    std::fill(in.begin(), in.end(), 0.0);
-    for (const Flux& f : fluxes) out[key(f.from)] += f.amount_m;
-    for (Flux& f : fluxes) {
-      const double has = amount_of(f.from), total = out[key(f.from)];
-      if (total > has) f.amount_m *= has / total;
-      if (f.to.kind != Kind::kAir) in[key(f.to)] += f.amount_m;
-    }
-    for (Flux& f : fluxes) {
-      if (f.to.kind == Kind::kAir) continue;
-      const double room = std::max(0.0, f.to.room_m - f.to.level_m), total = in[key(f.to)];
-      if (total > room) f.amount_m *= room / total;
-    }
-    for (const Flux& f : fluxes) {
-      if (!(f.amount_m > 0.0)) continue;
-      ++result.moves;
-      amount_of(f.from) -= f.amount_m;
-      const double volume = f.amount_m * g.cell_area_m2();
-      if (f.from.kind == Kind::kGround) {
-        result.from_ground_m3 += volume;
-        const auto [gi, gj] = ground_cell(f.from.index);
-        ground->erosion.touch(model.ground.cell(gi, gj));
-      }
-      if (f.to.kind == Kind::kAir) {
-        released_m[f.to.index] += f.amount_m;
-        release_z[f.to.index] = std::max(release_z[f.to.index], f.release_z_m);
-        result.to_particles_m3 += volume;
-        continue;
-      }
-      amount_of(f.to) += f.amount_m;
-      if (f.to.kind == Kind::kGround) {
-        result.to_ground_m3 += volume;
-        const auto [gi, gj] = ground_cell(f.to.index);
-        ground->erosion.touch(model.ground.cell(gi, gj));
-      }
-    }
+    exchange.scale(&fluxes);
+    exchange.apply(fluxes, &result);
   }
-  // one particle per column the material left into
-  for (std::size_t l = 0; l < n_local; ++l) {
-    if (!(released_m[l] > 0.0)) continue;
-    const int i = static_cast<int>(l % cols.stride()) - 1, j = static_cast<int>(l / cols.stride()) - 1;
-    const Eigen::Vector3d at(map.grid.centre_x(i), map.grid.centre_y(j), release_z[l]);
-    particles->release({at, velocity_m_s, released_m[l] * g.cell_area_m2()}, model.options.particle_spread_m_s, rng);
-  }
+  exchange.release(velocity_m_s, model.options.particle_spread_m_s, particles, rng);
   return result;
 }
 
