@@ -16,8 +16,10 @@
 // its spans, named as the particle references name theirs),
 // mass_held_max_kg.<object> and volume_held_m3.<object>, and particles.*
 // (counts) and flows.* (m^3). Run::details["built"] lists what was built:
-// span maps (and by which path), the objects left on the ground path,
-// whether particles were made. With an output folder it writes
+// span maps (and by which path: heightspan.span_maps, cpu or osmesa depth
+// peeling), the objects left on the ground path, whether particles were
+// made; Run::stages the modules ("span-maps:cpu", "span-erosion",
+// "particles", ...). With an output folder it writes
 // held_mass.csv (per step: time, each held object's volume and mass, the
 // particles' volume, the ledger's imbalance) and, every frame_interval_s,
 // frames/frame_NNNN.png (frame_image.h) and frames/height_NNNN.npy (ground).
