@@ -80,6 +80,34 @@ TEST(HeightSpanStep, TiltedBucketDraggedThroughSandFills) {
   EXPECT_GT(held_m3(c.state), 0.0);  // still carrying some when lifted
 }
 
+TEST(HeightSpanStep, AScoopAlongAnAxisIsMirrorSymmetricAboutIt) {
+  // the bucket's centre on the line between rows 11 and 12: the ground must mirror across it
+  // (released particles get no random spread, which would break the symmetry)
+  Scene s = scoop(0.015, 0.06, 80.0, 0.15, 2);
+  HeightSpanSection section = heightspan_section(s);
+  section.options.particle_spread_m_s = 0.0;
+  const Checked c = run_checked(with_heightspan(s, section), "mirror");
+  const ArrayXXdR& h = c.state.ground.height.heights();
+  ASSERT_EQ(h.rows(), 24);
+  double worst = 0.0;
+  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT((h - 0.03).abs().maxCoeff(), 1e-3);  // it did dig
+}
+
+TEST(HeightSpanStep, ObjectsOnTheGroundPathDisplaceBesideAScoopingBucket) {
+  Scene s = scoop(0.015, 0.06, 80.0, 0.15, 3);
+  ObjectSpec ball = mesh_object("ball", make_sphere(0.015, 24), {key(0.0, 0.16, 0.06, 0.06), key(0.5, 0.16, 0.06, 0.035)});
+  s.objects.push_back(ball);
+  HeightSpanSection section = heightspan_section(s);
+  section.holds_material.erase("ball");  // convex: the ground path
+  s = with_heightspan(s, section);
+  const Checked c = run_checked(s, "bucket and ball");
+  EXPECT_EQ(build_heightspan_model(s).ground_path, std::vector<int>{1});
+  EXPECT_LT(c.state.ground.height.at(32, 12), 0.03 - 0.005);  // the ball's imprint (x 0.16, y 0.06)
+  EXPECT_GT(c.held_max_m3, 0.0);
+}
+
 TEST(HeightSpanStep, LevelBucketAtRestKeepsItsMaterialInPlace) {
   Scene s = bed_scene(40, 40, 0.005, 0.01, {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.1, 0.1, 0.08)})}, 30);
   const HeightSpanModel model = build_heightspan_model(s);
