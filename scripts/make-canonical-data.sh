@@ -9,6 +9,7 @@
 # second call only re-runs the scenes.
 #
 # usage: scripts/make-canonical-data.sh [NAME ...]     (default: every canonical run)
+#        NAME is a folder under data/: dem_indent, ref_bulldoze/seed2, ...
 # environment: REPOSE  the repose program (default: REPO/build-dem/bin/repose,
 #                      else REPO/build/bin/repose)
 #              RUNS    where full run folders go (default: REPO/runs/canonical)
@@ -27,7 +28,8 @@ if [[ -z "$repose" || ! -x "$repose" ]]; then
   exit 2
 fi
 
-# name -> scene (relative to the repository)
+# name -> scene (relative to the repository) and, for the scale-separated
+# references, the seed of the random bed (`--set seed=N`): NAME/seedN.
 declare -A scenes=(
   [dem_indent]=experiments/scenes/dem_indent.yaml
   [dem_indent_r3mm]=experiments/scenes/dem_indent_r3mm.yaml
@@ -35,7 +37,17 @@ declare -A scenes=(
   [dem_drag_box]=experiments/scenes/dem_drag_box.yaml
   [dem_pile]=experiments/scenes/dem_pile.yaml
 )
+seeds=(1 2 3)
+# the scale-separated references (issue 10): press bed, then drag bed, so
+# that scenes sharing a settled bed follow each other
+reference_scenes=(ref_indent_shallow ref_indent_deep ref_drag_sphere ref_bulldoze ref_cylinder_side ref_tilted_box)
 order=(dem_indent dem_indent_r3mm dem_drag dem_drag_box dem_pile)
+for seed in "${seeds[@]}"; do
+  for scene in "${reference_scenes[@]}"; do
+    scenes[$scene/seed$seed]=experiments/scenes/$scene.yaml
+    order+=("$scene/seed$seed")
+  done
+done
 if [[ $# -gt 0 ]]; then order=("$@"); fi
 
 # the files kept in data/NAME (the rest of the run folder is large or regenerable)
@@ -49,8 +61,11 @@ for name in "${order[@]}"; do
   fi
   echo "== $name: $scene"
   mkdir -p "$runs"
-  "$repose" run "$repo/$scene" --solver liggghts --out "$runs/$name" --force
+  set_seed=()
+  if [[ "$name" == */seed* ]]; then set_seed=(--set "seed=${name##*/seed}"); fi
+  nice -n 19 "$repose" run "$repo/$scene" --solver liggghts --out "$runs/$name" --force "${set_seed[@]}"
   target="$repo/data/$name"
+  mkdir -p "$(dirname "$target")"
   rm -rf "$target.tmp"
   mkdir -p "$target.tmp"
   for f in "${keep[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done

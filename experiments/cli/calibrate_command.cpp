@@ -18,6 +18,7 @@
 #include "validation/calibration/calibration_figures.h"
 #include "validation/calibration/calibration_fit.h"
 #include "validation/calibration/calibration_ladder.h"
+#include "validation/calibration/cross_validation.h"
 #include "validation/calibration/calibration_loader.h"
 #include "validation/calibration/calibration_problem.h"
 #include "validation/calibration/calibration_report.h"
@@ -52,6 +53,7 @@ void calibrate(const CalibrateOptions& options, int argc, char** argv, const Sol
   OutputDirectory out = OutputDirectory::open(options.out_dir, options.force);
   CalibrationFit fit;
   manifest.time_stage("fit", [&] { fit = fit_calibration(*problem, progress.callback()); });
+  manifest.time_stage("cross_validation", [&] { cross_validate(*problem, &fit, progress.callback()); });
   std::optional<Ladder> ladder;
   if (problem->spec().ladder) {
     manifest.time_stage("ladder", [&] { ladder = measure_ladder(*problem, fit.values, progress.callback()); });

@@ -257,6 +257,26 @@ TEST(Cli, RunTwiceGivesBitIdenticalInitialHeights) {
   EXPECT_EQ(a, read_all(cwd.path / "b" / "height_initial.npy"));
 }
 
+// --set changes a scene key before the scene is checked: another seed is
+// another random surface, the file's own seed the same one; a malformed or
+// unknown override is refused in one line before anything is written.
+TEST(Cli, RunSetOverridesASceneKeyAndIsCheckedLikeTheFile) {
+  TempDir cwd;
+  const fs::path scene = write_scene(cwd.path);
+  ASSERT_EQ(run_repose({"run", scene.string(), "--out", "a"}, cwd.path).exit_code, 0);
+  ASSERT_EQ(run_repose({"run", scene.string(), "--out", "same", "--set", "seed=7"}, cwd.path).exit_code, 0);
+  ASSERT_EQ(run_repose({"run", scene.string(), "--out", "other", "--set", "seed=8"}, cwd.path).exit_code, 0);
+  const std::string a = read_all(cwd.path / "a" / "height_initial.npy");
+  EXPECT_EQ(a, read_all(cwd.path / "same" / "height_initial.npy"));
+  EXPECT_NE(a, read_all(cwd.path / "other" / "height_initial.npy"));
+  for (const std::string& bad : {"seed", "no_such_key=1", "seed=-1"}) {
+    const Result r = run_repose({"run", scene.string(), "--out", "bad", "--set", bad}, cwd.path);
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
+    EXPECT_TRUE(is_one_line(r.err)) << r.err;
+    EXPECT_FALSE(fs::exists(cwd.path / "bad")) << bad;
+  }
+}
+
 TEST(Cli, RenderWritesAPngOfTheAskedSize) {
   TempDir cwd;
   const fs::path scene = write_scene(cwd.path);

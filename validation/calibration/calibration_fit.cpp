@@ -142,19 +142,30 @@ CalibrationFit fit_calibration(const CalibrationProblem& problem, const Progress
                                          problem.spec().solver.min_reciprocal_condition);
 
   for (const PreparedScene& scene : problem.scenes()) {
-    SceneError e;
-    e.name = scene.entry.name;
-    e.fit = scene.fit();
-    e.grain_diameter_m = scene.grain_diameter_m;
-    e.heuristic_initial_params = problem.run(scene, fit.initial_values);
-    e.heuristic_fitted = problem.run(scene, fit.values);
-    e.rmse_initial_m = surface_rmse_m(e.heuristic_initial_params, scene.reference_final, scene.entry.rmse_region);
-    e.rmse_fitted_m = surface_rmse_m(e.heuristic_fitted, scene.reference_final, scene.entry.rmse_region);
-    fit.scenes.push_back(std::move(e));
+    fit.scenes.push_back(scene_error(problem, scene, fit.initial_values, fit.values));
   }
   fit.heuristic_runs = problem.runs();
   fit.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return fit;
+}
+
+SceneError scene_error(const CalibrationProblem& problem, const PreparedScene& scene, const std::vector<double>& initial_values,
+                       const std::vector<double>& fitted_values) {
+  const auto& region = scene.entry.rmse_region;
+  SceneError e;
+  e.name = scene.entry.name;
+  e.fit = scene.fit();
+  e.grain_diameter_m = scene.grain_diameter_m;
+  e.heuristic_initial_params = problem.run(scene, initial_values);
+  e.heuristic_fitted = problem.run(scene, fitted_values);
+  e.rmse_initial_m = surface_rmse_m(e.heuristic_initial_params, scene.reference_final, region);
+  e.rmse_fitted_m = surface_rmse_m(e.heuristic_fitted, scene.reference_final, region);
+  e.scores_initial_params = score_change(scene.initial, e.heuristic_initial_params, scene.reference_final, region);
+  e.scores_fitted = score_change(scene.initial, e.heuristic_fitted, scene.reference_final, region);
+  e.noise = noise_floor(scene.seed_initial, scene.seed_final, region);
+  e.reference_features = change_features(scene.initial, scene.reference_final, region);
+  e.fitted_features = change_features(scene.initial, e.heuristic_fitted, region);
+  return e;
 }
 
 std::string determination(const CalibrationFit& fit, const CalibrationProblem& problem, std::size_t k) {

@@ -17,6 +17,7 @@
 #include "models/core/base/progress.h"
 #include "validation/calibration/calibration_problem.h"
 #include "validation/calibration/calibration_uncertainty.h"
+#include "validation/observables/surface_change.h"
 
 namespace repose {
 
@@ -38,6 +39,14 @@ struct SceneError {
   double grain_diameter_m = 0.0;     // 0 without a dem section
   HeightField heuristic_initial_params;  // final surfaces, for the figures
   HeightField heuristic_fitted;
+  // Δh against the reference's (mean over seeds), beside doing nothing (surface_change.h)
+  ChangeScores scores_initial_params, scores_fitted;
+  std::optional<NoiseFloor> noise;       // the reference's seed-to-seed noise (2 or more seeds)
+  ChangeFeatures reference_features, fitted_features;
+  // Fit scenes, when there are two or more: the fit on the other fit scenes
+  // (leave one scene out), scored here (cross_validation.h).
+  std::optional<ChangeScores> cross_validated;
+  std::vector<double> cross_validated_values;  // every parameter (SI) of that fit
 };
 
 struct CalibrationFit {
@@ -55,6 +64,10 @@ struct CalibrationFit {
 };
 
 CalibrationFit fit_calibration(const CalibrationProblem& problem, const ProgressFn& progress = {});
+
+// A scene's errors with the initial and the fitted parameters.
+SceneError scene_error(const CalibrationProblem& problem, const PreparedScene& scene, const std::vector<double>& initial_values,
+                       const std::vector<double>& fitted_values);
 
 // "determined", "poorly determined" (a standard error above a quarter of the
 // bound range) or "undetermined", for free parameter k.

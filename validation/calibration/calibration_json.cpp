@@ -15,6 +15,22 @@ using nlohmann::json;
 
 json optional_number(const std::optional<double>& x) { return x ? json(*x) : json(); }
 
+json scores_json(const ChangeScores& s) {
+  return {{"rmse_m", s.rmse_m}, {"rmse_nothing_m", s.rmse_nothing_m}, {"r2", s.r2}, {"skill", s.skill}};
+}
+
+json features_json(const ChangeFeatures& f) {
+  return {{"dug_m3", f.dug_m3},           {"heaped_m3", f.heaped_m3},     {"depth_m", f.depth_m},
+          {"depth_xy_m", {f.depth_x_m, f.depth_y_m}}, {"height_m", f.height_m},
+          {"height_xy_m", {f.height_x_m, f.height_y_m}}, {"rim_distance_m", f.rim_distance_m},
+          {"trench_width_m", f.trench_width_m}};
+}
+
+json noise_json(const std::optional<NoiseFloor>& n) {
+  if (!n) return json();
+  return {{"seeds", n->seeds}, {"rmse_m", n->rmse_m}, {"r2", n->r2}, {"pair_rmse_m", n->pair_rmse_m}};
+}
+
 json ladder_json(const Ladder& ladder) {
   json rungs = json::array();
   for (const LadderRung& r : ladder.rungs) {
@@ -64,6 +80,27 @@ json starts_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
   return starts;
 }
 
+json folders_json(const ReferenceSpec& r) {
+  json folders = json::array();
+  for (const std::string& d : r.directories) folders.push_back(repository_relative(d));
+  return folders;
+}
+
+// The cross-validated parameter values per left-out scene, in the parameters' units.
+json cross_validation_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
+  json folds = json::array();
+  for (const SceneError& e : fit.scenes) {
+    if (!e.cross_validated) continue;
+    json values = json::object();
+    for (std::size_t p = 0; p < problem.spec().parameters.size(); ++p) {
+      const ParameterSpec& spec = problem.spec().parameters[p];
+      values[spec.label()] = spec.in_file_units(e.cross_validated_values[p]);
+    }
+    folds.push_back({{"left_out", e.name}, {"values", values}, {"scores", scores_json(*e.cross_validated)}});
+  }
+  return folds;
+}
+
 json scenes_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
   json scenes = json::array();
   for (std::size_t k = 0; k < fit.scenes.size(); ++k) {
@@ -75,7 +112,18 @@ json scenes_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
                       {"rmse_fitted_m", e.rmse_fitted_m},
                       {"grain_diameter_m", e.grain_diameter_m},
                       {"rmse_fitted_over_grain_diameter",
-                       e.grain_diameter_m > 0.0 ? json(e.rmse_fitted_m / e.grain_diameter_m) : json()}});
+                       e.grain_diameter_m > 0.0 ? json(e.rmse_fitted_m / e.grain_diameter_m) : json()},
+                      {"reference_folders", folders_json(problem.scenes()[k].entry.reference)},
+                      {"scores_initial", scores_json(e.scores_initial_params)},
+                      {"scores_fitted", scores_json(e.scores_fitted)},
+                      {"noise_floor", noise_json(e.noise)},
+                      {"fitted_over_noise", e.noise && e.noise->rmse_m > 0 ? json(e.scores_fitted.rmse_m / e.noise->rmse_m) : json()},
+                      {"cross_validated", e.cross_validated ? scores_json(*e.cross_validated) : json()},
+                      {"cross_validated_over_noise", e.cross_validated && e.noise && e.noise->rmse_m > 0
+                                                         ? json(e.cross_validated->rmse_m / e.noise->rmse_m)
+                                                         : json()},
+                      {"features", {{"reference", features_json(e.reference_features)},
+                                    {"fitted", features_json(e.fitted_features)}}}});
   }
   return scenes;
 }
@@ -125,6 +173,7 @@ std::vector<std::string> write_calibration_json(const CalibrationOutputs& o,
                          {"best_start", fit.best_start},
                          {"starts", starts_json(problem, fit)},
                          {"scenes", scenes_json(problem, fit)},
+                         {"cross_validation", cross_validation_json(problem, fit)},
                          {"ladder", o.ladder ? ladder_json(*o.ladder) : json()}};
   std::ofstream out(path("calibration.json"), std::ios::binary);
   out << document.dump(2) << "\n";

@@ -129,13 +129,18 @@ ReferenceSpec read_reference(const Context& ctx, const YamlValue& value) {
   r.location = location_of(value);
   if (auto data = map.get("data")) {
     r.kind = ReferenceSpec::Kind::kData;
-    r.directory = existing(ctx, *data, true, "a folder of a reference run (height_initial.npy, height_final.npy)");
-    for (const char* file : {"height_initial.npy", "height_final.npy"}) {
-      if (!fs::exists(fs::path(r.directory) / file)) data->fail(fmt::format("a folder holding {}", file), r.directory);
+    // one folder, or a list of folders: the same scene on several random beds
+    const std::vector<YamlValue> folders = data->is_list() ? data->list(1) : std::vector<YamlValue>{*data};
+    for (const YamlValue& folder : folders) {
+      const std::string dir = existing(ctx, folder, true, "a folder of a reference run (height_initial.npy, height_final.npy)");
+      for (const char* file : {"height_initial.npy", "height_final.npy"}) {
+        if (!fs::exists(fs::path(dir) / file)) folder.fail(fmt::format("a folder holding {}", file), dir);
+      }
+      r.directories.push_back(dir);
     }
   } else if (auto run = map.get("liggghts")) {
     r.kind = ReferenceSpec::Kind::kLiggghts;
-    r.directory = resolve(ctx, run->string());
+    r.directories = {resolve(ctx, run->string())};
   } else {
     r.kind = ReferenceSpec::Kind::kHeuristic;
     const YamlValue h = *map.get("heuristic");

@@ -17,6 +17,7 @@
 #include "validation/calibration/calibration_parameters.h"
 #include "validation/calibration/reference_cost.h"
 #include "validation/observables/calibration_observables.h"
+#include "validation/observables/surface_change.h"
 #include "validation/particles/dem_section.h"
 
 namespace repose {
@@ -76,17 +77,30 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
     s.reference_final = run.field("height_final");
     return;
   }
-  if (ref.kind == ReferenceSpec::Kind::kLiggghts && !fs::exists(fs::path(ref.directory) / "height_final.npy")) {
-    report(progress, 0.0, fmt::format("LIGGGHTS reference of {} into {} (minutes)", s.entry.name, ref.directory));
-    fs::create_directories(ref.directory);
+  if (ref.kind == ReferenceSpec::Kind::kLiggghts && !fs::exists(fs::path(ref.directories.front()) / "height_final.npy")) {
+    const std::string& dir = ref.directories.front();
+    report(progress, 0.0, fmt::format("LIGGGHTS reference of {} into {} (minutes)", s.entry.name, dir));
+    fs::create_directories(dir);
     const auto liggghts = registry.get("liggghts").compile(s.scene);
-    liggghts->run(liggghts->default_values(), RunOptions{progress, ref.directory});
+    liggghts->run(liggghts->default_values(), RunOptions{progress, dir});
   }
-  s.initial = read_field((fs::path(ref.directory) / "height_initial.npy").string(), grid, "the reference's initial surface");
-  s.reference_final = read_field((fs::path(ref.directory) / "height_final.npy").string(), grid, "the reference's final surface");
-  if (const auto cost = read_run_cost(ref.directory)) {
-    s.reference_wall_time_s = cost->wall_s;
-    s.reference_cpu_time_s = cost->cpu_s;
+  double wall_s = 0.0, cpu_s = 0.0;
+  bool costed = true;
+  for (const std::string& dir : ref.directories) {
+    s.seed_initial.push_back(read_field((fs::path(dir) / "height_initial.npy").string(), grid, "the reference's initial surface"));
+    s.seed_final.push_back(read_field((fs::path(dir) / "height_final.npy").string(), grid, "the reference's final surface"));
+    const auto cost = read_run_cost(dir);
+    costed = costed && cost.has_value();
+    if (cost) {
+      wall_s += cost->wall_s / static_cast<double>(ref.directories.size());
+      cpu_s += cost->cpu_s / static_cast<double>(ref.directories.size());
+    }
+  }
+  s.initial = mean_field(s.seed_initial);
+  s.reference_final = mean_field(s.seed_final);
+  if (costed) {
+    s.reference_wall_time_s = wall_s;
+    s.reference_cpu_time_s = cpu_s;
   }
 }
 
@@ -189,6 +203,22 @@ const PreparedScene& CalibrationProblem::scene_named(const std::string& name) co
     if (s.entry.name == name) return s;
   }
   throw InputError(fmt::format("{}: ladder.scene: no scene named '{}'", spec_.source_path, name));
+}
+
+CalibrationProblem CalibrationProblem::holding_out(const std::string& name) const {
+  CalibrationProblem held = *this;
+  held.fit_residual_count_ = 0;
+  bool found = false;
+  for (PreparedScene& s : held.scenes_) {
+    if (s.entry.name == name) {
+      s.entry.role = CalibrationScene::Role::kHeldOut;
+      found = true;
+    }
+    if (s.fit()) held.fit_residual_count_ += s.residual_count;
+  }
+  REPOSE_DEMAND(found && held.fit_residual_count_ > 0);
+  held.runs_ = 0;
+  return held;
 }
 
 std::optional<std::size_t> CalibrationProblem::free_index(std::size_t p) const {

@@ -31,12 +31,14 @@ struct PreparedScene {
   // per calibration parameter: its index among solver->parameters(), or -1
   // when this scene has no such parameter (e.g. a material it does not hold)
   std::vector<int> parameter_index;
-  HeightField initial;             // the solver starts here: the reference's initial surface
-  HeightField reference_final;
+  HeightField initial;             // the solver starts here: the reference's initial surface (mean over seeds)
+  HeightField reference_final;     // mean over seeds
+  // Each seed's surfaces (one entry for a single reference run; none for a heuristic reference).
+  std::vector<HeightField> seed_initial, seed_final;
   std::vector<std::vector<double>> reference_values;  // per observable
   std::size_t residual_count = 0;
   double grain_diameter_m = 0.0;   // of the scene's dem section (0 without one)
-  std::optional<double> reference_wall_time_s;  // the LIGGGHTS run's, from its manifest
+  std::optional<double> reference_wall_time_s;  // one LIGGGHTS run's (the mean over seeds), from its manifest
   std::optional<double> reference_cpu_time_s;
   bool fit() const { return entry.role == CalibrationScene::Role::kFit; }
 };
@@ -53,6 +55,8 @@ class CalibrationProblem {
   const CalibrationSpec& spec() const { return spec_; }
   const std::vector<PreparedScene>& scenes() const { return scenes_; }
   const PreparedScene& scene_named(const std::string& name) const;
+  // The same problem with the scene `name` held out of the fit (cross-validation).
+  CalibrationProblem holding_out(const std::string& name) const;
   // Indices into spec().parameters of the free parameters.
   const std::vector<std::size_t>& free() const { return free_; }
   // Position of parameter p among the free ones, when it is free.

@@ -11,6 +11,7 @@
 #include "models/core/io/npy_io.h"
 #include "models/core/run/repository_path.h"
 #include "validation/observables/calibration_observables.h"
+#include "validation/observables/surface_change.h"
 
 namespace repose {
 
@@ -44,6 +45,44 @@ std::vector<ObservableSpec> transects_of(const PreparedScene& s) {
     lines.push_back(o);
   }
   return lines;
+}
+
+std::string ratio(double a, double b) { return b > 0.0 ? fmt::format("{:.2f}", a / b) : "-"; }
+
+// The table a report leads with: per scene, the reference's noise floor, the
+// error of doing nothing, the fitted model's error, R² and skill, and for fit
+// scenes the cross-validated (leave-one-scene-out) numbers.
+void write_scene_table(std::ostream& out, const CalibrationFit& fit) {
+  out << "## Per scene: error beside the reference's noise floor and doing nothing\n\n"
+         "Δh = final − start surface, over each scene's RMSE region. Noise floor: each seed's Δh against the mean of the "
+         "other seeds (what another DEM run scores). Skill = 1 − RMSE / RMSE of doing nothing. CV: leave-one-scene-out "
+         "(the fit without this scene, scored on it).\n\n"
+         "| scene | role | seeds | noise floor (mm) | noise R² | doing nothing (mm) | fitted (mm) | fitted / noise | R² | "
+         "skill | R² defaults | CV (mm) | CV / noise | CV R² | CV skill |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const SceneError& e : fit.scenes) {
+    const ChangeScores& f = e.scores_fitted;
+    const double noise = e.noise ? e.noise->rmse_m : 0.0;
+    const auto cv = e.cross_validated;
+    out << fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {:.2f} | {:.2f} | {:.2f} | {} | {} | {} | {} |\n", e.name,
+                       role_name(e.fit), e.noise ? std::to_string(e.noise->seeds) : "1", e.noise ? mm(noise) : "-",
+                       e.noise ? fmt::format("{:.2f}", e.noise->r2) : "-", mm(f.rmse_nothing_m), mm(f.rmse_m),
+                       ratio(f.rmse_m, noise), f.r2, f.skill, e.scores_initial_params.r2, cv ? mm(cv->rmse_m) : "-",
+                       cv ? ratio(cv->rmse_m, noise) : "-", cv ? fmt::format("{:.2f}", cv->r2) : "-",
+                       cv ? fmt::format("{:.2f}", cv->skill) : "-");
+  }
+  out << "\n| scene | depth ref / fitted (mm) | rim or heap height (mm) | its distance from the imprint (mm) | "
+         "trench width (mm) | dug (cm³) | heaped (cm³) |\n|---|---|---|---|---|---|---|\n";
+  const auto pair = [](double r, double m, double scale) { return fmt::format("{:.1f} / {:.1f}", r * scale, m * scale); };
+  for (const SceneError& e : fit.scenes) {
+    const ChangeFeatures& r = e.reference_features;
+    const ChangeFeatures& m = e.fitted_features;
+    out << fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", e.name, pair(r.depth_m, m.depth_m, 1e3),
+                       pair(r.height_m, m.height_m, 1e3), pair(r.rim_distance_m, m.rim_distance_m, 1e3),
+                       pair(r.trench_width_m, m.trench_width_m, 1e3), pair(r.dug_m3, m.dug_m3, 1e6),
+                       pair(r.heaped_m3, m.heaped_m3, 1e6));
+  }
+  out << "\n";
 }
 
 }  // namespace
@@ -124,6 +163,7 @@ void write_calibration_report(const CalibrationOutputs& o, const std::vector<std
   open_file(out, path);
   out << fmt::format("# Calibration: {}\n\n", problem.spec().name);
   out << fmt::format("From `{}`; command `{}`; git commit {}.\n\n", repository_relative(problem.spec().source_path), o.command_line, o.git_commit);
+  write_scene_table(out, fit);
   out << "## Parameters\n\n| parameter | initial | fitted | standard error | status | bounds |\n|---|---|---|---|---|---|\n";
   for (std::size_t p = 0; p < problem.spec().parameters.size(); ++p) {
     const ParameterSpec& spec = problem.spec().parameters[p];

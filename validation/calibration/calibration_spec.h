@@ -21,13 +21,15 @@ namespace repose {
 // Where a scene's reference surface comes from.
 struct ReferenceSpec {
   enum class Kind {
-    kData,       // a run folder holding height_initial.npy and height_final.npy on the scene's grid
-                 // (a canonical LIGGGHTS run, data/dem_*), with its manifest for its cost
+    kData,       // run folders holding height_initial.npy and height_final.npy on the scene's grid
+                 // (canonical LIGGGHTS runs, data/...), with their manifests for their cost;
+                 // several folders are the same scene on different random beds (seeds): the
+                 // reference is their mean and their spread its noise floor
     kLiggghts,   // a LIGGGHTS run made into `directory` when it holds no height_final.npy yet
     kHeuristic,  // the calibrated solver itself at known parameter values (synthetic references)
   };
   Kind kind = Kind::kData;
-  std::string directory;  // data, liggghts: absolute
+  std::vector<std::string> directories;  // data: one per seed; liggghts: one; absolute
   // heuristic: parameter values by full name ("ground.sand.alpha"), in the
   // parameter's unit; the others keep the scene's own values, and the
   // scene's initial surface is the start.

@@ -149,8 +149,10 @@ LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::st
   r.particle_steps_per_s =
       r.run.wall_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.wall_time_s : 0.0;
 
-  r.height_initial = surface_height(read_last_dump_frame(r.bed.dump_path).grains, grid, options.surface);
-  r.height_final = surface_height(last.grains, grid, options.surface);
+  SurfaceHeightOptions surface = options.surface;
+  surface.probe_radius_m = dem_of(scene)->surface_probe_radius_m;
+  r.height_initial = surface_height(read_last_dump_frame(r.bed.dump_path).grains, grid, surface);
+  r.height_final = surface_height(last.grains, grid, surface);
   write_npy_2d((dir / "height_initial.npy").string(), r.height_initial.heights());
   write_npy_2d((dir / "height_final.npy").string(), r.height_final.heights());
   write_field_csv((dir / "height_initial.csv").string(), r.height_initial, "height_m");

@@ -321,7 +321,9 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
   const long chunks = std::max(1L, std::lround(std::ceil(options.max_settle_time_s / options.settle_check_interval_s)));
 
   std::ostringstream s;
-  s << "# repose: settled bed for scene '" << scene.name << "' (generated; do not edit)\n"
+  // no scene name here: the script is the bed's cache key, and scenes that
+  // differ only in their objects (same grid, grains and seed) share a bed
+  s << "# repose: settled bed (generated; do not edit)\n"
     << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\n"
     << "communicate single vel yes\nunits si\n"
     << "region domain block " << box_block(d) << " units box\n"

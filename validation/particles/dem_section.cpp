@@ -58,6 +58,7 @@ void validate(const DemSpec& d) {
   require_positive(d.column_width_m, "column_width_m");
   require_positive(d.column_height_m, "column_height_m");
   require_non_negative(d.floor_rolling_friction, "floor_rolling_friction");
+  require_non_negative(d.surface_probe_radius_m, "surface_probe_radius_m");
   const double max_step = kMaxRayleighFraction * rayleigh_time_s(d);
   if (d.time_step_s > max_step) {
     throw FieldError("time_step_s",

@@ -66,6 +66,13 @@ struct DemSpec {
   enum class Floor { kSmooth, kRough };
   Floor floor = Floor::kSmooth;
   double floor_rolling_friction = 1.0;  // rough floor only
+
+  // How the reference's surface height field is read off the grains
+  // (surface_height.h): 0 takes the top of the grain over each cell centre;
+  // > 0 lowers a probe sphere of this radius onto the packing, a smooth
+  // surface whose cells are not each one grain's top. Scale-separated
+  // references use about a grain diameter.
+  double surface_probe_radius_m = 0.0;
 };
 
 
@@ -111,6 +118,7 @@ void dem_fields(Visitor& v, DemSpec& d) {
   using F = DemSpec::Floor;
   v.choice("floor", d.floor, std::vector<std::pair<std::string, F>>{{"smooth", F::kSmooth}, {"rough", F::kRough}});
   v.number("floor_rolling_friction", d.floor_rolling_friction, Range::any());
+  v.number("surface_probe_radius_m", d.surface_probe_radius_m, Range::any());
 }
 
 class DemSection final : public SceneSection {

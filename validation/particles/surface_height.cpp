@@ -14,9 +14,10 @@ HeightField surface_height(const GrainSet& grains, const Grid& grid, const Surfa
   const double h = grid.cell_size_m;
   const int n = options.samples_per_axis;
   REPOSE_DEMAND(n >= 1);
+  REPOSE_DEMAND(std::isfinite(options.probe_radius_m) && options.probe_radius_m >= 0.0);
   for (Eigen::Index g = 0; g < grains.size(); ++g) {
     const double x = grains.position_m(g, 0), y = grains.position_m(g, 1), z = grains.position_m(g, 2);
-    const double r = grains.radius_m[g];
+    const double r = grains.radius_m[g] + options.probe_radius_m;  // the grain as the probe's centre sees it
     // cells that overlap the grain's horizontal disk
     const int i0 = std::max(0, static_cast<int>(std::floor((x - r - grid.origin_x_m) / h)));
     const int i1 = std::min(grid.nx - 1, static_cast<int>(std::floor((x + r - grid.origin_x_m) / h)));
@@ -29,7 +30,7 @@ HeightField surface_height(const GrainSet& grains, const Grid& grid, const Surfa
             const double dx = grid.origin_x_m + (i + (si + 0.5) / n) * h - x;
             const double dy = grid.origin_y_m + (j + (sj + 0.5) / n) * h - y;
             const double d2 = dx * dx + dy * dy;
-            if (d2 < r * r) top(j, i) = std::max(top(j, i), z + std::sqrt(r * r - d2));
+            if (d2 < r * r) top(j, i) = std::max(top(j, i), z + std::sqrt(r * r - d2) - options.probe_radius_m);
           }
         }
       }
@@ -39,7 +40,7 @@ HeightField surface_height(const GrainSet& grains, const Grid& grid, const Surfa
   for (int j = 0; j < grid.ny; ++j) {
     for (int i = 0; i < grid.nx; ++i) {
       if (top(j, i) != kUncovered) {
-        out.at(i, j) = top(j, i);
+        out.at(i, j) = std::max(top(j, i), 0.0);  // a probe stops on the floor at the latest
         continue;
       }
       int covered = 0, neighbours = 0;

@@ -98,8 +98,10 @@ RigidReferenceResult run_rigid_reference(const RigidEngine& engine, const RigidI
   r.grain_count = static_cast<long>(r.grains_final.size());
   const double particle_steps = static_cast<double>(r.grain_count) * static_cast<double>(r.run.steps);
   r.particle_steps_per_cpu_s = r.run.cpu_time_s > 0.0 ? particle_steps / r.run.cpu_time_s : 0.0;
-  r.height_initial = surface_height(r.grains_initial, in.grid, options.surface);
-  r.height_final = surface_height(r.grains_final, in.grid, options.surface);
+  SurfaceHeightOptions surface = options.surface;
+  surface.probe_radius_m = in.dem.surface_probe_radius_m;
+  r.height_initial = surface_height(r.grains_initial, in.grid, surface);
+  r.height_final = surface_height(r.grains_final, in.grid, surface);
   r.material_per_area_final = material_per_area(r.grains_final, in.grid);
   for (const ObjectSpec& o : in.objects) {
     const TriangleMesh world_mesh = transformed(o.body, o.pose_at(in.time.duration_s));

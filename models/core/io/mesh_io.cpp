@@ -291,7 +291,10 @@ TriangleMesh read_mesh(const std::string& path) {
 
 void write_stl(const std::string& path, const TriangleMesh& mesh) {
   std::string out(80, '\0');
-  const std::string header = "repose binary STL";
+  // The header's text ends in a newline: LIGGGHTS reads a mesh file's first
+  // line as text to look for "solid", and a first line running on into the
+  // triangle data fails there whenever that data holds a quote byte.
+  const std::string header = "repose binary STL\n";
   std::copy(header.begin(), header.end(), out.begin());
   put_u32(out, static_cast<std::uint32_t>(mesh.F.rows()));
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {

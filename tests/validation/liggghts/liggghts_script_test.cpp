@@ -115,6 +115,12 @@ TEST(LiggghtsScript, BedScriptIsDeterministicAndHoldsTheContactModel) {
   EXPECT_NE(a.find("write_restart bed.restart"), std::string::npos);
   EXPECT_NE(a.find("dump_modify bed sort id"), std::string::npos);
 
+  // the bed (and its cache key) does not depend on the scene's name or objects:
+  // scenes on the same grid with the same grains and seed share one
+  Scene pressed = testing::small_dem_scene(true);
+  pressed.name = "another_scene";
+  EXPECT_EQ(a, bed_script(pressed));
+
   Scene other = scene;
   other.seed = 8;
   EXPECT_NE(a, bed_script(other));

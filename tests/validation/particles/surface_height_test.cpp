@@ -45,6 +45,43 @@ TEST(SurfaceHeight, MatchesAnAnalyticLatticeOfSpheres) {
   EXPECT_NEAR(h.max_height_m(), z0 + std::sqrt(r * r - 2 * (r / 6) * (r / 6)), 1e-12);
 }
 
+// The probe surface of the same lattice: a probe of radius p lowered at
+// (x, y) stops on the nearest grain, at z0 + sqrt((r + p)^2 - d^2) - p, with
+// d now up to r*sqrt(2) (the centre of a gap) for p >= (sqrt(2) - 1) r, so
+// every cell is covered and the surface dips less between grains than the
+// grains' own tops do.
+TEST(SurfaceHeight, ProbeSurfaceOfALatticeIsAnalyticAndBridgesTheGaps) {
+  const double r = 0.002, z0 = 0.01, p = r;
+  const int n = 8;
+  GrainSet grains;
+  grains.position_m.resize(n * n, 3);
+  grains.radius_m = Eigen::VectorXd::Constant(n * n, r);
+  for (int a = 0; a < n; ++a) {
+    for (int b = 0; b < n; ++b) grains.position_m.row(a * n + b) << (2 * a + 1) * r, (2 * b + 1) * r, z0;
+  }
+  const Grid grid{n * 6, n * 6, r / 3, 0.0, 0.0};
+  SurfaceHeightOptions probe;
+  probe.probe_radius_m = p;
+  const HeightField h = surface_height(grains, grid, probe);
+  const HeightField tops = surface_height(grains, grid);
+  const double R = r + p;
+  for (int j = 0; j < grid.ny; ++j) {
+    for (int i = 0; i < grid.nx; ++i) {
+      const double x = grid.centre_x(i), y = grid.centre_y(j);
+      const double cx = (2 * std::floor(x / (2 * r)) + 1) * r, cy = (2 * std::floor(y / (2 * r)) + 1) * r;
+      const double d2 = (x - cx) * (x - cx) + (y - cy) * (y - cy);
+      EXPECT_NEAR(h.at(i, j), z0 + std::sqrt(R * R - d2) - p, 1e-12) << i << "," << j;
+      EXPECT_LE(h.at(i, j), z0 + r + 1e-12);
+    }
+  }
+  // over the lattice, the probe surface varies less than the grains' tops
+  const auto spread = [](const HeightField& f) { return f.max_height_m() - f.heights().minCoeff(); };
+  EXPECT_LT(spread(h), 0.6 * spread(tops));
+  // probe radius 0 is the grains' tops exactly
+  probe.probe_radius_m = 0.0;
+  EXPECT_TRUE((surface_height(grains, grid, probe).heights() == tops.heights()).all());
+}
+
 TEST(SurfaceHeight, BareFloorIsZeroAndTheHighestGrainWins) {
   const Grid grid{10, 10, 0.001, 0.0, 0.0};
   GrainSet grains;

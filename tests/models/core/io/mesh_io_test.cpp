@@ -120,6 +120,20 @@ TEST_F(MeshIo, StlRoundTripKeepsAClosedManifoldAndItsVolume) {
   EXPECT_NEAR(signed_volume_m3(back), signed_volume_m3(sphere), 1e-6 * signed_volume_m3(sphere));
 }
 
+// LIGGGHTS reads the first line of an STL file as text (looking for
+// "solid"); it must end inside the 80-byte header, before triangle data whose
+// bytes may hold quotes that LIGGGHTS's parser rejects.
+TEST_F(MeshIo, BinaryStlFirstLineEndsInsideTheHeaderAndIsNotSolid) {
+  const std::string p = path("line.stl");
+  write_stl(p, transformed(make_sphere(0.03, 24), Pose{Eigen::Vector3d(0.045, 0.055, 0.054), Eigen::Quaterniond::Identity()}));
+  std::ifstream in(p, std::ios::binary);
+  std::string first_line;
+  std::getline(in, first_line);
+  EXPECT_LT(first_line.size(), 80u);
+  EXPECT_EQ(first_line.find('\0'), std::string::npos);
+  EXPECT_FALSE(first_line.starts_with("solid"));
+}
+
 TEST_F(MeshIo, BinaryStlWhoseHeaderSaysSolidIsStillBinary) {
   const std::string p = path("solid.stl");
   write_stl(p, make_box({1, 2, 3}));
