@@ -12,7 +12,9 @@
 //   ScoopGroundPath: the Scoop case with the bucket marked holds_material:
 //          false, so that only the ground model's collision, displacement
 //          and erosion run: the cost the height-span model adds is the
-//          difference.
+//          difference;
+//   TipOsmesa: the Tip case with the span maps peeled by OSMesa
+//          (heightspan.span_maps: osmesa) instead of the CPU.
 // Run:
 //   build/bin/heightspan_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // The state is rebuilt outside the timing when a case runs out of path.
@@ -48,13 +50,14 @@ Keyframe key(double t, double x, double z, double pitch_deg) {
   return k;
 }
 
-enum class Case { kScoop, kCarry, kTip, kScoopGroundPath };
+enum class Case { kScoop, kCarry, kTip, kScoopGroundPath, kTipOsmesa };
 
 class ScoopRun {
  public:
   explicit ScoopRun(Case c) {
-    const bool holds = c != Case::kScoopGroundPath;
+    const bool holds = c != Case::kScoopGroundPath, osmesa = c == Case::kTipOsmesa;
     if (!holds) c = Case::kScoop;
+    if (osmesa) c = Case::kTip;
     Scene scene;
     scene.seed = 1;
     scene.ground.grid = Grid{kCells, kCells, kCell, 0.0, 0.0};
@@ -76,6 +79,7 @@ class ScoopRun {
     scene.time.duration_s = t_carry + 36;
     HeightSpanSection section;
     section.holds_material["bucket"] = holds;
+    if (osmesa) section.options.span_maps = HeightSpanSpec::SpanMaps::kOsmesa;
     section.options.max_substep_angle_rad = 10 * M_PI / 180.0;  // one substep per tipping step
     scene = with_heightspan(with_ground_options(std::move(scene), GroundModelSpec{}), section);
     model_ = build_heightspan_model(scene);
@@ -134,10 +138,16 @@ void BM_ScoopGroundPathStep(benchmark::State& bench) {
   run.run(bench);
 }
 
+void BM_TipOsmesaStep(benchmark::State& bench) {
+  ScoopRun run(Case::kTipOsmesa);
+  run.run(bench);
+}
+
 BENCHMARK(BM_ScoopStep)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ScoopGroundPathStep)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_CarryStep)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TipStep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TipOsmesaStep)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace repose
