@@ -2,6 +2,7 @@
 
 #include "models/core/solver/initial_solver.h"
 #include "models/ground/ground_solver.h"
+#include "models/heightspan/heightspan_solver.h"
 #include "models/tearing/tearing_solver.h"
 #include "models/snow/snow_solver.h"
 #include "models/terrain/terrain_solver.h"
@@ -16,6 +17,7 @@ namespace {
 SolverRegistry make_registry() {
   SolverRegistry registry;
   registry.add(std::make_shared<GroundSolver>());
+  registry.add(std::make_shared<HeightSpanSolver>());
   registry.add(std::make_shared<LiggghtsSolver>());
   registry.add(std::make_shared<BulletSolver>());
   registry.add(std::make_shared<OdeSolver>());

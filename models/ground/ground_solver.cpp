@@ -12,6 +12,7 @@
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_section.h"
+#include "models/ground/material_parameters.h"
 #include "models/ground/simulate_ground.h"
 #include "models/ground/streaks.h"
 #include "models/ground/substep_count.h"
@@ -19,13 +20,6 @@
 namespace repose {
 
 namespace {
-
-enum class Field { kAlpha, kReposeAngle, kSigma };
-
-struct MaterialParameter {
-  std::string material;
-  Field field;
-};
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
@@ -63,21 +57,16 @@ void add_measures(Run& run, const GroundRun& g, const Scene& scene) {
 class CompiledGround final : public CompiledSolver {
  public:
   explicit CompiledGround(const Scene& scene)
-      : scene_(scene), model_(build_ground_model(scene)), initial_(make_initial_height(scene)) {
+      : scene_(scene), model_(build_ground_model(scene)), initial_(make_initial_height(scene)), parameters_(model_) {
     check_counts(model_);  // substeps and coarse patches, so that `check` refuses what `run` would
-    for (const Material& m : model_.materials) {
-      const bool seen = std::any_of(targets_.begin(), targets_.end(),
-                                    [&](const MaterialParameter& p) { return p.material == m.name; });
-      if (!seen) declare(m);
-    }
   }
 
-  const std::vector<ParameterInfo>& parameters() const override { return parameters_; }
+  const std::vector<ParameterInfo>& parameters() const override { return parameters_.infos(); }
 
   Run run(const std::vector<double>& values_si, const RunOptions& options) const override {
-    check_values(parameters_, values_si, "ground");
+    check_values(parameters_.infos(), values_si, "ground");
     const Stopwatch clock;
-    const GroundParams params = params_for(values_si);
+    const GroundParams params = parameters_.params_for(model_, values_si);
     const GroundRun g = simulate_ground(model_, params, initial_, options.progress);
     Run run;
     run.solver = "ground";
@@ -91,38 +80,10 @@ class CompiledGround final : public CompiledSolver {
   }
 
  private:
-  void declare(const Material& m) {
-    const double deg = std::numbers::pi / 180.0;
-    auto add = [&](const std::string& field, Field f, const std::string& unit, double si_per_unit, double lo,
-                   double hi, double value, const std::string& what) {
-      parameters_.push_back({m.name + "." + field, unit, si_per_unit, lo, hi, value, what});
-      targets_.push_back({m.name, f});
-    };
-    add("alpha", Field::kAlpha, "1", 1.0, 0.0, 1.0, m.alpha, "fraction of the intersected height displaced");
-    add("repose_angle_deg", Field::kReposeAngle, "deg", deg, 1e-6 * deg, 90.0 * deg, m.repose_angle_rad,
-        "angle of repose: steeper slopes erode");
-    add("sigma", Field::kSigma, "1", 1.0, 1e-9, kSigmaMax, m.sigma, "fraction of the excess moved per erosion pass");
-  }
-
-  GroundParams params_for(const std::vector<double>& values_si) const {
-    GroundParams params = default_params(model_);
-    for (std::size_t k = 0; k < targets_.size(); ++k) {
-      for (Material& m : params.materials) {
-        if (m.name != targets_[k].material) continue;
-        if (targets_[k].field == Field::kAlpha) m.alpha = values_si[k];
-        if (targets_[k].field == Field::kReposeAngle) m.repose_angle_rad = values_si[k];
-        if (targets_[k].field == Field::kSigma) m.sigma = values_si[k];
-      }
-    }
-    validate(params, model_);
-    return params;
-  }
-
   Scene scene_;
   GroundModel model_;
   HeightField initial_;
-  std::vector<ParameterInfo> parameters_;
-  std::vector<MaterialParameter> targets_;  // per parameter
+  MaterialParameters parameters_;
 };
 
 }  // namespace

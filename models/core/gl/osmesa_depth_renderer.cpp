@@ -32,21 +32,9 @@ double z_of(double depth, ViewFrom view, DepthRange range) {
   return view == ViewFrom::kBelow ? range.z_min_m + depth * span : range.z_max_m - depth * span;
 }
 
-// Vertices in normalised device coordinates of the tile, computed in double
-// relative to the tile so that float keeps sub-pixel precision on any grid:
-// cell centre (i + 0.5, j + 0.5) lands on the pixel centre, z on 2d - 1.
 std::vector<float> device_coordinates(const TriangleMesh& mesh, const Grid& grid, const Tile& tile, ViewFrom view,
                                       DepthRange range) {
-  std::vector<float> out(static_cast<std::size_t>(mesh.V.rows()) * 3);
-  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
-    const double u = (mesh.V(v, 0) - grid.origin_x_m) / grid.cell_size_m - tile.i0;
-    const double w = (mesh.V(v, 1) - grid.origin_y_m) / grid.cell_size_m - tile.j0;
-    const std::size_t k = static_cast<std::size_t>(v) * 3;
-    out[k + 0] = static_cast<float>(2.0 * u / tile.width - 1.0);
-    out[k + 1] = static_cast<float>(2.0 * w / tile.height - 1.0);
-    out[k + 2] = static_cast<float>(2.0 * depth_of(mesh.V(v, 2), view, range) - 1.0);
-  }
-  return out;
+  return depth_device_coordinates(mesh, grid, tile.i0, tile.j0, tile.width, tile.height, view, range);
 }
 
 void draw_meshes(const std::vector<TriangleMesh>& meshes, const Grid& grid, const Tile& tile, ViewFrom view,
@@ -79,7 +67,37 @@ void draw_ground_depth(const HeightField& ground, const Tile& tile, ViewFrom vie
   glDepthFunc(GL_LESS);
 }
 
-void set_depth_only_state() {
+void validate(const Grid& grid, DepthRange range) {
+  if (!(grid.nx >= 1 && grid.ny >= 1 && grid.cell_size_m > 0.0 && std::isfinite(grid.cell_size_m))) {
+    throw InputError("depth image: the grid needs nx, ny >= 1 and a positive cell size, got " +
+                     std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " cells of " +
+                     std::to_string(grid.cell_size_m) + " m");
+  }
+  if (!(std::isfinite(range.z_min_m) && std::isfinite(range.z_max_m) && range.z_max_m > range.z_min_m)) {
+    throw InputError("depth image: the depth range needs finite z_min_m < z_max_m, got [" +
+                     std::to_string(range.z_min_m) + ", " + std::to_string(range.z_max_m) + "]");
+  }
+}
+
+}  // namespace
+
+// Computed in double relative to the pixel window so that float keeps
+// sub-pixel precision on any grid.
+std::vector<float> depth_device_coordinates(const TriangleMesh& mesh, const Grid& grid, int i0, int j0, int width,
+                                            int height, ViewFrom view, DepthRange range) {
+  std::vector<float> out(static_cast<std::size_t>(mesh.V.rows()) * 3);
+  for (Eigen::Index v = 0; v < mesh.V.rows(); ++v) {
+    const double u = (mesh.V(v, 0) - grid.origin_x_m) / grid.cell_size_m - i0;
+    const double w = (mesh.V(v, 1) - grid.origin_y_m) / grid.cell_size_m - j0;
+    const std::size_t k = static_cast<std::size_t>(v) * 3;
+    out[k + 0] = static_cast<float>(2.0 * u / width - 1.0);
+    out[k + 1] = static_cast<float>(2.0 * w / height - 1.0);
+    out[k + 2] = static_cast<float>(2.0 * depth_of(mesh.V(v, 2), view, range) - 1.0);
+  }
+  return out;
+}
+
+void set_depth_only_gl_state() {
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   glMatrixMode(GL_MODELVIEW);
@@ -98,20 +116,6 @@ void set_depth_only_state() {
   glClearStencil(0);
   glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
 }
-
-void validate(const Grid& grid, DepthRange range) {
-  if (!(grid.nx >= 1 && grid.ny >= 1 && grid.cell_size_m > 0.0 && std::isfinite(grid.cell_size_m))) {
-    throw InputError("depth image: the grid needs nx, ny >= 1 and a positive cell size, got " +
-                     std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " cells of " +
-                     std::to_string(grid.cell_size_m) + " m");
-  }
-  if (!(std::isfinite(range.z_min_m) && std::isfinite(range.z_max_m) && range.z_max_m > range.z_min_m)) {
-    throw InputError("depth image: the depth range needs finite z_min_m < z_max_m, got [" +
-                     std::to_string(range.z_min_m) + ", " + std::to_string(range.z_max_m) + "]");
-  }
-}
-
-}  // namespace
 
 OsmesaDepthRenderer::OsmesaDepthRenderer(int max_tile_px) : context_(1, 1) {
   REPOSE_DEMAND(max_tile_px >= 1);
@@ -152,7 +156,7 @@ GroundContactImage OsmesaDepthRenderer::render_tiles(const std::vector<TriangleM
     for (int i0 = 0; i0 < grid.nx; i0 += tile_px_) {
       const Tile tile{i0, j0, std::min(tile_px_, grid.nx - i0), std::min(tile_px_, grid.ny - j0)};
       context_.make_current(tile.width, tile.height);
-      set_depth_only_state();
+      set_depth_only_gl_state();
       if (ground != nullptr) {
         draw_ground_depth(*ground, tile, view, range);
         // mark every pixel where an object fragment passes the depth test

@@ -44,6 +44,18 @@ struct GroundContactImage {
   ArrayXXu8R object_nearer;
 };
 
+// Vertices of `mesh` in normalised device coordinates of the pixel window
+// [i0, i0 + width) x [j0, j0 + height) of `grid`: #V x 3 floats, cell centre
+// (i + 0.5, j + 0.5) on the pixel centre, depth d of z (above) on 2d - 1.
+// Shared by the renderers that draw depth images (osmesa_depth_peeler.h).
+std::vector<float> depth_device_coordinates(const TriangleMesh& mesh, const Grid& grid, int i0, int j0, int width,
+                                            int height, ViewFrom view, DepthRange range);
+
+// The GL state of a depth-only render: identity matrices, no culling,
+// lighting, blending or stencil, colour writes off, depth test LESS; clears
+// the depth (to 1) and stencil buffers of the current context.
+void set_depth_only_gl_state();
+
 class OsmesaDepthRenderer {
  public:
   // max_tile_px: the largest tile side rendered at once (clamped to the

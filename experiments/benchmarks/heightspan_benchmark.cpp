@@ -1,0 +1,155 @@
+// Speed of the height-span model (issue 12): one step of a scoop on a
+// 512 x 512 ground (5 mm cells, a 5 cm bed) with the scoop scenes' bucket
+// scaled to 64 x 64 cells (32 cm across, 20 cm high). Target: at most 2 ms
+// median per step on one core. Cases:
+//   Scoop: tilted 80 deg (mouth forward), its lowest edge 4 cm deep, dragged
+//          one cell per step: collision, take-up, displacement, ground and
+//          span erosion every step, the load growing;
+//   Carry: the same bucket, loaded by a scoop, lifted and carried level one
+//          cell per step (span erosion on a settled load, no contact);
+//   Tip:   the loaded bucket turning 5 deg per step past the angle of repose
+//          (peeled again every step, material re-sampled, particles);
+//   ScoopGroundPath: the Scoop case with the bucket marked holds_material:
+//          false, so that only the ground model's collision, displacement
+//          and erosion run: the cost the height-span model adds is the
+//          difference;
+//   TipOsmesa: the Tip case with the span maps peeled by OSMesa
+//          (heightspan.span_maps: osmesa) instead of the CPU.
+// Run:
+//   build/bin/heightspan_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// The state is rebuilt outside the timing when a case runs out of path.
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <string>
+
+#include "models/core/config/scene.h"
+#include "models/core/io/mesh_io.h"
+#include "models/ground/collision.h"
+#include "models/ground/ground_params.h"
+#include "models/ground/ground_section.h"
+#include "models/heightspan/heightspan_model.h"
+#include "models/heightspan/heightspan_section.h"
+#include "models/heightspan/heightspan_state.h"
+#include "models/heightspan/heightspan_step.h"
+
+namespace repose {
+namespace {
+
+constexpr double kCell = 0.005;
+constexpr int kCells = 512;
+constexpr double kBed = 0.05;
+constexpr double kScale = 4.0;  // the 8 cm bucket to 32 cm: 64 cells
+
+Keyframe key(double t, double x, double z, double pitch_deg) {
+  Keyframe k;
+  k.time_s = t;
+  k.pose.position_m = Eigen::Vector3d(x, 0.5 * kCells * kCell, z);
+  k.pose.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(pitch_deg * M_PI / 180.0, Eigen::Vector3d::UnitY()));
+  return k;
+}
+
+enum class Case { kScoop, kCarry, kTip, kScoopGroundPath, kTipOsmesa };
+
+class ScoopRun {
+ public:
+  explicit ScoopRun(Case c) {
+    const bool holds = c != Case::kScoopGroundPath, osmesa = c == Case::kTipOsmesa;
+    if (!holds) c = Case::kScoop;
+    if (osmesa) c = Case::kTip;
+    Scene scene;
+    scene.seed = 1;
+    scene.ground.grid = Grid{kCells, kCells, kCell, 0.0, 0.0};
+    scene.ground.initial.height_m = kBed;
+    ObjectSpec bucket;
+    bucket.name = "bucket";
+    bucket.shape = ObjectSpec::Shape::kMesh;
+    bucket.body = scaled(read_mesh(std::string(REPOSE_SOURCE_DIR) + "/experiments/meshes/bucket.obj"),
+                         Eigen::Vector3d::Constant(kScale));
+    // tilted 80 deg the lowest edge is 0.159 m below the centre
+    const double dig_z = kBed - 0.04 + 0.159, high_z = kBed + 0.3;
+    const double x0 = 0.4, t_scoop = 200, t_lift = t_scoop + 20, t_carry = t_lift + 200;
+    bucket.keyframes = {key(0, x0, dig_z, 80), key(t_scoop, x0 + t_scoop * kCell, dig_z, 80),
+                        key(t_lift, x0 + t_scoop * kCell, high_z, 0),
+                        key(t_carry, x0 + (t_scoop + 200) * kCell, high_z, 0),
+                        key(t_carry + 36, x0 + (t_scoop + 200) * kCell, high_z, 180)};
+    scene.objects = {bucket};
+    scene.time.step_s = 1.0;
+    scene.time.duration_s = t_carry + 36;
+    HeightSpanSection section;
+    section.holds_material["bucket"] = holds;
+    if (osmesa) section.options.span_maps = HeightSpanSpec::SpanMaps::kOsmesa;
+    section.options.max_substep_angle_rad = 10 * M_PI / 180.0;  // one substep per tipping step
+    scene = with_heightspan(with_ground_options(std::move(scene), GroundModelSpec{}), section);
+    model_ = build_heightspan_model(scene);
+    params_ = default_params(model_.ground);
+    renderer_ = make_cpu_underside_renderer();
+    first_ = c == Case::kScoop ? 1 : c == Case::kCarry ? static_cast<int>(t_lift) : static_cast<int>(t_carry);
+    last_ = c == Case::kScoop ? static_cast<int>(t_scoop) : c == Case::kCarry ? static_cast<int>(t_carry)
+                                                                               : static_cast<int>(t_carry + 36);
+    reset();
+  }
+  void reset() {
+    if (!start_) {  // run up to the case's first step once, then start every pass from there
+      HeightSpanState state = make_heightspan_state(model_, HeightField(model_.ground.grid, kBed));
+      while (state.ground.step_index < first_) step(model_, params_, *renderer_, &state);
+      start_ = std::make_unique<HeightSpanState>(std::move(state));
+    }
+    state_ = *start_;
+  }
+  void run(benchmark::State& bench) {
+    for (auto _ : bench) {
+      if (state_.ground.step_index >= last_) {
+        bench.PauseTiming();
+        reset();
+        bench.ResumeTiming();
+      }
+      step(model_, params_, *renderer_, &state_);
+    }
+    bench.counters["held_m3"] = held_m3(state_);
+    if (!state_.held.empty()) bench.counters["spans"] = static_cast<double>(state_.held[0].map.spans.size());
+  }
+
+ private:
+  HeightSpanModel model_;
+  GroundParams params_;
+  std::unique_ptr<UndersideRenderer> renderer_;
+  std::unique_ptr<HeightSpanState> start_;
+  HeightSpanState state_;
+  int first_ = 0, last_ = 0;
+};
+
+void BM_ScoopStep(benchmark::State& bench) {
+  ScoopRun run(Case::kScoop);
+  run.run(bench);
+}
+void BM_CarryStep(benchmark::State& bench) {
+  ScoopRun run(Case::kCarry);
+  run.run(bench);
+}
+void BM_TipStep(benchmark::State& bench) {
+  ScoopRun run(Case::kTip);
+  run.run(bench);
+}
+
+void BM_ScoopGroundPathStep(benchmark::State& bench) {
+  ScoopRun run(Case::kScoopGroundPath);
+  run.run(bench);
+}
+
+void BM_TipOsmesaStep(benchmark::State& bench) {
+  ScoopRun run(Case::kTipOsmesa);
+  run.run(bench);
+}
+
+BENCHMARK(BM_ScoopStep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ScoopGroundPathStep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CarryStep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TipStep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TipOsmesaStep)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace repose
+
+BENCHMARK_MAIN();

@@ -1,0 +1,40 @@
+#pragma once
+// A held object against the ground (the height-span paper, 2.2 and 2.3):
+// the collision test uses the HS map's lowest span bottoms as the object's
+// underside (the ground model's Z-buffer from below), and the material the
+// object meets goes two ways:
+//   - the ground above the top of the lowest span (and above each higher
+//     span's top, up to the span above it) goes onto that span: the object
+//     scoops it (a bucket pressed into sand or dragged through it fills);
+//     ground reaching into a higher span's solid is pushed onto that span's
+//     top (material never lies inside the object);
+//   - what is left between the lowest span's bottom and top is the ground
+//     model's intersection, compressed and displaced as the ground model
+//     does (models/ground/displacement.h), by the caller.
+// Departure: the map samples the object at its own cell centres, which lie
+// within half a cell of the ground's (the map moves with the object); each
+// map cell stands for the ground cell holding its centre.
+
+#include "models/ground/collision.h"
+#include "models/heightspan/span_map.h"
+
+namespace repose {
+
+struct GroundModel;
+struct GroundState;
+
+// The ground cell holding map cell (i, j)'s centre is (i + di, j + dj).
+struct CellOffset {
+  int di = 0, dj = 0;
+};
+CellOffset ground_offset(const Grid& map, const Grid& ground);
+
+// The lowest span bottoms over the ground cells the map covers; empty when
+// the map has no span over the grid. top_m: the object's highest point.
+Underside underside_of(const SpanMap& map, const Grid& ground, double top_m);
+
+// Moves the ground above the spans' tops onto them (see above); returns
+// the volume moved (m^3). Cells that changed join the erosion memory.
+double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state);
+
+}  // namespace repose

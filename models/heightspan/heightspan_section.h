@@ -1,0 +1,76 @@
+#pragma once
+// The height-span model's section of a scene (`heightspan:`): its options
+// (not fitted) and which objects hold material. The materials, alpha, theta,
+// sigma and En, are the ground model's (`ground_model:`, read beside this
+// one); the spans carry the ground's base material (heightspan_model.h).
+//
+//   heightspan:
+//     near_ground_cells: 1.0        # material on a span whose top is at most this many cells above the
+//                                   # ground beside it slides onto the ground; higher, it falls as particles
+//     max_substep_cells: 1.0        # substeps so that no object moves more than this many cells per substep
+//     max_substep_angle_deg: 5      # ... nor turns more than this per substep
+//     bulk_density_kg_m3: 1600      # to report held material as mass (LIGGGHTS reports kg)
+//     particle_spread_m_s: 0.02     # std. dev. of the horizontal velocity added to released particles
+//     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
+//     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
+//     holds_material: {bucket: true, plate: true, ball: false}
+//                                   # per object; absent: meshes that are not convex hold material
+//
+// The section is optional: a scene without it runs with the defaults.
+
+#include <map>
+#include <string>
+
+#include "models/core/config/scene.h"
+#include "models/core/config/scene_section.h"
+#include "models/core/config/yaml_reader.h"
+
+namespace repose {
+
+struct HeightSpanSpec {
+  double near_ground_cells = 1.0;   // [0, 1e6]
+  double max_substep_cells = 1.0;   // (0.01, 1e6]
+  double max_substep_angle_rad = 0.08726646259971647;  // 5 deg, [0.01, 180] deg
+  double bulk_density_kg_m3 = 1600.0;  // (0, 1e5]
+  double particle_spread_m_s = 0.02;   // [0, 100]
+  double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
+  enum class SpanMaps { kCpu, kOsmesa };
+  SpanMaps span_maps = SpanMaps::kCpu;
+};
+
+// Throws FieldError naming the field and the rule; the loader and the model
+// call this one rule.
+void validate(const HeightSpanSpec& spec);
+
+template <class Visitor>
+void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
+  v.number("near_ground_cells", s.near_ground_cells, Range::any());
+  v.number("max_substep_cells", s.max_substep_cells, Range::any());
+  v.angle_deg("max_substep_angle_deg", s.max_substep_angle_rad, Range::any());
+  v.number("bulk_density_kg_m3", s.bulk_density_kg_m3, Range::any());
+  v.number("particle_spread_m_s", s.particle_spread_m_s, Range::any());
+  v.number("frame_interval_s", s.frame_interval_s, Range::any());
+  using M = HeightSpanSpec::SpanMaps;
+  v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});
+}
+
+class HeightSpanSection final : public SceneSection {
+ public:
+  static constexpr const char* kKey = "heightspan";
+
+  HeightSpanSpec options;
+  std::map<std::string, bool> holds_material;  // by object name; absent: decided by shape
+
+  void write_yaml(YAML::Emitter& out) const override;
+  std::string summary() const override;
+};
+
+// The scene's section, or the defaults when it has none.
+const HeightSpanSection& heightspan_section(const Scene& scene);
+// A copy of the scene with this section.
+Scene with_heightspan(Scene scene, const HeightSpanSection& section);
+
+std::shared_ptr<const SceneSection> read_heightspan_section(const YamlValue& value, const Scene& common);
+SectionType heightspan_section_type();
+
+}  // namespace repose

@@ -1,0 +1,127 @@
+#include "models/heightspan/heightspan_step.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "models/core/base/error.h"
+#include "models/ground/displacement.h"
+#include "models/ground/ground_params.h"
+#include "models/ground/substep_count.h"
+#include "models/heightspan/ground_contact.h"
+#include "models/heightspan/heightspan_model.h"
+#include "models/heightspan/heightspan_state.h"
+#include "models/heightspan/span_motion.h"
+
+namespace repose {
+
+namespace {
+
+double top_at(const ObjectSpec& object, const Pose& pose) {
+  const Eigen::Vector3d up = pose.orientation.conjugate() * Eigen::Vector3d::UnitZ();
+  return (object.body.V * up).maxCoeff() + pose.position_m.z();
+}
+
+void accumulate(const ErosionResult& e, ErosionResult* sum) {
+  sum->passes += e.passes;
+  sum->pair_visits += e.pair_visits;
+  sum->moves += e.moves;
+}
+
+void accumulate(const SpanErosionResult& e, SpanErosionResult* sum) {
+  sum->passes += e.passes;
+  sum->moves += e.moves;
+  sum->to_ground_m3 += e.to_ground_m3;
+  sum->from_ground_m3 += e.from_ground_m3;
+  sum->to_particles_m3 += e.to_particles_m3;
+}
+
+void substep(const HeightSpanModel& model, const GroundParams& params, UndersideRenderer& renderer,
+             const std::vector<Pose>& from, const std::vector<Pose>& to, double dt_s, HeightSpanState* state,
+             HeightSpanStepReport* report) {
+  const GroundModel& ground = model.ground;
+  Ceiling ceiling;
+  std::vector<Eigen::Vector3d> motions;
+  for (std::size_t k = 0; k < model.held.size(); ++k) {
+    const int o = model.held[k].object;
+    const Eigen::Vector3d motion = to[o].position_m - from[o].position_m;
+    ObjectSpans& spans = state->held[k];
+    report->resampled += move_spans(model, model.held[k], to[o], motion / dt_s, *state->peeler, &spans, &state->particles,
+                                     &state->rng)
+                             .resampled;
+    report->taken_up_m3 += take_up_ground(ground, &spans.map, &state->ground);
+    ceiling.undersides.push_back(underside_of(spans.map, ground.grid, top_at(ground.objects[o], to[o])));
+    motions.push_back(motion);
+  }
+  for (const int o : model.ground_path) {
+    const ObjectSpec& object = ground.objects[static_cast<std::size_t>(o)];
+    Underside u = find_underside(transformed(object.body, to[o]), state->ground.height, renderer);
+    if (!u.empty()) u.top_m = top_at(object, to[o]);
+    ceiling.undersides.push_back(std::move(u));
+    motions.push_back(to[o].position_m - from[o].position_m);
+  }
+  for (std::size_t k = 0; k < ceiling.undersides.size(); ++k) {
+    report->contact_cells +=
+        displace(ground, params, ceiling.undersides[k], ceiling, motions[k], &state->ground).contact_cells;
+  }
+  accumulate(erode(ground, params, ceiling, &state->ground), &report->ground_erosion);
+  for (std::size_t k = 0; k < model.held.size(); ++k) {
+    accumulate(erode_spans(model, params, motions[k] / dt_s, &state->held[k], &state->ground, &state->particles,
+                           &state->rng),
+               &report->span_erosion);
+  }
+  std::vector<SpanMap*> maps;
+  for (ObjectSpans& s : state->held) maps.push_back(&s.map);
+  advance_particles(dt_s, ground, maps, &state->particles, &state->ground);
+}
+
+}  // namespace
+
+int heightspan_substeps(const HeightSpanModel& model, const std::vector<Pose>& from, const std::vector<Pose>& to,
+                        int step_index) {
+  double needed = 1.0;
+  const double cell_m = model.options.max_substep_cells * model.ground.grid.cell_size_m;
+  for (std::size_t o = 0; o < from.size(); ++o) {
+    needed = std::max(needed, (to[o].position_m - from[o].position_m).norm() / cell_m);
+    needed = std::max(needed, from[o].orientation.angularDistance(to[o].orientation) / model.options.max_substep_angle_rad);
+  }
+  if (!(needed <= kMaxSubstepsPerStep)) {
+    throw InputError(fmt::format("heightspan: step {} needs {:.3g} substeps (an object moves more than {} cells or "
+                                 "turns more than {} times heightspan.max_substep_angle_deg), at most {}: raise "
+                                 "heightspan.max_substep_cells or shorten time.step_s",
+                                 step_index, needed, kMaxSubstepsPerStep * model.options.max_substep_cells,
+                                 kMaxSubstepsPerStep, kMaxSubstepsPerStep));
+  }
+  return static_cast<int>(std::ceil(needed - 1e-9));
+}
+
+HeightSpanStepReport step(const HeightSpanModel& model, const GroundParams& params, UndersideRenderer& renderer,
+                          HeightSpanState* state) {
+  HeightSpanStepReport report;
+  const GroundModel& ground = model.ground;
+  const double dt = ground.time.step_s;
+  const double t0 = state->ground.step_index * dt;  // not accumulated: no drift over many steps
+  const std::size_t n_objects = ground.objects.size();
+  std::vector<Pose> end(n_objects);
+  for (std::size_t o = 0; o < n_objects; ++o) end[o] = ground.objects[o].pose_at(t0 + dt);
+  const int substeps = heightspan_substeps(model, state->ground.previous_poses, end, state->ground.step_index);
+  report.substeps = substeps;
+  std::vector<Pose> poses = state->ground.previous_poses;
+  for (int s = 1; s <= substeps; ++s) {
+    std::vector<Pose> to(n_objects);
+    for (std::size_t o = 0; o < n_objects; ++o) {
+      to[o] = s == substeps ? end[o] : ground.objects[o].pose_at(t0 + dt * s / substeps);
+    }
+    substep(model, params, renderer, poses, to, dt / substeps, state, &report);
+    poses = to;
+  }
+  const std::vector<double> max_dh = max_height_differences(ground, params);
+  state->ground.erosion.end_step([&](std::int64_t c) { return is_settled(ground, max_dh, state->ground.height, c); });
+  state->ground.previous_poses = end;
+  ++state->ground.step_index;
+  state->ground.time_s = state->ground.step_index * dt;
+  return report;
+}
+
+}  // namespace repose

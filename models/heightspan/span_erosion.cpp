@@ -1,0 +1,239 @@
+#include "models/heightspan/span_erosion.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "models/ground/erosion.h"
+#include "models/ground/ground_model.h"
+#include "models/ground/ground_params.h"
+#include "models/ground/ground_state.h"
+#include "models/heightspan/ground_contact.h"
+#include "models/heightspan/heightspan_model.h"
+#include "models/heightspan/heightspan_state.h"
+
+namespace repose {
+
+namespace {
+
+constexpr int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+enum class Kind : std::uint8_t { kSpan, kGround, kAir };
+
+// Where material lies or lands. index: a span's index in map.spans, else
+// the column's local index (ring included: see Columns::local).
+struct Surface {
+  Kind kind = Kind::kSpan;
+  std::int64_t index = 0;
+  double level_m = 0.0;
+  double room_m = kInf;  // highest level it may reach
+};
+
+struct Flux {
+  Surface from, to;
+  double amount_m;
+  double release_z_m;  // air: the height it leaves at
+};
+
+// The map's columns and the ground under them, one ring of cells beyond.
+struct Columns {
+  const SpanMap& map;
+  const HeightField& ground;
+  CellOffset off;
+
+  int stride() const { return map.grid.nx + 2; }
+  std::int64_t local(int i, int j) const { return static_cast<std::int64_t>(j + 1) * stride() + (i + 1); }
+  std::size_t local_count() const { return static_cast<std::size_t>(stride()) * (map.grid.ny + 2); }
+  int count(int i, int j) const { return map.grid.contains(i, j) ? map.count(map.cell(i, j)) : 0; }
+  const Span* spans(int i, int j) const { return map.begin(map.cell(i, j)); }
+  bool has_ground(int i, int j) const { return ground.grid().contains(i + off.di, j + off.dj); }
+  double ground_at(int i, int j) const { return ground.at(i + off.di, j + off.dj); }
+
+  // The surface material at height z entering column (i, j) lands on; false when z is inside its solid.
+  bool landing(int i, int j, double z, Surface* out) const {
+    const int n = count(i, j);
+    const Span* s = n > 0 ? spans(i, j) : nullptr;
+    int k = n - 1;
+    while (k >= 0 && s[k].top_m > z) --k;
+    if (k >= 0) {
+      if (k + 1 < n && s[k + 1].bottom_m <= z) return false;
+      *out = {Kind::kSpan, s + k - map.spans.data(), s[k].level_m(), k + 1 < n ? s[k + 1].bottom_m : kInf};
+      return true;
+    }
+    if (n > 0 && s[0].bottom_m <= z) return false;
+    if (!has_ground(i, j)) {
+      *out = {Kind::kAir, local(i, j), 0.0, kInf};  // beyond the grid: it falls off
+      return true;
+    }
+    *out = {Kind::kGround, local(i, j), ground_at(i, j), n > 0 ? s[0].bottom_m : kInf};
+    return true;
+  }
+};
+
+struct PassRule {
+  double max_dh_m, sigma, tolerance_m, near_m;
+};
+
+void add_span_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
+  const SpanMap& map = cols.map;
+  const std::int64_t c = map.cell(i, j);
+  for (int k = 0; k < map.count(c); ++k) {
+    const Span& s = map.begin(c)[k];
+    if (!(s.material_m > 0.0)) continue;
+    const Surface from{Kind::kSpan, map.first[c] + k, s.level_m(), kInf};
+    for (const auto& o : kNeighbours) {
+      Surface to;
+      if (!cols.landing(i + o[0], j + o[1], from.level_m, &to)) continue;
+      const double excess = from.level_m - to.level_m - rule.max_dh_m;
+      if (!(excess > rule.tolerance_m)) continue;
+      if (to.kind == Kind::kGround && s.top_m - to.level_m > rule.near_m) to.kind = Kind::kAir;  // falls
+      fluxes->push_back({from, to, rule.sigma * excess, from.level_m});
+    }
+  }
+}
+
+// Ground beside the object sliding onto its spans.
+void add_ground_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
+  const int n = cols.count(i, j);
+  if (!cols.has_ground(i, j)) return;
+  const double g = cols.ground_at(i, j);
+  if (n > 0 && g > cols.spans(i, j)[0].bottom_m) return;  // under the object: not exposed
+  const Surface from{Kind::kGround, cols.local(i, j), g, kInf};
+  for (const auto& o : kNeighbours) {
+    if (cols.count(i + o[0], j + o[1]) == 0) continue;
+    Surface to;
+    if (!cols.landing(i + o[0], j + o[1], g, &to) || to.kind != Kind::kSpan) continue;
+    const double excess = g - to.level_m - rule.max_dh_m;
+    if (excess > rule.tolerance_m) fluxes->push_back({from, to, rule.sigma * excess, g});
+  }
+}
+
+// The surfaces' amounts and one pass's sums: what each gives and takes.
+struct Exchange {
+  const GroundModel& model;
+  SpanMap& map;
+  GroundState* ground;
+  const Columns& cols;
+  std::size_t n_spans, n_local;
+  // per surface: outflow, then inflow; spans first, then the columns' ground (and air)
+  std::vector<double> out, in, released_m, release_z;
+
+  Exchange(const GroundModel& m, SpanMap& sm, GroundState* g, const Columns& c)
+      : model(m), map(sm), ground(g), cols(c), n_spans(sm.spans.size()), n_local(c.local_count()),
+        out(n_spans + n_local), in(n_spans + n_local), released_m(n_local), release_z(n_local, -kInf) {}
+
+  std::size_t key(const Surface& s) const {
+    return static_cast<std::size_t>(s.kind == Kind::kSpan ? s.index : static_cast<std::int64_t>(n_spans) + s.index);
+  }
+  std::int64_t ground_cell(std::int64_t local) const {
+    const int i = static_cast<int>(local % cols.stride()) - 1, j = static_cast<int>(local / cols.stride()) - 1;
+    return model.cell(i + cols.off.di, j + cols.off.dj);
+  }
+  double& amount_of(const Surface& s) {
+    if (s.kind == Kind::kSpan) return map.spans[static_cast<std::size_t>(s.index)].material_m;
+    return ground->height.heights().data()[ground_cell(s.index)];
+  }
+
+  // a surface gives at most what it has, takes at most its room
+  void scale(std::vector<Flux>* fluxes) {
+    std::fill(out.begin(), out.end(), 0.0);
+    std::fill(in.begin(), in.end(), 0.0);
+    for (const Flux& f : *fluxes) out[key(f.from)] += f.amount_m;
+    for (Flux& f : *fluxes) {
+      const double has = amount_of(f.from), total = out[key(f.from)];
+      if (total > has) f.amount_m *= has / total;
+      if (f.to.kind != Kind::kAir) in[key(f.to)] += f.amount_m;
+    }
+    for (Flux& f : *fluxes) {
+      if (f.to.kind == Kind::kAir) continue;
+      const double room = std::max(0.0, f.to.room_m - f.to.level_m), total = in[key(f.to)];
+      if (total > room) f.amount_m *= room / total;
+    }
+  }
+
+  void apply(const std::vector<Flux>& fluxes, SpanErosionResult* result) {
+    const double area = model.grid.cell_area_m2();
+    for (const Flux& f : fluxes) {
+      if (!(f.amount_m > 0.0)) continue;
+      ++result->moves;
+      amount_of(f.from) -= f.amount_m;
+      if (f.from.kind == Kind::kGround) {
+        result->from_ground_m3 += f.amount_m * area;
+        ground->erosion.touch(ground_cell(f.from.index));
+      }
+      if (f.to.kind == Kind::kAir) {  // released after the passes
+        released_m[f.to.index] += f.amount_m;
+        release_z[f.to.index] = std::max(release_z[f.to.index], f.release_z_m);
+        result->to_particles_m3 += f.amount_m * area;
+        continue;
+      }
+      amount_of(f.to) += f.amount_m;
+      if (f.to.kind == Kind::kGround) {
+        result->to_ground_m3 += f.amount_m * area;
+        ground->erosion.touch(ground_cell(f.to.index));
+      }
+    }
+  }
+
+  // one particle per column the material left into
+  void release(const Eigen::Vector3d& velocity_m_s, double spread_m_s, ParticleSystem* particles,
+               std::mt19937_64* rng) const {
+    for (std::size_t l = 0; l < n_local; ++l) {
+      if (!(released_m[l] > 0.0)) continue;
+      const int i = static_cast<int>(l % cols.stride()) - 1, j = static_cast<int>(l / cols.stride()) - 1;
+      const Eigen::Vector3d at(map.grid.centre_x(i), map.grid.centre_y(j), release_z[l]);
+      particles->release({at, velocity_m_s, released_m[l] * model.grid.cell_area_m2()}, spread_m_s, rng);
+    }
+  }
+};
+
+// The columns with spans: [i0, i1] x [j0, j1] (empty when i1 < i0).
+std::array<int, 4> span_columns(const SpanMap& map) {
+  std::array<int, 4> box{map.grid.nx, -1, map.grid.ny, -1};
+  for (int j = 0; j < map.grid.ny; ++j) {
+    for (int i = 0; i < map.grid.nx; ++i) {
+      if (map.count(map.cell(i, j)) == 0) continue;
+      box = {std::min(box[0], i), std::max(box[1], i), std::min(box[2], j), std::max(box[3], j)};
+    }
+  }
+  return box;
+}
+
+}  // namespace
+
+SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& params,
+                              const Eigen::Vector3d& velocity_m_s, ObjectSpans* spans, GroundState* ground,
+                              ParticleSystem* particles, std::mt19937_64* rng) {
+  SpanErosionResult result;
+  SpanMap& map = spans->map;
+  if (map.empty()) return result;
+  const Grid& g = model.ground.grid;
+  const Material& m = params.materials.front();  // the spans carry the ground's base material
+  const PassRule rule{g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, kErosionToleranceFraction * g.cell_size_m,
+                      model.options.near_ground_cells * g.cell_size_m};
+  const Columns cols{map, ground->height, ground_offset(map.grid, g)};
+  Exchange exchange(model.ground, map, ground, cols);
+  // the columns with spans and one ring around them: nothing else can exchange with a span
+  const auto [i0, i1, j0, j1] = span_columns(map);
+  std::vector<Flux> fluxes;
+  for (int p = 0; p < m.erosion_iterations; ++p) {
+    fluxes.clear();
+    for (int j = j0 - 1; j <= j1 + 1; ++j) {
+      for (int i = i0 - 1; i <= i1 + 1; ++i) {
+        if (cols.count(i, j) > 0) add_span_fluxes(cols, rule, i, j, &fluxes);
+        add_ground_fluxes(cols, rule, i, j, &fluxes);
+      }
+    }
+    if (fluxes.empty()) break;
+    result.passes = p + 1;
+    exchange.scale(&fluxes);
+    exchange.apply(fluxes, &result);
+  }
+  exchange.release(velocity_m_s, model.options.particle_spread_m_s, particles, rng);
+  return result;
+}
+
+}  // namespace repose

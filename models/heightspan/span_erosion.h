@@ -1,0 +1,54 @@
+#pragma once
+// Erosion on an object's spans (the height-span paper, 2.4.2), with the
+// ground model's slope rule (models/ground/erosion.h: sigma times the excess
+// over cell_size * tan(theta), a Jacobi update per pass, stable for
+// sigma <= 1/4, excess below kErosionToleranceFraction * cell ignored).
+//
+// A column of the map holds surfaces material can lie on: each span's top
+// (its level: top + material) and the ground under the column where no
+// span rests on it. Material at level L leaves a column sideways into the
+// neighbouring column at height L: there it lands on the highest surface
+// whose solid top is at or below L, unless L is inside the neighbour's solid
+// (a wall), which blocks the pair. So pairs are found per span, as the
+// paper asks ("per span, the neighbouring spans where collapse can occur"):
+//   span to span:  material on one span slides onto a neighbouring span;
+//   span to ground: off the edge of the object onto the ground beside it.
+//     Where the span's top is at most near_ground_cells above that ground,
+//     the material moves straight onto the ground; higher up it leaves as
+//     a particle, released at the neighbour's cell centre at the level it
+//     left, with the object's velocity (particles.h);
+//   ground to span: ground higher than a neighbouring span's level slides
+//     onto it (a heap beside a buried or pressed bucket spills in);
+//   ground to ground is the ground model's (models/ground/erosion.h).
+// A surface gives at most what it has (a span its material, the ground its
+// height) and takes at most its room (up to the bottom of the span above
+// it, where there is one): all of a pass's fluxes are scaled down together
+// where they would exceed either. The map's own columns and one ring of
+// ground around it are examined; En passes of the spans' material (the
+// ground's base material, heightspan_model.h).
+
+#include <random>
+
+#include <Eigen/Core>
+
+namespace repose {
+
+struct GroundParams;
+struct HeightSpanModel;
+struct ObjectSpans;
+struct GroundState;
+struct ParticleSystem;
+
+struct SpanErosionResult {
+  int passes = 0;
+  long long moves = 0;
+  double to_ground_m3 = 0.0;
+  double from_ground_m3 = 0.0;
+  double to_particles_m3 = 0.0;
+};
+
+SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& params,
+                              const Eigen::Vector3d& velocity_m_s, ObjectSpans* spans, GroundState* ground,
+                              ParticleSystem* particles, std::mt19937_64* rng);
+
+}  // namespace repose

@@ -1,0 +1,75 @@
+#include "models/heightspan/ground_contact.h"
+
+#include <gtest/gtest.h>
+
+#include "heightspan_fixtures.h"
+#include "models/core/config/initial_height.h"
+
+namespace repose {
+namespace {
+
+using testing::bed_scene;
+using testing::bucket_mesh;
+using testing::key;
+using testing::mesh_object;
+
+TEST(GroundContact, MapCellsStandForTheGroundCellsHoldingTheirCentres) {
+  const Grid ground{10, 10, 0.01, 0.0, 0.0};
+  Grid map = ground;
+  map.origin_x_m = -0.0204;  // centres at -0.0154, -0.0054, 0.0046: the third is ground cell 0
+  map.origin_y_m = 0.0349;
+  const CellOffset off = ground_offset(map, ground);
+  EXPECT_EQ(off.di, -2);
+  EXPECT_EQ(off.dj, 3);
+}
+
+TEST(GroundContact, TheUndersideIsTheLowestSpanBottom) {
+  Scene s = bed_scene(40, 40, 0.005, 0.03, {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.1, 0.1, 0.04)})}, 1);
+  const HeightSpanModel model = build_heightspan_model(s);
+  const HeightSpanState state = make_heightspan_state(model, make_initial_height(s));
+  const Underside u = underside_of(state.held[0].map, model.ground.grid, 0.065);
+  ASSERT_FALSE(u.empty());
+  EXPECT_EQ(u.footprint.ni, 16);  // 8 cm on 5 mm cells
+  EXPECT_NEAR(u.at(20, 20), 0.015, 1e-12);
+  EXPECT_TRUE(std::isinf(u.at(0, 0)));
+}
+
+TEST(GroundContact, GroundAboveTheFloorGoesOntoItAndNothingIsLost) {
+  // an upright bucket placed with its floor's top 1 cm under a 3 cm bed
+  Scene s = bed_scene(40, 40, 0.005, 0.03, {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.1, 0.1, 0.04)})}, 1);
+  const HeightSpanModel model = build_heightspan_model(s);
+  HeightSpanState state = make_heightspan_state(model, make_initial_height(s));
+  const double before = accounted_m3(state);
+  SpanMap& map = state.held[0].map;
+  const double moved = take_up_ground(model.ground, &map, &state.ground);
+  EXPECT_NEAR(accounted_m3(state), before, 1e-15);
+  EXPECT_NEAR(map.material_m3(), moved, 1e-15);
+  int i, j;
+  ASSERT_TRUE(map.cell_at(0.1, 0.1, &i, &j));
+  EXPECT_NEAR(map.begin(map.cell(i, j))[0].material_m, 0.01, 1e-12);  // 3 cm bed - 2 cm floor top
+  EXPECT_NEAR(state.ground.height.at(20, 20), 0.02, 1e-12);             // the ground left at the floor's top
+  EXPECT_TRUE(state.ground.erosion.contains(model.ground.cell(20, 20)));
+}
+
+TEST(GroundContact, GroundReachingIntoAHigherSpanGoesOntoItsTop) {
+  // two plates stacked with a 1 cm gap, both under a 5 cm bed
+  const TriangleMesh two = merged(make_box({0.02, 0.02, 0.0025}),
+                                  transformed(make_box({0.02, 0.02, 0.0025}), Pose{{0, 0, 0.015}, Eigen::Quaterniond::Identity()}));
+  Scene s = bed_scene(20, 20, 0.005, 0.05, {mesh_object("rack", two, {key(0.0, 0.05, 0.05, 0.01)})}, 1);
+  const HeightSpanModel model = build_heightspan_model(s);
+  HeightSpanState state = make_heightspan_state(model, make_initial_height(s));
+  const double before = accounted_m3(state);
+  take_up_ground(model.ground, &state.held[0].map, &state.ground);
+  const SpanMap& map = state.held[0].map;
+  int i, j;
+  ASSERT_TRUE(map.cell_at(0.0525, 0.0525, &i, &j));
+  const Span* sp = map.begin(map.cell(i, j));
+  ASSERT_EQ(map.count(map.cell(i, j)), 2);
+  EXPECT_NEAR(sp[0].level_m(), sp[1].bottom_m, 1e-12);  // the gap is full
+  EXPECT_NEAR(sp[1].level_m(), 0.05 + 0.005, 1e-12);    // the rest, and the upper plate's own volume, on top
+  EXPECT_NEAR(accounted_m3(state), before, 1e-15);
+  testing::expect_spans_valid(map, "rack");
+}
+
+}  // namespace
+}  // namespace repose

@@ -1,0 +1,76 @@
+#include "models/heightspan/heightspan_section.h"
+
+#include <gtest/gtest.h>
+
+#include "models/core/base/error.h"
+#include "models/core/config/fields.h"
+#include "models/core/config/scene_loader.h"
+#include "models/ground/ground_section.h"
+
+namespace repose {
+namespace {
+
+const char* const kScene = R"(
+name: t
+time: {step_s: 0.1, duration_s: 1}
+ground: {extent_m: [0.1, 0.1], cell_size_m: 0.01, initial_height: {kind: flat, height_m: 0.01}}
+objects:
+  - {name: plate, shape: box, half_extents_m: [0.02, 0.02, 0.005], motion: [{time_s: 0, position_m: [0.05, 0.05, 0.05]}]}
+heightspan: {near_ground_cells: 2, holds_material: {plate: true}}
+)";
+
+Scene load(const std::string& text) {
+  return load_scene_from_string(text, "/tmp/t.yaml", {ground_model_section_type(), heightspan_section_type()});
+}
+
+TEST(HeightSpanSection, ReadsOptionsAndWhichObjectsHoldMaterial) {
+  const Scene s = load(kScene);
+  const HeightSpanSection& h = heightspan_section(s);
+  EXPECT_EQ(h.options.near_ground_cells, 2.0);
+  EXPECT_EQ(h.holds_material.at("plate"), true);
+  EXPECT_EQ(h.options.frame_interval_s, HeightSpanSpec{}.frame_interval_s);
+}
+
+TEST(HeightSpanSection, RefusesUnknownObjectsAndKeysAndBadValues) {
+  std::string text = kScene;
+  EXPECT_THROW(load(text.replace(text.find("{plate: true}"), 13, "{ball: true}")), InputError);
+  text = kScene;
+  EXPECT_THROW(load(text.replace(text.find("near_ground_cells: 2"), 20, "near_groundcells: 2")), InputError);
+  text = kScene;
+  try {
+    load(text.replace(text.find("near_ground_cells: 2"), 20, "max_substep_cells: 0"));
+    FAIL() << "accepted max_substep_cells: 0";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("max_substep_cells"), std::string::npos) << e.what();
+  }
+}
+
+TEST(HeightSpanSection, ValidateNamesTheField) {
+  HeightSpanSpec spec;
+  spec.bulk_density_kg_m3 = -1.0;
+  try {
+    validate(spec);
+    FAIL();
+  } catch (const FieldError& e) {
+    EXPECT_EQ(e.field(), "bulk_density_kg_m3");
+  }
+  spec = {};
+  spec.max_substep_angle_rad = 0.0;
+  EXPECT_THROW(validate(spec), FieldError);
+  spec = {};
+  spec.particle_spread_m_s = std::nan("");
+  EXPECT_THROW(validate(spec), FieldError);
+}
+
+TEST(HeightSpanSection, WritesWhatItReads) {
+  const Scene s = load(kScene);
+  YAML::Emitter out;
+  heightspan_section(s).write_yaml(out);
+  const YAML::Node node = YAML::Load(out.c_str());
+  EXPECT_EQ(node["near_ground_cells"].as<double>(), 2.0);
+  EXPECT_EQ(node["holds_material"]["plate"].as<bool>(), true);
+  EXPECT_NE(heightspan_section(s).summary().find("plate holds"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace repose

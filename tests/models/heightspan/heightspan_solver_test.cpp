@@ -1,0 +1,103 @@
+#include "models/heightspan/heightspan_solver.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "experiments/solvers/solver_registry.h"
+#include "heightspan_fixtures.h"
+#include "models/core/base/error.h"
+#include "models/core/config/scene_loader.h"
+#include "models/ground/ground_solver.h"
+
+namespace repose {
+namespace {
+
+using testing::key;
+
+Scene small_scoop() {
+  std::vector<Keyframe> keys = {key(0.0, 0.06, 0.06, 0.1, 80), key(0.2, 0.06, 0.06, 0.055, 80),
+                                key(0.5, 0.1, 0.06, 0.055, 80), key(0.7, 0.1, 0.06, 0.12, 0)};
+  return testing::bed_scene(40, 24, 0.005, 0.03, {testing::mesh_object("bucket", testing::bucket_mesh(), keys)}, 24);
+}
+
+TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) {
+  const Solver& solver = solver_registry().get("heightspan");
+  const Scene s = small_scoop();
+  const auto compiled = solver.compile(s);
+  const auto ground = GroundSolver().compile(s);
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size());
+  for (std::size_t k = 0; k < compiled->parameters().size(); ++k) {
+    EXPECT_EQ(compiled->parameters()[k].name, ground->parameters()[k].name);
+    EXPECT_EQ(compiled->parameters()[k].value_si, ground->parameters()[k].value_si);
+  }
+  EXPECT_NO_THROW(compiled->parameter_index("sand.repose_angle_deg"));
+  std::vector<double> values = compiled->default_values();
+  values[compiled->parameter_index("sand.sigma")] = 0.3;  // above the stability limit
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, RunsReportTheLedgerTheHeldMassAndWhatWasBuilt) {
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  const repose::Run run = compiled->run(compiled->default_values(), {});
+  EXPECT_EQ(run.solver, "heightspan");
+  EXPECT_LT(run.measure("ledger.max_relative_imbalance").value, 1e-12);
+  EXPECT_GT(run.measure("mass_held_max_kg.bucket").value, 0.0);
+  EXPECT_EQ(run.measure("mass_held_kg.bucket").unit, "kg");
+  EXPECT_EQ(run.details["built"]["span_maps"], nlohmann::json::array({"bucket"}));
+  EXPECT_TRUE(run.files.empty());  // no output folder: no files
+  EXPECT_NO_THROW(run.field("height_final"));
+}
+
+TEST(HeightSpanSolver, ASceneWithNothingToHoldRunsTheGroundModel) {
+  Scene s = testing::bed_scene(40, 40, 0.005, 0.02,
+                               {testing::mesh_object("ball", make_sphere(0.02), {key(0, 0.1, 0.1, 0.035), key(1, 0.1, 0.1, 0.02)})},
+                               10);
+  HeightSpanSection section = heightspan_section(s);
+  section.holds_material.clear();
+  s = with_heightspan(s, section);
+  const auto compiled = HeightSpanSolver().compile(s);
+  const repose::Run hs = compiled->run(compiled->default_values(), {});
+  const auto ground = GroundSolver().compile(s);
+  const repose::Run g = ground->run(ground->default_values(), {});
+  EXPECT_TRUE((hs.field("height_final").heights() == g.field("height_final").heights()).all());
+  EXPECT_EQ(hs.details["built"]["span_maps"], nlohmann::json::array());
+  EXPECT_EQ(hs.details["built"]["particles"], false);
+  EXPECT_EQ(hs.details["built"]["ground_path_objects"], nlohmann::json::array({"ball"}));
+}
+
+TEST(HeightSpanSolver, WithAnOutputFolderItWritesTheHeldMassAndFrames) {
+  Scene s = small_scoop();
+  HeightSpanSection section = heightspan_section(s);
+  section.options.frame_interval_s = 0.4;
+  s = with_heightspan(s, section);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "heightspan_solver_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto compiled = HeightSpanSolver().compile(s);
+  const repose::Run run = compiled->run(compiled->default_values(), {{}, dir.string()});
+  EXPECT_NE(std::find(run.files.begin(), run.files.end(), "held_mass.csv"), run.files.end());
+  EXPECT_NE(std::find(run.files.begin(), run.files.end(), "frames/frame_0001.png"), run.files.end());
+  for (const std::string& f : run.files) EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+  std::ifstream csv(dir / "held_mass.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "time_s,bucket_volume_m3,bucket_mass_kg,in_flight_m3,ledger_imbalance_m3");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 24);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(HeightSpanSolver, TheScoopSceneLoadsForTheHeightSpanModelAndLiggghts) {
+  const Scene s = load_scene(std::string(REPOSE_SOURCE_DIR) + "/experiments/scenes/heightspan_scoop.yaml",
+                             solver_registry().sections());
+  std::string why;
+  EXPECT_TRUE(solver_registry().get("heightspan").can_run(s, &why)) << why;
+  EXPECT_TRUE(solver_registry().get("liggghts").can_run(s, &why)) << why;
+  EXPECT_NO_THROW(solver_registry().get("liggghts").compile(s));
+}
+
+}  // namespace
+}  // namespace repose

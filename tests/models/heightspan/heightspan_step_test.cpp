@@ -1,0 +1,185 @@
+#include "models/heightspan/heightspan_step.h"
+
+#include <random>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "heightspan_fixtures.h"
+#include "models/core/base/error.h"
+#include "models/core/config/initial_height.h"
+#include "models/ground/ground_params.h"
+
+namespace repose {
+namespace {
+
+using testing::bed_scene;
+using testing::bucket_mesh;
+using testing::key;
+using testing::mesh_object;
+
+struct Checked {
+  double held_initial_m3 = 0.0;
+  double held_max_m3 = 0.0;
+  double worst_imbalance = 0.0;  // relative, over every step
+  HeightSpanState state;
+};
+
+// Runs every step of the scene, checking after each that the ledger holds,
+// nothing is NaN, heights are >= 0 and no span's material is inside the object.
+Checked run_checked(const Scene& scene, const std::string& where, double fill_m = 0.0) {
+  const HeightSpanModel model = build_heightspan_model(scene);
+  const GroundParams params = default_params(model.ground);
+  Checked out{0.0, 0.0, 0.0, make_heightspan_state(model, make_initial_height(scene))};
+  for (ObjectSpans& s : out.state.held) testing::fill_spans(&s.map, fill_m, s.pose.position_m.z() - 0.02);  // the floor
+  const double initial = accounted_m3(out.state);
+  out.held_initial_m3 = held_m3(out.state);
+  auto renderer = make_cpu_underside_renderer();
+  for (int k = 0; k < model.ground.time.step_count(); ++k) {
+    step(model, params, *renderer, &out.state);
+    const double rel = testing::relative_imbalance(out.state, initial);
+    EXPECT_LT(rel, 1e-12) << where << " step " << k;
+    out.worst_imbalance = std::max(out.worst_imbalance, rel);
+    EXPECT_TRUE(out.state.ground.height.all_finite()) << where;
+    EXPECT_GE(out.state.ground.height.min_height_m(), 0.0) << where;
+    for (const ObjectSpans& s : out.state.held) testing::expect_spans_valid(s.map, where);
+    out.held_max_m3 = std::max(out.held_max_m3, held_m3(out.state));
+    if (::testing::Test::HasFailure()) break;
+  }
+  return out;
+}
+
+// A tilted bucket (mouth towards +x) lowered into a 3 cm bed and dragged.
+Scene scoop(double depth_m, double drag_m, double tilt_deg, double speed_m_s, std::uint64_t seed) {
+  const double dt = 1.0 / 30.0, t_drag = drag_m / speed_m_s;
+  const double centre_z = 0.03 - depth_m + 0.04;
+  std::vector<Keyframe> keys = {key(0.0, 0.06, 0.06, 0.09, tilt_deg), key(0.2, 0.06, 0.06, centre_z, tilt_deg),
+                                key(0.2 + t_drag, 0.06 + drag_m, 0.06, centre_z, tilt_deg),
+                                key(0.4 + t_drag, 0.06 + drag_m, 0.06, 0.11, 0.0)};
+  Scene s = bed_scene(40, 24, 0.005, 0.03, {mesh_object("bucket", bucket_mesh(), keys)},
+                      static_cast<int>(std::ceil((0.45 + t_drag) / dt)));
+  s.seed = seed;
+  return s;
+}
+
+TEST(HeightSpanStep, RandomScoopsConserveMaterialEveryStep) {
+  std::mt19937_64 rng(20261122);
+  std::uniform_real_distribution<double> depth(0.0, 0.025), drag(0.0, 0.08), tilt(0.0, 95.0), speed(0.05, 0.6);
+  for (int trial = 0; trial < 12; ++trial) {
+    const double d = depth(rng), l = drag(rng), t = tilt(rng), v = speed(rng);
+    const std::string where = fmt::format("trial {} (depth {} m, drag {} m, tilt {} deg, speed {} m/s)", trial, d, l, t, v);
+    run_checked(scoop(d, l, t, v, static_cast<std::uint64_t>(trial)), where);
+    if (HasFailure()) break;
+  }
+}
+
+TEST(HeightSpanStep, TiltedBucketDraggedThroughSandFills) {
+  const Checked c = run_checked(scoop(0.015, 0.08, 80.0, 0.15, 1), "scoop");
+  const double bucket_inside_m3 = 0.07 * 0.07 * 0.045;
+  EXPECT_GT(c.held_max_m3, 0.15 * bucket_inside_m3);
+  EXPECT_GT(held_m3(c.state), 0.0);  // still carrying some when lifted
+}
+
+TEST(HeightSpanStep, AScoopAlongAnAxisIsMirrorSymmetricAboutIt) {
+  // the bucket's centre on the line between rows 11 and 12: the ground must mirror across it
+  // (released particles get no random spread, which would break the symmetry)
+  Scene s = scoop(0.015, 0.06, 80.0, 0.15, 2);
+  HeightSpanSection section = heightspan_section(s);
+  section.options.particle_spread_m_s = 0.0;
+  const Checked c = run_checked(with_heightspan(s, section), "mirror");
+  const ArrayXXdR& h = c.state.ground.height.heights();
+  ASSERT_EQ(h.rows(), 24);
+  double worst = 0.0;
+  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT((h - 0.03).abs().maxCoeff(), 1e-3);  // it did dig
+}
+
+TEST(HeightSpanStep, ObjectsOnTheGroundPathDisplaceBesideAScoopingBucket) {
+  Scene s = scoop(0.015, 0.06, 80.0, 0.15, 3);
+  ObjectSpec ball = mesh_object("ball", make_sphere(0.015, 24), {key(0.0, 0.16, 0.06, 0.06), key(0.5, 0.16, 0.06, 0.035)});
+  s.objects.push_back(ball);
+  HeightSpanSection section = heightspan_section(s);
+  section.holds_material.erase("ball");  // convex: the ground path
+  s = with_heightspan(s, section);
+  const Checked c = run_checked(s, "bucket and ball");
+  EXPECT_EQ(build_heightspan_model(s).ground_path, std::vector<int>{1});
+  EXPECT_LT(c.state.ground.height.at(32, 12), 0.03 - 0.005);  // the ball's imprint (x 0.16, y 0.06)
+  EXPECT_GT(c.held_max_m3, 0.0);
+}
+
+TEST(HeightSpanStep, LevelBucketAtRestKeepsItsMaterialInPlace) {
+  Scene s = bed_scene(40, 40, 0.005, 0.01, {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.1, 0.1, 0.08)})}, 30);
+  const HeightSpanModel model = build_heightspan_model(s);
+  const GroundParams params = default_params(model.ground);
+  HeightSpanState state = make_heightspan_state(model, make_initial_height(s));
+  EXPECT_GT(testing::fill_spans(&state.held[0].map, 0.01, 0.06), 0.0);  // on the floor
+  const std::vector<Span> before = state.held[0].map.spans;
+  auto renderer = make_cpu_underside_renderer();
+  for (int k = 0; k < 30; ++k) step(model, params, *renderer, &state);
+  ASSERT_EQ(state.held[0].map.spans.size(), before.size());
+  for (std::size_t k = 0; k < before.size(); ++k) {
+    EXPECT_EQ(state.held[0].map.spans[k].material_m, before[k].material_m) << k;
+  }
+  EXPECT_FALSE(state.particles.built);
+}
+
+// The fraction of a bucket's load (8 mm on its floor) still held after it is
+// turned by tilt_deg over 0.5 s and held for hold_steps.
+double held_after_tilt(double tilt_deg, int hold_steps) {
+  Scene s = bed_scene(48, 40, 0.005, 0.01,
+                      {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.12, 0.1, 0.1), key(0.5, 0.12, 0.1, 0.1, tilt_deg)})},
+                      15 + hold_steps, 1.0 / 30.0, 30.0, 0.25, 20);
+  const Checked c = run_checked(s, fmt::format("tilt {} deg", tilt_deg), 0.008);
+  EXPECT_GT(c.held_initial_m3, 0.9 * 0.063 * 0.063 * 0.008);  // the whole floor was filled
+  return c.state.held[0].map.material_m3() / c.held_initial_m3;
+}
+
+TEST(HeightSpanStep, TippingPastTheReposeAngleEmptiesTheBucket) {
+  EXPECT_GT(held_after_tilt(15.0, 30), 0.95);   // below theta: it stays
+  EXPECT_LT(held_after_tilt(135.0, 60), 0.02);  // tipped over: it pours out
+}
+
+TEST(HeightSpanStep, ExtremesStayFiniteAndConservative) {
+  struct Case {
+    const char* name;
+    double theta_deg, sigma;
+    int passes;
+    double speed_m_s;
+  };
+  for (const Case& c : {Case{"theta near 0", 0.5, 0.2, 5, 0.15}, Case{"theta 90", 90.0, 0.2, 5, 0.15},
+                        Case{"sigma tiny", 30.0, 1e-9, 5, 0.15}, Case{"sigma at its limit", 30.0, 0.25, 50, 0.15},
+                        Case{"ten cells per step", 30.0, 0.2, 5, 1.5}}) {
+    Scene s = scoop(0.015, 0.08, 80.0, c.speed_m_s, 4);
+    Material m = ground_model_section(s).material("sand");
+    m.repose_angle_rad = c.theta_deg * testing::kDeg;
+    m.sigma = c.sigma;
+    m.erosion_iterations = c.passes;
+    run_checked(with_material(s, m), c.name);
+  }
+}
+
+TEST(HeightSpanStep, BuriedBucketStaysFiniteAndConservative) {
+  // the bucket's rim 1 cm under a 7 cm bed, dragged and lifted out
+  std::vector<Keyframe> keys = {key(0.0, 0.06, 0.06, 0.035), key(0.5, 0.14, 0.06, 0.035), key(0.8, 0.14, 0.06, 0.12)};
+  const Checked c = run_checked(bed_scene(40, 24, 0.005, 0.07, {mesh_object("bucket", bucket_mesh(), keys)}, 27),
+                                "buried");
+  EXPECT_GT(c.held_max_m3, 0.0);  // the sand above it lies on it
+}
+
+TEST(HeightSpanStep, SubstepsFollowTheFastestObject) {
+  Scene s = scoop(0.01, 0.05, 0.0, 0.15, 1);
+  const HeightSpanModel model = build_heightspan_model(s);
+  Pose a, b;
+  b.position_m.x() = 10.5 * 0.005;  // 10.5 cells
+  EXPECT_EQ(heightspan_substeps(model, {a}, {b}, 0), 11);
+  b.position_m.x() = 0.0;
+  b.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(20 * testing::kDeg, Eigen::Vector3d::UnitY()));
+  EXPECT_EQ(heightspan_substeps(model, {a}, {b}, 0), 4);  // 5 deg per substep
+  b.orientation = Eigen::Quaterniond::Identity();
+  b.position_m.x() = 1e9;
+  EXPECT_THROW(heightspan_substeps(model, {a}, {b}, 0), InputError);
+}
+
+}  // namespace
+}  // namespace repose
