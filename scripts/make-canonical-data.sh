@@ -40,7 +40,7 @@ declare -A scenes=(
 seeds=(1 2 3)
 # the scale-separated references (issue 10): press bed, then drag bed, so
 # that scenes sharing a settled bed follow each other
-reference_scenes=(ref_indent_shallow ref_indent_deep ref_drag_sphere ref_bulldoze ref_cylinder_side ref_tilted_box)
+reference_scenes=(ref_indent_shallow ref_indent_deep ref_drag_sphere ref_bulldoze ref_cylinder_side ref_tilted_box ref_pile)
 order=(dem_indent dem_indent_r3mm dem_drag dem_drag_box dem_pile)
 for seed in "${seeds[@]}"; do
   for scene in "${reference_scenes[@]}"; do
