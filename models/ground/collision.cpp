@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "models/core/geometry/faces_turned.h"
+
 namespace repose {
 
 Grid Footprint::sub_grid(const Grid& grid) const {
@@ -44,22 +46,6 @@ class CpuUndersideRenderer : public UndersideRenderer {
   }
 };
 
-// Seen from below, the lowest point of a closed, outward-oriented mesh over a
-// cell lies on a face turned downwards (where a vertical line enters the
-// body), so only those faces need rendering: about half of them.
-TriangleMesh downward_faces(const TriangleMesh& mesh) {
-  TriangleMesh out;
-  out.V = mesh.V;
-  out.F.resize(mesh.F.rows(), 3);
-  Eigen::Index n = 0;
-  for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
-    if ((b - a).cross(c - a).z() < 0.0) out.F.row(n++) = mesh.F.row(f);
-  }
-  out.F.conservativeResize(n, 3);
-  return out;
-}
-
 }  // namespace
 
 std::unique_ptr<UndersideRenderer> make_cpu_underside_renderer() { return std::make_unique<CpuUndersideRenderer>(); }
@@ -77,8 +63,11 @@ Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, Un
   // as displacement's contact test (displacement.h): an object resting on
   // ground it left at its underside touches it to round-off, and is no contact
   if (box.min.z() >= top - kContactToleranceFraction * g.cell_size_m) return {};
+  // Seen from below, the lowest point of a closed, outward-oriented mesh over a
+  // cell lies on a face turned downwards (where a vertical line enters the
+  // body), so only those faces need rendering: about half of them.
   const DepthImage img =
-      renderer.render_below(downward_faces(mesh), fp.sub_grid(ground.grid()), box.min.z(), box.max.z());
+      renderer.render_below(faces_turned(mesh, true), fp.sub_grid(ground.grid()), box.min.z(), box.max.z());
   Underside u;
   u.footprint = fp;
   u.top_m = box.max.z();

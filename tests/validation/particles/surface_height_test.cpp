@@ -7,18 +7,24 @@
 namespace repose {
 namespace {
 
-// A square lattice of touching equal spheres (radius r, spacing 2r) with
-// centres at height z0. The surface at (x, y) is z0 + sqrt(r^2 - d^2), d the
-// horizontal distance to the nearest centre, where d < r.
-TEST(SurfaceHeight, MatchesAnAnalyticLatticeOfSpheres) {
-  const double r = 0.002, z0 = 0.01;
-  const int n = 8;
+// n x n touching equal spheres (radius r, spacing 2r) with centres at height z0.
+GrainSet square_lattice(int n, double r, double z0) {
   GrainSet grains;
   grains.position_m.resize(n * n, 3);
   grains.radius_m = Eigen::VectorXd::Constant(n * n, r);
   for (int a = 0; a < n; ++a) {
     for (int b = 0; b < n; ++b) grains.position_m.row(a * n + b) << (2 * a + 1) * r, (2 * b + 1) * r, z0;
   }
+  return grains;
+}
+
+// A square lattice of touching equal spheres (radius r, spacing 2r) with
+// centres at height z0. The surface at (x, y) is z0 + sqrt(r^2 - d^2), d the
+// horizontal distance to the nearest centre, where d < r.
+TEST(SurfaceHeight, MatchesAnAnalyticLatticeOfSpheres) {
+  const double r = 0.002, z0 = 0.01;
+  const int n = 8;
+  const GrainSet grains = square_lattice(n, r, z0);
   // cells of r/3 over the lattice's square footprint
   const Grid grid{n * 6, n * 6, r / 3, 0.0, 0.0};
   const HeightField h = surface_height(grains, grid);
@@ -53,12 +59,7 @@ TEST(SurfaceHeight, MatchesAnAnalyticLatticeOfSpheres) {
 TEST(SurfaceHeight, ProbeSurfaceOfALatticeIsAnalyticAndBridgesTheGaps) {
   const double r = 0.002, z0 = 0.01, p = r;
   const int n = 8;
-  GrainSet grains;
-  grains.position_m.resize(n * n, 3);
-  grains.radius_m = Eigen::VectorXd::Constant(n * n, r);
-  for (int a = 0; a < n; ++a) {
-    for (int b = 0; b < n; ++b) grains.position_m.row(a * n + b) << (2 * a + 1) * r, (2 * b + 1) * r, z0;
-  }
+  const GrainSet grains = square_lattice(n, r, z0);
   const Grid grid{n * 6, n * 6, r / 3, 0.0, 0.0};
   SurfaceHeightOptions probe;
   probe.probe_radius_m = p;
