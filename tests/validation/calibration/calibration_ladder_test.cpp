@@ -2,8 +2,11 @@
 // reference's own resolution and parameters reproduces it exactly (RMSE 0),
 // other resolutions do not, and every rung has a positive wall time.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "experiments/solvers/solver_registry.h"
@@ -11,6 +14,7 @@
 #include "validation/calibration/calibration_ladder.h"
 #include "validation/calibration/calibration_loader.h"
 #include "validation/calibration/calibration_problem.h"
+#include "models/core/io/npy_io.h"
 
 namespace repose {
 namespace {
@@ -44,6 +48,60 @@ TEST(CalibrationLadder, OwnResolutionAtTheReferenceParametersHasNoError) {
   }
   EXPECT_TRUE(own);
   EXPECT_FALSE(ladder.liggghts_over_ground_time.has_value());  // no LIGGGHTS rung listed
+}
+
+namespace fs = std::filesystem;
+
+// A LIGGGHTS run folder on the indentation grid (16 x 16): a flat bed with a
+// square imprint `depth_m` deep, and its cost.
+void write_run(const fs::path& dir, double depth_m) {
+  fs::create_directories(dir);
+  ArrayXXdR initial = ArrayXXdR::Constant(16, 16, 0.02), final_height = initial;
+  final_height.block(6, 6, 4, 4) -= depth_m;
+  write_npy_2d((dir / "height_initial.npy").string(), initial);
+  write_npy_2d((dir / "height_final.npy").string(), final_height);
+  std::ofstream(dir / "liggghts_manifest.json") << R"({"wall_time_s": 10.0, "cpu_time_s": 8.0})";
+}
+
+// A reference of two seeds: a LIGGGHTS rung that is one of them is compared
+// with the other (not with a mean that holds it), so its error is the seeds'
+// difference; another run is compared with their mean; the ladder carries
+// the reference's noise floor.
+TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
+  const fs::path root = fs::temp_directory_path() / ("repose_ladder_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  write_run(root / "seed1", 0.004);
+  write_run(root / "seed2", 0.006);
+  write_run(root / "other", 0.005);
+  const std::string source = std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration/scenes/indent.yaml";
+  std::ifstream in(source);
+  std::ofstream(root / "indent_dem.yaml") << in.rdbuf() << "dem: {grain_radius_m: 0.002, time_step_s: 1.0e-5}\n";
+  const std::string scene = (root / "indent_dem.yaml").string();
+  const std::string yaml = fmt::format(
+      "scenes:\n  - scene: {0}\n    reference: {{data: [{1}, {2}]}}\n    observables: [{{kind: height_field}}]\n"
+      "parameters:\n  - {{name: ground.sand.alpha, initial: 0.7}}\n"
+      "ladder:\n  heuristic_cell_sizes_m: [0.008]\n  multires: false\n  timing_repeats: 1\n"
+      "  liggghts:\n    - {{scene: {0}, data: {1}}}\n    - {{scene: {0}, data: {3}}}\n",
+      scene, (root / "seed1").string(), (root / "seed2").string(), (root / "other").string());
+  const CalibrationProblem problem(load_calibration_from_string(yaml, (root / "inline.yaml").string()), solver_registry());
+  const Ladder ladder = measure_ladder(problem, problem.initial_values());
+  // Δh of the seeds differ by 2 mm on 16 of 256 cells; "other" differs from their mean by 0 mm
+  const double seeds_apart = 0.002 * 0.25;
+  ASSERT_TRUE(ladder.noise_floor_m.has_value());
+  EXPECT_NEAR(*ladder.noise_floor_m, seeds_apart, 1e-12);
+  int liggghts = 0;
+  for (const LadderRung& r : ladder.rungs) {
+    if (r.kind != "liggghts") continue;
+    ++liggghts;
+    if (r.label.find("one seed") != std::string::npos) {
+      EXPECT_NEAR(r.rmse_m, seeds_apart, 1e-12);
+    } else {
+      EXPECT_NEAR(r.rmse_m, 0.0, 1e-12);
+    }
+    EXPECT_EQ(r.cpu_time_s.value_or(0.0), 8.0);
+  }
+  EXPECT_EQ(liggghts, 2);
+  fs::remove_all(root);
 }
 
 }  // namespace
