@@ -120,34 +120,17 @@ class ScoopRun {
   int first_ = 0, last_ = 0;
 };
 
-void BM_ScoopStep(benchmark::State& bench) {
-  ScoopRun run(Case::kScoop);
-  run.run(bench);
-}
-void BM_CarryStep(benchmark::State& bench) {
-  ScoopRun run(Case::kCarry);
-  run.run(bench);
-}
-void BM_TipStep(benchmark::State& bench) {
-  ScoopRun run(Case::kTip);
+template <Case kCase>
+void BM_Step(benchmark::State& bench) {
+  ScoopRun run(kCase);
   run.run(bench);
 }
 
-void BM_ScoopGroundPathStep(benchmark::State& bench) {
-  ScoopRun run(Case::kScoopGroundPath);
-  run.run(bench);
-}
-
-void BM_TipOsmesaStep(benchmark::State& bench) {
-  ScoopRun run(Case::kTipOsmesa);
-  run.run(bench);
-}
-
-BENCHMARK(BM_ScoopStep)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ScoopGroundPathStep)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_CarryStep)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_TipStep)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_TipOsmesaStep)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step<Case::kScoop>)->Name("BM_ScoopStep")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step<Case::kScoopGroundPath>)->Name("BM_ScoopGroundPathStep")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step<Case::kCarry>)->Name("BM_CarryStep")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step<Case::kTip>)->Name("BM_TipStep")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step<Case::kTipOsmesa>)->Name("BM_TipOsmesaStep")->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace repose

@@ -54,15 +54,6 @@ struct LiggghtsRun {
   HeightField initial_height, final_height;
 };
 
-HeightField read_heights(const std::string& path, const Grid& grid, const std::string& scene_path) {
-  const NpyShape shape = read_npy_shape(path);
-  if (shape.rows != grid.ny || shape.cols != grid.nx) {
-    throw InputError(fmt::format("{}: {} x {} heights, its scene's grid ({}) is {} x {}", path, shape.rows, shape.cols,
-                                 scene_path, grid.ny, grid.nx));
-  }
-  return HeightField(grid, read_npy_2d(path, grid.ny, grid.nx));
-}
-
 LiggghtsRun load_liggghts_rung(const LadderReference& ref, const SectionTypes& sections) {
   const Scene scene = load_scene(ref.scene_path, sections);
   if (dem_of(scene) == nullptr) {
@@ -71,8 +62,9 @@ LiggghtsRun load_liggghts_rung(const LadderReference& ref, const SectionTypes& s
   const Grid& grid = scene.ground.grid;
   LiggghtsRun run;
   run.directory = ref.directory;
-  run.initial_height = read_heights((fs::path(ref.directory) / "height_initial.npy").string(), grid, ref.scene_path);
-  run.final_height = read_heights((fs::path(ref.directory) / "height_final.npy").string(), grid, ref.scene_path);
+  const std::string what = "a ladder run of " + ref.scene_path;
+  run.initial_height = read_height_field((fs::path(ref.directory) / "height_initial.npy").string(), grid, what);
+  run.final_height = read_height_field((fs::path(ref.directory) / "height_final.npy").string(), grid, what);
   run.rung.kind = "liggghts";
   run.rung.resolution_m = 2.0 * dem_of(scene)->grain_radius_m;
   run.rung.label = "LIGGGHTS d = " + millimetres(run.rung.resolution_m);

@@ -26,10 +26,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-HeightField read_field(const std::string& path, const Grid& grid, const std::string& what) {
+}  // namespace
+
+HeightField read_height_field(const std::string& path, const Grid& grid, const std::string& what) {
   // the header's shape is checked before any data is read (npy_io.h)
   const NpyShape shape = read_npy_shape(path);
-  if (shape.rows != grid.ny || shape.cols != grid.nx) {
+  if (shape.rows != static_cast<std::uint64_t>(grid.ny) || shape.cols != static_cast<std::uint64_t>(grid.nx)) {
     throw InputError(fmt::format("{}: {} holds {} rows x {} columns, the scene's grid is {} x {} (ny x nx)", path,
                                  what, shape.rows, shape.cols, grid.ny, grid.nx));
   }
@@ -37,6 +39,8 @@ HeightField read_field(const std::string& path, const Grid& grid, const std::str
   if (!a.allFinite()) throw InputError(fmt::format("{}: {} holds a non-finite height", path, what));
   return HeightField(grid, a);
 }
+
+namespace {
 
 // The scene starting from a given ground (the reference's initial surface).
 Scene starting_from(Scene scene, const HeightField& initial) {
@@ -87,8 +91,8 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
   double wall_s = 0.0, cpu_s = 0.0;
   bool costed = true;
   for (const std::string& dir : ref.directories) {
-    s.seed_initial.push_back(read_field((fs::path(dir) / "height_initial.npy").string(), grid, "the reference's initial surface"));
-    s.seed_final.push_back(read_field((fs::path(dir) / "height_final.npy").string(), grid, "the reference's final surface"));
+    s.seed_initial.push_back(read_height_field((fs::path(dir) / "height_initial.npy").string(), grid, "the reference's initial surface"));
+    s.seed_final.push_back(read_height_field((fs::path(dir) / "height_final.npy").string(), grid, "the reference's final surface"));
     const auto cost = read_run_cost(dir);
     costed = costed && cost.has_value();
     if (cost) {

@@ -43,6 +43,10 @@ struct PreparedScene {
   bool fit() const { return entry.role == CalibrationScene::Role::kFit; }
 };
 
+// A reference run's surface (.npy) on the scene's grid; InputError naming the
+// file and `what` for another shape or a non-finite height.
+HeightField read_height_field(const std::string& path, const Grid& grid, const std::string& what);
+
 class CalibrationProblem {
  public:
   // Loads the scenes and references; a LIGGGHTS reference that is not made
