@@ -35,7 +35,7 @@ StiffnessBlocks stiffness(const SheetModel& model, const SheetParams& params, co
       const double length = d.norm();
       if (length == 0.0) continue;
       const Eigen::Vector3d n = d / length;
-      const double ks = (s.diagonal ? kc.diagonal_n_per_m : kc.edge_n_per_m) * s.share * model.cell_stiffness[c];
+      const double ks = spring_constant_n_per_m(kc, s, model.cell_stiffness[c]);
       const double geometric = std::max(0.0, 1.0 - s.rest_length_m / length);
       const Eigen::Matrix3d h = ks * (n * n.transpose() + geometric * (identity - n * n.transpose()));
       k.add(s.a, s.a, h);
