@@ -58,7 +58,7 @@ void write_paper_fit_report(const PaperFitSpec& spec, const std::vector<double>&
                       std::isnan(r.published) ? "" : fmt::format("{:.3f}", r.model / r.published));
     csv << fmt::format("measure,\"{}\",{},{}\n", r.quantity, r.model, r.published);
   }
-  md << fmt::format("\nCPU time {:.1f} s (this thread; runs in two threads)\n", cpu_s);
+  md << fmt::format("\nCPU time {:.1f} s (the process, every thread)\n", cpu_s);
 }
 
 }  // namespace repose

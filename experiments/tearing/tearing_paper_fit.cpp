@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -32,7 +33,6 @@
 #include "experiments/solvers/solver_registry.h"
 #include "experiments/tearing/paper_fit_report.h"
 #include "experiments/tearing/paper_fit_spec.h"
-#include "models/core/base/cpu_time.h"
 #include "validation/calibration/calibration_cost.h"
 #include "validation/calibration/calibration_uncertainty.h"
 #include "validation/calibration/halton.h"
@@ -99,6 +99,14 @@ std::vector<double> residuals(const PaperFitSpec& spec, const std::vector<Case>&
           m["cd"]["tensile.strength_n_per_m"] / spec.cd_strength_n_per_m - 1.0};
 }
 
+std::vector<double> from_unit(const PaperFitSpec& spec, const std::vector<double>& u) {
+  std::vector<double> x;
+  for (std::size_t k = 0; k < u.size(); ++k) {
+    x.push_back(spec.parameters[k].lower + u[k] * (spec.parameters[k].upper - spec.parameters[k].lower));
+  }
+  return x;
+}
+
 struct Start {
   std::vector<double> x;
   double cost = 0.0;
@@ -106,6 +114,7 @@ struct Start {
   std::string termination;
 };
 
+// From u (unit coordinates, see main) to the best u of this start.
 Start solve_from(const PaperFitSpec& spec, CalibrationCost* cost, std::vector<double> x) {
   ceres::Problem::Options problem_options;
   problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
@@ -114,8 +123,8 @@ Start solve_from(const PaperFitSpec& spec, CalibrationCost* cost, std::vector<do
   for (double& v : x) blocks.push_back(&v);
   problem.AddResidualBlock(cost, nullptr, blocks);
   for (std::size_t k = 0; k < x.size(); ++k) {
-    problem.SetParameterLowerBound(blocks[k], 0, spec.parameters[k].lower);
-    problem.SetParameterUpperBound(blocks[k], 0, spec.parameters[k].upper);
+    problem.SetParameterLowerBound(blocks[k], 0, 0.0);
+    problem.SetParameterUpperBound(blocks[k], 0, 1.0);
   }
   ceres::Solver::Options options;
   options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
@@ -140,7 +149,7 @@ CalibrationUncertainty uncertainty_at(const PaperFitSpec& spec, CalibrationCost*
   for (double& v : x) blocks.push_back(&v);
   problem.AddResidualBlock(cost, nullptr, blocks);
   for (const PaperFitParameter& p : spec.parameters) {
-    ranges.push_back(p.upper - p.lower);
+    ranges.push_back(1.0);  // u is already scaled by the bounds
     labels.push_back(p.name);
   }
   return estimate_uncertainty(problem, blocks, ranges, labels, final_cost, 1e-3);
@@ -155,40 +164,37 @@ int main(int argc, char** argv) {
   app.add_option("--out", out, "output folder");
   CLI11_PARSE(app, argc, argv);
   try {
-    const Stopwatch clock;
+    const std::clock_t cpu_start = std::clock();  // the process: runs are on other threads
     const PaperFitSpec spec = load_paper_fit_spec(file);
     std::filesystem::create_directories(out);
     const std::vector<Case> tensile = compile_cases(spec.tensile_scene, spec.seeds, true);
+    // Ceres works on u in [0, 1]^3, x = lower + u (upper - lower): parameters
+    // of units as far apart as N/m and strain make J^T J too ill-conditioned
+    // for ceres::Covariance otherwise.
     const CalibrationCost::Evaluator evaluate = [&](const std::vector<std::vector<double>>& points) {
       std::vector<std::vector<double>> r;
-      for (const auto& x : points) r.push_back(residuals(spec, tensile, x));
+      for (const auto& u : points) r.push_back(residuals(spec, tensile, from_unit(spec, u)));
       return r;
     };
-    std::vector<double> lower, upper, step, initial;
+    std::vector<double> step, initial;
     for (const PaperFitParameter& p : spec.parameters) {
-      lower.push_back(p.lower);
-      upper.push_back(p.upper);
-      step.push_back(p.step);
-      initial.push_back(p.initial);
+      step.push_back(p.step / (p.upper - p.lower));
+      initial.push_back((p.initial - p.lower) / (p.upper - p.lower));
     }
-    CalibrationCost cost(evaluate, lower, upper, step, 4);
+    CalibrationCost cost(evaluate, std::vector<double>(3, 0.0), std::vector<double>(3, 1.0), step, 4);
     std::vector<Start> starts{solve_from(spec, &cost, initial)};
     const Halton halton(static_cast<int>(initial.size()), 1);
-    for (int s = 1; s < spec.starts; ++s) {
-      std::vector<double> x;
-      const std::vector<double> u = halton.point(static_cast<std::uint64_t>(s));
-      for (std::size_t k = 0; k < u.size(); ++k) x.push_back(lower[k] + u[k] * (upper[k] - lower[k]));
-      starts.push_back(solve_from(spec, &cost, x));
-    }
+    for (int s = 1; s < spec.starts; ++s) starts.push_back(solve_from(spec, &cost, halton.point(static_cast<std::uint64_t>(s))));
     std::size_t best = 0;
     for (std::size_t s = 1; s < starts.size(); ++s) best = starts[s].cost < starts[best].cost ? s : best;
-    const std::vector<double> x = starts[best].x;
-    const CalibrationUncertainty u = uncertainty_at(spec, &cost, x, starts[best].cost);
+    const std::vector<double> x = from_unit(spec, starts[best].x);
+    CalibrationUncertainty u = uncertainty_at(spec, &cost, starts[best].x, starts[best].cost);
+    for (std::size_t k = 0; k < 3; ++k) u.standard_error[k] *= spec.parameters[k].upper - spec.parameters[k].lower;
     write_paper_fit_report(spec, x, u, starts[best].cost, run_cases(tensile, x, kTensileMeasures),
                            spec.tear_scene.empty() ? std::map<std::string, std::map<std::string, double>>{}
                                                    : run_cases(compile_cases(spec.tear_scene, spec.tear_seeds, false), x,
                                                                {"tear.work_per_length_j_per_m", "grip.peak_force_n"}),
-                           clock.cpu_s(), out);
+                           static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC, out);
     for (const Start& s : starts) {
       std::printf("start: cost %.6g after %d iterations (%s)\n", s.cost, s.iterations, s.termination.c_str());
     }
