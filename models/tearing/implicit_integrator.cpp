@@ -14,18 +14,11 @@ namespace repose {
 
 namespace {
 
-// -K (the stiffness, positive) as 3 x 3 blocks between vertex pairs.
-struct StiffnessBlocks {
-  std::vector<std::pair<int, int>> pairs;
-  std::vector<Eigen::Matrix3d> blocks;  // block (a, b) of -K; (b, a) is its transpose
-  void add(int a, int b, const Eigen::Matrix3d& m) {
-    pairs.emplace_back(a, b);
-    blocks.push_back(m);
-  }
-};
-
-StiffnessBlocks stiffness(const SheetModel& model, const SheetParams& params, const SheetState& state) {
-  StiffnessBlocks k;
+// Calls add(a, b, block) for every 3 x 3 block (a, b) of -K (the stiffness,
+// positive) of the intact springs and acting bending terms; a pair may come
+// several times, its blocks add up.
+template <class Add>
+void for_each_stiffness_block(const SheetModel& model, const SheetParams& params, const SheetState& state, Add&& add) {
   const SpringConstants kc = spring_constants(model, params);
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (int c = 0; c < model.cell_count(); ++c) {
@@ -35,13 +28,13 @@ StiffnessBlocks stiffness(const SheetModel& model, const SheetParams& params, co
       const double length = d.norm();
       if (length == 0.0) continue;
       const Eigen::Vector3d n = d / length;
-      const double ks = (s.diagonal ? kc.diagonal_n_per_m : kc.edge_n_per_m) * s.share * model.cell_stiffness[c];
+      const double ks = spring_constant_n_per_m(kc, s, model.cell_stiffness[c]);
       const double geometric = std::max(0.0, 1.0 - s.rest_length_m / length);
       const Eigen::Matrix3d h = ks * (n * n.transpose() + geometric * (identity - n * n.transpose()));
-      k.add(s.a, s.a, h);
-      k.add(s.b, s.b, h);
-      k.add(s.a, s.b, -h);
-      k.add(s.b, s.a, -h);
+      add(s.a, s.a, h);
+      add(s.b, s.b, h);
+      add(s.a, s.b, -h);
+      add(s.b, s.a, -h);
     }
   }
   constexpr double kCoefficient[3] = {1.0, -2.0, 1.0};
@@ -50,10 +43,40 @@ StiffnessBlocks stiffness(const SheetModel& model, const SheetParams& params, co
     const int v[3] = {t.a, t.b, t.c};
     const double kb = kc.bending_n_per_m * t.weight;
     for (int p = 0; p < 3; ++p) {
-      for (int q = 0; q < 3; ++q) k.add(v[p], v[q], kb * kCoefficient[p] * kCoefficient[q] * identity);
+      for (int q = 0; q < 3; ++q) add(v[p], v[q], kb * kCoefficient[p] * kCoefficient[q] * identity);
     }
   }
-  return k;
+}
+
+// Every (row, col) of the free system any intact sheet can fill: the mass
+// diagonal, each spring's four blocks and each bending term's nine.
+Eigen::SparseMatrix<double> system_pattern(const SheetModel& model, const std::vector<int>& free_index, int free_count) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  auto add_block = [&](int va, int vb) {
+    for (int p = 0; p < 3; ++p) {
+      for (int q = 0; q < 3; ++q) {
+        const int row = free_index[3 * va + p], col = free_index[3 * vb + q];
+        if (row >= 0 && col >= 0) triplets.emplace_back(row, col, 0.0);
+      }
+    }
+  };
+  for (int v = 0; v < model.vertex_count(); ++v) add_block(v, v);
+  for (int c = 0; c < model.cell_count(); ++c) {
+    for (const CellSpring& s : cell_springs(model, c)) {
+      add_block(s.a, s.b);
+      add_block(s.b, s.a);
+    }
+  }
+  for (const BendingTerm& t : model.bending) {
+    const int v[3] = {t.a, t.b, t.c};
+    for (const int a : v) {
+      for (const int b : v) add_block(a, b);
+    }
+  }
+  Eigen::SparseMatrix<double> pattern(free_count, free_count);
+  pattern.setFromTriplets(triplets.begin(), triplets.end());
+  pattern.makeCompressed();
+  return pattern;
 }
 
 }  // namespace
@@ -70,15 +93,17 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
       if (!(model.held_axes[static_cast<std::size_t>(v)] & (1u << a))) free_index_[3 * v + a] = free_count_++;
     }
   }
+  pattern_ = system_pattern(model, free_index_, free_count_);
 }
 
 void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd& dv_all, Eigen::SparseMatrix<double>* matrix,
                                   Eigen::VectorXd* rhs_out) const {
   const double c = model_.spec.damping_per_s;
   const Eigen::Vector3d& g = model_.spec.gravity_m_per_s2;
-  const StiffnessBlocks k = stiffness(model_, params_, state);
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(9 * k.blocks.size() + 3 * model_.vertex_count());
+  // the fixed pattern, refilled: no sort of millions of triplets each step
+  Eigen::SparseMatrix<double>& a_matrix = *matrix;
+  a_matrix = pattern_;
+  a_matrix.coeffs().setZero();
   Eigen::VectorXd& rhs = *rhs_out;
   rhs.resize(free_count_);
   for (int v = 0; v < model_.vertex_count(); ++v) {
@@ -86,31 +111,29 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
     for (int a = 0; a < 3; ++a) {
       const int row = free_index_[3 * v + a];
       if (row < 0) continue;
-      triplets.emplace_back(row, row, m * (1.0 + c * dt_));
+      a_matrix.coeffRef(row, row) += m * (1.0 + c * dt_);
       rhs[row] = dt_ * (forces_(a, v) + m * g[a] - c * m * state.velocities(a, v));
     }
   }
   const Eigen::Map<const Eigen::VectorXd> v0(state.velocities.data(), 3 * model_.vertex_count());
-  for (std::size_t e = 0; e < k.blocks.size(); ++e) {
-    const auto [va, vb] = k.pairs[e];
+  const double dt2 = dt_ * dt_;
+  for_each_stiffness_block(model_, params_, state, [&](int va, int vb, const Eigen::Matrix3d& block) {
     for (int p = 0; p < 3; ++p) {
       const int row = free_index_[3 * va + p];
       if (row < 0) continue;
       for (int q = 0; q < 3; ++q) {
-        const double kpq = k.blocks[e](p, q);  // of -K
+        const double kpq = block(p, q);  // of -K
         // dt K v_n on the right; -dt^2 K dv on the left, held dv moved right
-        rhs[row] -= dt_ * dt_ * kpq * v0[3 * vb + q];
+        rhs[row] -= dt2 * kpq * v0[3 * vb + q];
         const int col = free_index_[3 * vb + q];
         if (col >= 0) {
-          triplets.emplace_back(row, col, dt_ * dt_ * kpq);
+          a_matrix.coeffRef(row, col) += dt2 * kpq;
         } else {
-          rhs[row] -= dt_ * dt_ * kpq * dv_all[3 * vb + q];
+          rhs[row] -= dt2 * kpq * dv_all[3 * vb + q];
         }
       }
     }
-  }
-  matrix->resize(free_count_, free_count_);
-  matrix->setFromTriplets(triplets.begin(), triplets.end());
+  });
 }
 
 int ImplicitIntegrator::step(SheetState* state) {
@@ -136,8 +159,12 @@ int ImplicitIntegrator::step(SheetState* state) {
   solver.setTolerance(1e-12);
   solver.setMaxIterations(std::max(1000, 2 * free_count_));
   solver.compute(system);
-  const Eigen::VectorXd dv = solver.solve(rhs);
+  // warm start from the last step's dv: the velocity change varies slowly
+  if (last_dv_.size() != free_count_) last_dv_ = Eigen::VectorXd::Zero(free_count_);
+  const Eigen::VectorXd dv = solver.solveWithGuess(rhs, last_dv_);
   REPOSE_DEMAND(solver.info() == Eigen::Success && dv.allFinite());
+  last_dv_ = dv;
+  last_iterations_ = static_cast<int>(solver.iterations());
   state->grip_force_n.setZero();
   for (int v = 0; v < model_.vertex_count(); ++v) {
     const int grip = model_.grip_of_vertex[static_cast<std::size_t>(v)];

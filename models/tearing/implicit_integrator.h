@@ -4,9 +4,11 @@
 //   (M (1 + c dt) - dt^2 K) dv = dt (f(x_n) + dt K v_n + M g - c M v_n),
 //   v_{n+1} = v_n + dv,   x_{n+1} = x_n + dt v_{n+1},
 // K = df/dx at x_n from the intact springs and acting bending terms, solved
-// by Eigen's conjugate gradients (relative residual 1e-12) over the free
+// by Eigen's conjugate gradients (relative residual 1e-12, Jacobi
+// preconditioner, warm-started from the last step's dv) over the free
 // degrees of freedom (held axes of gripped vertices move with their grip and
-// enter the right-hand side).
+// enter the right-hand side). The matrix is refilled each step into the
+// sparsity pattern of the whole sheet, built once (torn springs leave zeros).
 // Tearing is the explicit integrator's rule, judged at x_n.
 //
 // It is the converged yardstick, not the fast path: stable at any step,
@@ -38,6 +40,8 @@ class ImplicitIntegrator {
 
   // One step; returns the number of cells torn in it.
   int step(SheetState* state);
+  // Conjugate-gradient iterations of the last step.
+  int last_iterations() const { return last_iterations_; }
 
  private:
   // The system over the free degrees of freedom; dv_all holds the held ones.
@@ -50,6 +54,9 @@ class ImplicitIntegrator {
   std::vector<int> free_index_;  // per degree of freedom 3 v + a: its row, or -1 when held
   int free_count_ = 0;
   Eigen::Matrix3Xd forces_;
+  Eigen::VectorXd last_dv_;  // the last step's solution: the next solve's first guess
+  Eigen::SparseMatrix<double> pattern_;  // every entry the system can have, values 0
+  int last_iterations_ = 0;
 };
 
 }  // namespace repose

@@ -7,25 +7,28 @@ namespace repose {
 
 SpringConstants spring_constants(const SheetModel& model, const SheetParams& params) {
   return {0.75 * params.stiffness_n_per_m, 0.375 * params.stiffness_n_per_m,
-          model.spec.bending_stiffness_n_m / (model.cell_size_m * model.cell_size_m)};
+          model.spec.bending_stiffness_n_m / (model.cell_size_m * model.cell_size_m), params.fibre_anisotropy,
+          model.spec.fibres.grain_direction_rad};
+}
+
+double spring_constant_n_per_m(const SpringConstants& k, const CellSpring& s, double cell_stiffness) {
+  const double direction = k.anisotropy == 0.0 ? 1.0 : 1.0 + k.anisotropy * std::cos(2.0 * (s.direction_rad - k.grain_rad));
+  return (s.diagonal ? k.diagonal_n_per_m : k.edge_n_per_m) * s.share * cell_stiffness * direction;
 }
 
 std::array<CellSpring, 6> cell_springs(const SheetModel& model, int cell) {
   const auto [v00, v10, v11, v01] = model.corners(cell);
   const double h = model.cell_size_m, d = h * std::numbers::sqrt2;
-  return {CellSpring{v00, v10, h, 0.5, false}, CellSpring{v10, v11, h, 0.5, false},
-          CellSpring{v01, v11, h, 0.5, false}, CellSpring{v00, v01, h, 0.5, false},
-          CellSpring{v00, v11, d, 1.0, true},  CellSpring{v10, v01, d, 1.0, true}};
+  constexpr double kQuarter = 0.25 * std::numbers::pi;
+  return {CellSpring{v00, v10, h, 0.5, false, 0.0},          CellSpring{v10, v11, h, 0.5, false, 2 * kQuarter},
+          CellSpring{v01, v11, h, 0.5, false, 0.0},          CellSpring{v00, v01, h, 0.5, false, 2 * kQuarter},
+          CellSpring{v00, v11, d, 1.0, true, kQuarter}, CellSpring{v10, v01, d, 1.0, true, 3 * kQuarter}};
 }
 
 namespace {
 
 bool edge_held(const std::array<int, 2>& cells, const SheetState& state) {
   return (cells[0] >= 0 && state.intact(cells[0])) || (cells[1] >= 0 && state.intact(cells[1]));
-}
-
-double spring_constant(const SpringConstants& k, const CellSpring& s, double weight) {
-  return (s.diagonal ? k.diagonal_n_per_m : k.edge_n_per_m) * s.share * weight;
 }
 
 }  // namespace
@@ -58,7 +61,7 @@ void add_cell_forces(const std::array<CellSpring, 6>& springs, const CellStretch
   for (int q = 0; q < 6; ++q) {
     if (s.length[q] == 0.0) continue;  // coincident ends: no direction to push along
     const CellSpring& sp = springs[q];
-    const Eigen::Vector3d f = (spring_constant(k, sp, weight) * (s.length[q] - sp.rest_length_m) / s.length[q]) * s.d[q];
+    const Eigen::Vector3d f = (spring_constant_n_per_m(k, sp, weight) * (s.length[q] - sp.rest_length_m) / s.length[q]) * s.d[q];
     forces->col(sp.a) += f;
     forces->col(sp.b) -= f;
   }
@@ -122,7 +125,7 @@ double potential_energy(const SheetModel& model, const SheetParams& params, cons
     if (!state.intact(c)) continue;
     for (const CellSpring& s : cell_springs(model, c)) {
       const double stretch = (x.col(s.b) - x.col(s.a)).norm() - s.rest_length_m;
-      energy += 0.5 * spring_constant(k, s, model.cell_stiffness[c]) * stretch * stretch;
+      energy += 0.5 * spring_constant_n_per_m(k, s, model.cell_stiffness[c]) * stretch * stretch;
     }
   }
   for (const BendingTerm& t : model.bending) {

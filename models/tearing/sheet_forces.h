@@ -9,6 +9,7 @@
 #include "models/tearing/sheet_model.h"
 #include "models/tearing/sheet_params.h"
 #include "models/tearing/sheet_state.h"
+#include "models/tearing/tear_limit.h"
 
 namespace repose {
 
@@ -17,18 +18,28 @@ struct SpringConstants {
   double edge_n_per_m = 0.0;      // a full (interior) edge: 3/4 E t
   double diagonal_n_per_m = 0.0;  // 3/8 E t
   double bending_n_per_m = 0.0;   // D / h^2
+  double anisotropy = 0.0;        // SheetParams::fibre_anisotropy
+  double grain_rad = 0.0;         // the fibres' grain direction
 };
 SpringConstants spring_constants(const SheetModel& model, const SheetParams& params);
 
-// One of a cell's six springs: vertices, rest length, and the fraction of
-// the edge/diagonal constant the cell holds (1/2 for an edge, 1 for a diagonal).
+// One of a cell's six springs: vertices, rest length, the fraction of the
+// edge/diagonal constant the cell holds (1/2 for an edge, 1 for a
+// diagonal), and its direction in the rest sheet (0, pi/2, pi/4 or 3 pi/4).
 struct CellSpring {
   int a = 0, b = 0;
   double rest_length_m = 0.0;
   double share = 0.0;
   bool diagonal = false;
+  double direction_rad = 0.0;
 };
 std::array<CellSpring, 6> cell_springs(const SheetModel& model, int cell);
+
+// The constant (N/m) of spring s of a cell of stiffness factor
+// cell_stiffness (SheetModel::cell_stiffness): the edge or diagonal constant
+// x share x cell_stiffness x (1 + anisotropy cos 2(direction - grain))
+// (sheet_params.h).
+double spring_constant_n_per_m(const SpringConstants& k, const CellSpring& s, double cell_stiffness);
 
 // Whether bending term t acts: both its edges have an intact cell.
 bool bending_acts(const BendingTerm& t, const SheetState& state);
@@ -48,11 +59,6 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
 // Whether cell c has a spring past its tear strain: the one
 // rule both tear_and_internal_forces and tearing.h apply.
 bool cell_overstretched(const SheetModel& model, const SheetParams& params, const SheetState& state, int c);
-
-// The strain past which cell c tears: tear_strain x its tear factor.
-inline double cell_tear_strain(const SheetModel& model, const SheetParams& params, int c) {
-  return params.tear_strain * model.cell_tear_factor[c];
-}
 
 // Elastic energy of the intact springs and acting bending terms (J).
 double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state);

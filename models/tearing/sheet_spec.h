@@ -29,6 +29,10 @@ struct GripSpec {
   std::array<bool, 3> held_axes = {true, true, true};  // x, y, z
 };
 
+// Which limit tears a cell (tear_limit.h): the seed's one strain for every
+// mesh, or a strain set by the energy per unit tear length and the cell size.
+enum class TearRule { kStrain, kEnergy };
+
 struct SheetSpec {
   double width_m = 0.1;
   double height_m = 0.1;
@@ -46,6 +50,11 @@ struct SheetSpec {
   // A cell's tear strain is tear_strain x (relative fibre density)^exponent
   // (sheet_model.h); 0, the default, is the seed's single limit. In [0, 8].
   double tear_strain_density_exponent = 0.0;
+  // The tear limit (tear_limit.h): kStrain, the default, is the seed's rule
+  // (SheetParams::tear_strain on every mesh, so tearing depends on the
+  // mesh); kEnergy sets the strain from SheetParams::tear_energy_j_per_m and
+  // the cell size, so the work per unit tear length does not.
+  TearRule tear_rule = TearRule::kStrain;
   // Velocity damping (1/s): each step v /= 1 + damping_per_s * dt (air drag
   // and internal losses lumped, applied implicitly so it never destabilises).
   double damping_per_s = 2.0e3;

@@ -14,7 +14,7 @@ double stable_time_step_s(const SheetModel& model, const SheetParams& params) {
   Eigen::VectorXd bound = Eigen::VectorXd::Zero(model.vertex_count());
   for (int c = 0; c < model.cell_count(); ++c) {
     for (const CellSpring& s : cell_springs(model, c)) {
-      const double ks = (s.diagonal ? k.diagonal_n_per_m : k.edge_n_per_m) * s.share * model.cell_stiffness[c];
+      const double ks = spring_constant_n_per_m(k, s, model.cell_stiffness[c]);
       const double cross = ks / std::sqrt(m[s.a] * m[s.b]);
       bound[s.a] += ks / m[s.a] + cross;
       bound[s.b] += ks / m[s.b] + cross;

@@ -6,9 +6,10 @@
 // cells are stored in (a cell's springs are its own, sheet_model.h). An edge
 // shared by two cells has the same strain in both, so both tear.
 //
-// The limit is one strain for every spring, as in the seed; in a fibre image
-// the soft cells between clumps stretch most and go first, which is what
-// makes the tear follow the gaps between clumps.
+// The limit is one strain for every spring, as in the seed (or, optionally,
+// one set by an energy per unit tear length and the cell size: tear_limit.h);
+// in a fibre image the soft cells between clumps stretch most and go first,
+// which is what makes the tear follow the gaps between clumps.
 
 #include <vector>
 
@@ -18,7 +19,7 @@
 
 namespace repose {
 
-// Intact cells with a spring strained past params.tear_strain, in cell order.
+// Intact cells with a spring strained past their limit (tear_limit.h), in cell order.
 std::vector<int> overstretched_cells(const SheetModel& model, const SheetParams& params, const SheetState& state);
 
 // Marks overstretched_cells torn at step `step_number`; returns how many.

@@ -18,6 +18,7 @@ void sheet_fields(V& v, SheetSpec& s) {
   v.number("bending_stiffness_n_m", s.bending_stiffness_n_m, Range::non_negative());
   v.number("stiffness_density_exponent", s.stiffness_density_exponent, Range::closed(0, 8));
   v.number("tear_strain_density_exponent", s.tear_strain_density_exponent, Range::closed(0, 8));
+  v.choice("tear_rule", s.tear_rule, ChoiceTable<TearRule>{{"strain", TearRule::kStrain}, {"energy", TearRule::kEnergy}});
   v.number("damping_per_s", s.damping_per_s, Range::non_negative());
   v.vec3("gravity_m_per_s2", s.gravity_m_per_s2, Range::any());
   v.number("notch_length_m", s.notch_length_m, Range::non_negative());
@@ -28,6 +29,8 @@ template <class V>
 void params_fields(V& v, SheetParams& p) {
   v.number("stiffness_n_per_m", p.stiffness_n_per_m, Range::positive());
   v.number("tear_strain", p.tear_strain, Range::left_open(0, 10));
+  v.number("tear_energy_j_per_m", p.tear_energy_j_per_m, Range::positive());
+  v.number("fibre_anisotropy", p.fibre_anisotropy, Range::right_open(0, 1));
 }
 
 template <class V>
@@ -75,15 +78,23 @@ void grip_fields(V& v, GripSpec& g) {
   v.boolean("hold_z", g.held_axes[2]);
 }
 
+template <class V>
+void tensile_fields(V& v, TensileOptions& t) {
+  v.number("speed_m_per_s", t.speed_m_per_s, Range::positive());
+  v.number("max_strain", t.max_strain, Range::positive());
+  v.number("stiffness_strain_fraction", t.stiffness_strain_fraction, Range::left_open(0, 1));
+}
+
 const auto kSheet = [](auto& v, SheetSpec& x) { sheet_fields(v, x); };
 const auto kParams = [](auto& v, SheetParams& x) { params_fields(v, x); };
 const auto kSettings = [](auto& v, TearRunOptions& x) { settings_fields(v, x); };
 const auto kFibres = [](auto& v, FibreOptions& x) { fibre_fields(v, x); };
 const auto kTwist = [](auto& v, Twist& x) { twist_fields(v, x); };
 const auto kGrip = [](auto& v, GripSpec& x) { grip_fields(v, x); };
+const auto kTensile = [](auto& v, TensileOptions& x) { tensile_fields(v, x); };
 
 std::vector<std::string> section_keys() {
-  std::vector<std::string> keys = field_keys<SheetSpec>(kSheet, {"fibres", "twist", "grips"});
+  std::vector<std::string> keys = field_keys<SheetSpec>(kSheet, {"fibres", "twist", "grips", "tensile"});
   for (const auto& k : field_keys<SheetParams>(kParams)) keys.push_back(k);
   for (const auto& k : field_keys<TearRunOptions>(kSettings)) keys.push_back(k);
   return keys;
@@ -92,7 +103,16 @@ std::vector<std::string> section_keys() {
 void read_grips(const YamlMap& map, TearingSection* s) {
   const auto twist = map.get("twist");
   const auto grips = map.get("grips");
-  if (twist && grips) grips->fail("either twist or grips, not both");
+  const auto tensile = map.get("tensile");
+  if ((twist ? 1 : 0) + (grips ? 1 : 0) + (tensile ? 1 : 0) > 1) {
+    (tensile ? tensile : grips)->fail("one of twist, grips and tensile");
+  }
+  if (tensile) {
+    TensileOptions t;
+    read_fields_into(tensile->map(field_keys<TensileOptions>(kTensile)), kTensile, t);
+    s->sheet.grips = tensile_grips(s->sheet.width_m, s->sheet.height_m, s->sheet.cell_size_m(), t.speed_m_per_s);
+    s->tensile = t;
+  }
   if (twist) {
     Twist t;
     read_fields_into(twist->map(field_keys<Twist>(kTwist)), kTwist, t);
@@ -121,6 +141,13 @@ void TearingSection::write_yaml(YAML::Emitter& out) const {
   settings_fields(writer, settings_copy);
   out << YAML::Key << "fibres" << YAML::Value;
   write_fields_map(out, fibres_copy, kFibres);
+  if (tensile) {  // its grips follow from it
+    TensileOptions tensile_copy = *tensile;
+    out << YAML::Key << "tensile" << YAML::Value;
+    write_fields_map(out, tensile_copy, kTensile);
+    out << YAML::EndMap;
+    return;
+  }
   out << YAML::Key << "grips" << YAML::Value << YAML::BeginSeq;
   for (const GripSpec& g : sheet.grips) write_fields_map(out, g, kGrip);
   out << YAML::EndSeq << YAML::EndMap;
@@ -128,11 +155,14 @@ void TearingSection::write_yaml(YAML::Emitter& out) const {
 
 std::string TearingSection::summary() const {
   return fmt::format("tearing: {} x {} m sheet, {} x {} cells, {} fibre layers, grain {:.4g} deg, {} grip(s), {} "
-                     "integrator, E t {} N/m, tear strain {}",
+                     "integrator, E t {} N/m, {}",
                      sheet.width_m, sheet.height_m, sheet.cells_x, sheet.cells_y(), sheet.fibres.layers,
                      sheet.fibres.grain_direction_rad / kRadPerDeg, sheet.grips.size(),
                      run.integrator == TearRunOptions::Integrator::kExplicit ? "explicit" : "implicit",
-                     params.stiffness_n_per_m, params.tear_strain);
+                     params.stiffness_n_per_m,
+                     sheet.tear_rule == TearRule::kStrain
+                         ? fmt::format("tear strain {}", params.tear_strain)
+                         : fmt::format("tear energy {} J/m", params.tear_energy_j_per_m));
 }
 
 std::shared_ptr<const SceneSection> read_tearing_section(const YamlValue& value, const Scene& common) {
@@ -151,6 +181,7 @@ std::shared_ptr<const SceneSection> read_tearing_section(const YamlValue& value,
   validate_at(map, [&] { s->sheet.validate(); });
   validate_at(map, [&] { s->params.validate(); });
   validate_at(map, [&] { s->run.validate(); });
+  if (s->tensile) validate_at(map, [&] { s->tensile->time_step_fraction = s->run.time_step_fraction; s->tensile->validate(); });
   return s;
 }
 

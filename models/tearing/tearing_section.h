@@ -16,7 +16,10 @@
 //     notch_length_m: 0.004         # a cut down from the top edge at notch_x_m
 //     notch_x_m: 0.05
 //     stiffness_n_per_m: 4.0e5      # E t; parameter stiffness_scale
-//     tear_strain: 0.02             # parameter tear_strain
+//     tear_strain: 0.02             # parameter tear_strain (tear_rule: strain)
+//     tear_rule: strain             # strain (the seed's, default) | energy (tear_limit.h)
+//     tear_energy_j_per_m: 0.16     # parameter tear_energy (tear_rule: energy)
+//     fibre_anisotropy: 0           # parameter fibre_anisotropy: springs along the grain (1 + a) stiffer
 //     integrator: explicit          # explicit | implicit
 //     time_step_fraction: 0.9       # of the explicit stable step (implicit: may exceed 1)
 //     stop_at_depth_m: 0.06         # stop once the tear is this deep (0: run time.duration_s)
@@ -24,10 +27,15 @@
 //     twist: {grip_depth_m: 0.01, gap_m: 0.01, speed_m_per_s: 4}   # the seed's pull, or:
 //     grips: [{x_min_m: 0, x_max_m: 0.045, y_min_m: 0.09, y_max_m: 0.1,
 //              velocity_m_per_s: [0, 0, -4], hold_x: true, hold_y: true, hold_z: true}, ...]
+//     # or a tensile test of the uncut strip along x (tensile_test.h; the run
+//     # is the test, not a tear):
+//     tensile: {speed_m_per_s: 0.5, max_strain: 0.2, stiffness_strain_fraction: 0.5}
 //
 // The common scene still needs its ground and time: time.duration_s is the
 // pull's length; the ground grid is not used (a tearing scene gives a small
 // flat one).
+
+#include <optional>
 
 #include "models/core/config/scene.h"
 #include "models/core/config/scene_section.h"
@@ -35,6 +43,7 @@
 #include "models/tearing/sheet_params.h"
 #include "models/tearing/sheet_spec.h"
 #include "models/tearing/tear_run.h"
+#include "models/tearing/tensile_test.h"
 
 namespace repose {
 
@@ -47,6 +56,9 @@ class TearingSection final : public SceneSection {
   // integrator, time_step_fraction, stop_at_depth_m; duration_s is the
   // scene's time.duration_s
   TearRunOptions run;
+  // Set when the scene is a tensile test (its grips are then tensile_grips());
+  // its time_step_fraction is run.time_step_fraction.
+  std::optional<TensileOptions> tensile;
 
   void write_yaml(YAML::Emitter& out) const override;
   std::string summary() const override;

@@ -1,6 +1,8 @@
 #include "models/tearing/tearing_solver.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <random>
 
 #include <fmt/format.h>
@@ -15,6 +17,7 @@
 #include "models/tearing/tear_path.h"
 #include "models/tearing/tear_run.h"
 #include "models/tearing/tearing_section.h"
+#include "models/tearing/tensile_test.h"
 
 namespace repose {
 
@@ -44,10 +47,17 @@ class CompiledTearing final : public CompiledSolver {
     images_ = draw_fibre_images(spec.fibres, spec.width_m, spec.height_m, rng);
     model_ = build_sheet_model(spec, images_);
     const SheetParams& p = section_.params;
-    parameters_ = {
-        {"stiffness_scale", "N/m", 1.0, 1.0, 1.0e9, p.stiffness_n_per_m,
-         "in-plane stiffness E t of the sheet at mean fibre density"},
-        {"tear_strain", "1", 1.0, 1.0e-6, 10.0, p.tear_strain, "a cell tears when a spring stretches past this strain"}};
+    parameters_ = {{"stiffness_scale", "N/m", 1.0, 1.0, 1.0e9, p.stiffness_n_per_m,
+                    "in-plane stiffness E t of the sheet at mean fibre density"}};
+    if (spec.tear_rule == TearRule::kStrain) {
+      parameters_.push_back(
+          {"tear_strain", "1", 1.0, 1.0e-6, 10.0, p.tear_strain, "a cell tears when a spring stretches past this strain"});
+    } else {
+      parameters_.push_back({"tear_energy", "J/m", 1.0, 1.0e-9, 1.0e6, p.tear_energy_j_per_m,
+                             "energy per unit tear length; sets the tear strain with the cell size (tear_limit.h)"});
+    }
+    parameters_.push_back({"fibre_anisotropy", "1", 1.0, 0.0, 0.99, p.fibre_anisotropy,
+                           "springs along the grain (1 + a), across it (1 - a) times stiffer (sheet_params.h)"});
   }
 
   const std::vector<ParameterInfo>& parameters() const override { return parameters_; }
@@ -55,10 +65,12 @@ class CompiledTearing final : public CompiledSolver {
   Run run(const std::vector<double>& values_si, const RunOptions& options) const override {
     check_values(parameters_, values_si, "tearing");
     const Stopwatch clock;
-    SheetParams params;
+    SheetParams params = section_.params;
     params.stiffness_n_per_m = values_si[0];
-    params.tear_strain = values_si[1];
+    (model_.spec.tear_rule == TearRule::kStrain ? params.tear_strain : params.tear_energy_j_per_m) = values_si[1];
+    params.fibre_anisotropy = values_si[2];
     params.validate();
+    if (section_.tensile) return run_tensile(params, options, clock);
     const TearRunOptions& tear = run_options_;
     const TearRun pulled = run_tear(model_, params, tear, options.progress);
     Run run;
@@ -68,11 +80,35 @@ class CompiledTearing final : public CompiledSolver {
     add_fields(pulled.state, &run);
     run.wall_s = clock.wall_s();
     run.cpu_s = clock.cpu_s();
+    run.set("simulated_time_s", pulled.state.time_s, "s");
     if (!options.output_dir.empty()) write_files(pulled.state, options.output_dir, &run);
     return run;
   }
 
  private:
+  Run run_tensile(const SheetParams& params, const RunOptions& options, const Stopwatch& clock) const {
+    const TensileResult t = run_tensile_test(model_, params, *section_.tensile);
+    Run run;
+    run.solver = "tearing";
+    run.stages = {"explicit", "tensile"};
+    run.set("tensile.stiffness_n_per_m", t.stiffness_n_per_m, "N/m");
+    run.set("tensile.strength_n_per_m", t.strength_n_per_m, "N/m");
+    run.set("tensile.strain_at_peak", t.strain_at_peak, "1");
+    run.set("tensile.broke", t.broke ? 1.0 : 0.0, "1");
+    run.set("steps", static_cast<double>(t.steps), "count");
+    run.wall_s = clock.wall_s();
+    run.cpu_s = clock.cpu_s();
+    if (!options.output_dir.empty()) {
+      std::ofstream csv(options.output_dir + "/tensile.csv");
+      csv << "strain,force_per_width_n_per_m\n";
+      for (std::size_t k = 0; k < t.strain.size(); k += std::max<std::size_t>(1, t.strain.size() / 2000)) {
+        csv << fmt::format("{},{}\n", t.strain[k], t.force_per_width_n_per_m[k]);
+      }
+      run.files.push_back("tensile.csv");
+    }
+    return run;
+  }
+
   static void add_measures(const TearRun& t, Run* run) {
     run->set("tear.length_m", t.tear_length_m, "m");
     run->set("tear.depth_m", t.path.depth_m, "m");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "models/core/base/error.h"
 
@@ -13,7 +14,8 @@ constexpr std::size_t kMemoryLimit = 4096;  // points remembered before the memo
 
 }  // namespace
 
-CalibrationCost::CalibrationCost(const CalibrationProblem& problem) : problem_(problem) {
+CalibrationCost::CalibrationCost(const CalibrationProblem& problem)
+    : evaluate_([&problem](const std::vector<std::vector<double>>& points) { return problem.fit_residuals(points); }) {
   for (const std::size_t p : problem.free()) {
     const ParameterSpec& spec = problem.spec().parameters[p];
     lower_.push_back(spec.lower);
@@ -24,13 +26,21 @@ CalibrationCost::CalibrationCost(const CalibrationProblem& problem) : problem_(p
   set_num_residuals(static_cast<int>(problem.fit_residual_count()));
 }
 
+CalibrationCost::CalibrationCost(Evaluator evaluate, std::vector<double> lower, std::vector<double> upper,
+                                 std::vector<double> step, int residual_count)
+    : evaluate_(std::move(evaluate)), lower_(std::move(lower)), upper_(std::move(upper)), step_(std::move(step)) {
+  REPOSE_DEMAND(lower_.size() == upper_.size() && step_.size() == lower_.size() && residual_count > 0);
+  for (std::size_t k = 0; k < lower_.size(); ++k) mutable_parameter_block_sizes()->push_back(1);
+  set_num_residuals(residual_count);
+}
+
 std::vector<std::vector<double>> CalibrationCost::residuals_at(const std::vector<std::vector<double>>& points) const {
   std::lock_guard lock(mutex_);
   std::vector<std::vector<double>> missing;
   for (const auto& p : points) {
     if (!memory_.count(p) && std::find(missing.begin(), missing.end(), p) == missing.end()) missing.push_back(p);
   }
-  const std::vector<std::vector<double>> computed = problem_.fit_residuals(missing);
+  const std::vector<std::vector<double>> computed = evaluate_(missing);
   if (memory_.size() + missing.size() > kMemoryLimit) memory_.clear();
   for (std::size_t k = 0; k < missing.size(); ++k) memory_[missing[k]] = computed[k];
   std::vector<std::vector<double>> out;

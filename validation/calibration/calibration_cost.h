@@ -12,6 +12,7 @@
 // already run are remembered, since Ceres evaluates a point's residuals and
 // later its Jacobian; results are bit-identical either way.
 
+#include <functional>
 #include <map>
 #include <mutex>
 #include <vector>
@@ -24,8 +25,16 @@ namespace repose {
 
 class CalibrationCost : public ceres::CostFunction {
  public:
+  // Residuals at each of several points (free parameter values), in order.
+  using Evaluator = std::function<std::vector<std::vector<double>>(const std::vector<std::vector<double>>&)>;
+
   // problem must outlive the cost.
   explicit CalibrationCost(const CalibrationProblem& problem);
+  // Any residuals of p = lower.size() parameters with their bounds and
+  // central-difference half-widths (e.g. the measures of solver runs
+  // against published values: experiments/tearing/tearing_paper_fit.cpp).
+  CalibrationCost(Evaluator evaluate, std::vector<double> lower, std::vector<double> upper, std::vector<double> step,
+                  int residual_count);
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
 
@@ -33,7 +42,7 @@ class CalibrationCost : public ceres::CostFunction {
   std::vector<std::vector<double>> residuals_at(const std::vector<std::vector<double>>& points) const;
 
  private:
-  const CalibrationProblem& problem_;
+  Evaluator evaluate_;
   std::vector<double> lower_, upper_, step_;
   mutable std::mutex mutex_;
   mutable std::map<std::vector<double>, std::vector<double>> memory_;

@@ -74,6 +74,31 @@ TEST(TearingSection, ErrorsNameTheKey) {
   EXPECT_NE(error_of("  twist: {}\n  grips: []\n").find("grips"), std::string::npos);
   EXPECT_NE(error_of("  grips: [{x_min_m: 0.5, x_max_m: 0.6, y_min_m: 0, y_max_m: 0.1}]\n").find("grips[0]"),
             std::string::npos);
+  EXPECT_NE(error_of("  tear_rule: stress\n").find("tear_rule"), std::string::npos);
+  EXPECT_NE(error_of("  tear_energy_j_per_m: 0\n").find("tear_energy_j_per_m"), std::string::npos);
+  EXPECT_NE(error_of("  fibre_anisotropy: 1\n").find("fibre_anisotropy"), std::string::npos);
+  EXPECT_NE(error_of("  tensile: {speed_m_per_s: 0}\n").find("speed_m_per_s"), std::string::npos);
+  EXPECT_NE(error_of("  twist: {}\n  tensile: {}\n").find("tensile"), std::string::npos);
+}
+
+TEST(TearingSection, ReadsTheTearRuleTheAnisotropyAndATensileTestAndWritesThemBack) {
+  const Scene scene = load("  width_m: 0.05\n  height_m: 0.01\n  cells_x: 10\n  tear_rule: energy\n"
+                           "  tear_energy_j_per_m: 0.4\n  fibre_anisotropy: 0.3\n"
+                           "  tensile: {speed_m_per_s: 0.25, max_strain: 0.1}\n");
+  const Scene again = load_scene_from_string(scene_to_yaml(scene), "/tmp/again.yaml", solver_registry().sections());
+  for (const Scene* sc : {&scene, &again}) {
+    const TearingSection& s = *sc->section<TearingSection>();
+    EXPECT_EQ(s.sheet.tear_rule, TearRule::kEnergy);
+    EXPECT_DOUBLE_EQ(s.params.tear_energy_j_per_m, 0.4);
+    EXPECT_DOUBLE_EQ(s.params.fibre_anisotropy, 0.3);
+    ASSERT_TRUE(s.tensile.has_value());
+    EXPECT_DOUBLE_EQ(s.tensile->speed_m_per_s, 0.25);
+    EXPECT_DOUBLE_EQ(s.tensile->max_strain, 0.1);
+    ASSERT_EQ(s.sheet.grips.size(), 3u);  // tensile_grips()
+    EXPECT_DOUBLE_EQ(s.sheet.grips[2].velocity_m_per_s.x(), 0.25);
+  }
+  // the default is the seed's rule
+  EXPECT_EQ(load("  cells_x: 10\n").section<TearingSection>()->sheet.tear_rule, TearRule::kStrain);
 }
 
 }  // namespace

@@ -25,9 +25,10 @@ Scene small_scene() {
 
 TEST(TearingSolver, DeclaresItsParametersAndRunsDeterministically) {
   const auto compiled = solver_registry().get("tearing").compile(small_scene());
-  ASSERT_EQ(compiled->parameters().size(), 2u);
+  ASSERT_EQ(compiled->parameters().size(), 3u);
   EXPECT_EQ(compiled->parameters()[0].name, "stiffness_scale");
   EXPECT_EQ(compiled->parameters()[1].name, "tear_strain");
+  EXPECT_EQ(compiled->parameters()[2].name, "fibre_anisotropy");
   const repose::Run a = compiled->run(compiled->default_values(), {});
   const repose::Run b = compiled->run(compiled->default_values(), {});
   EXPECT_GT(a.measure("tear.length_m").value, 0.0);
@@ -60,6 +61,25 @@ TEST(TearingSolver, WritesItsPicturesWhenGivenAFolder) {
   for (const std::string& file : run.files) EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
   EXPECT_NE(std::find(run.files.begin(), run.files.end(), "tear_edge.png"), run.files.end());
   std::filesystem::remove_all(dir);
+}
+
+// A 3 x 1 cm strip on 2 mm cells in a tensile test, under the energy rule.
+TEST(TearingSolver, RunsATensileTestAndDeclaresTheEnergyRulesParameter) {
+  const Scene scene = load_scene_from_string(
+      "name: t\nseed: 5\ntime: {step_s: 0.001, duration_s: 0.002}\n"
+      "ground: {extent_m: [0.1, 0.1], resolution: [2, 2], initial_height: {kind: flat, height_m: 0}, material: sand}\n"
+      "tearing:\n  width_m: 0.03\n  height_m: 0.01\n  cells_x: 15\n  notch_x_m: 0.015\n  tear_rule: energy\n  tear_energy_j_per_m: 0.2\n"
+      "  tensile: {speed_m_per_s: 0.5}\n",
+      "/tmp/tearing_solver_test.yaml", solver_registry().sections());
+  const auto compiled = solver_registry().get("tearing").compile(scene);
+  ASSERT_EQ(compiled->parameters().size(), 3u);
+  EXPECT_EQ(compiled->parameters()[1].name, "tear_energy");
+  EXPECT_EQ(compiled->parameters()[1].unit, "J/m");
+  const repose::Run run = compiled->run(compiled->default_values(), {});
+  EXPECT_EQ(run.measure("tensile.broke").value, 1.0);
+  EXPECT_GT(run.measure("tensile.stiffness_n_per_m").value, 0.0);
+  EXPECT_GT(run.measure("tensile.strength_n_per_m").value, 0.0);
+  EXPECT_EQ(run.measure("tensile.strength_n_per_m").unit, "N/m");
 }
 
 TEST(TearingSolver, RefusesValuesOutsideTheirIntervalAndScenesWithoutTheSection) {

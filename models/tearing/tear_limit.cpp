@@ -1,0 +1,16 @@
+#include "models/tearing/tear_limit.h"
+
+#include <cmath>
+
+namespace repose {
+
+double base_tear_strain(const SheetModel& model, const SheetParams& params) {
+  if (model.spec.tear_rule == TearRule::kStrain) return params.tear_strain;
+  return std::sqrt(2.0 * params.tear_energy_j_per_m / (params.stiffness_n_per_m * model.cell_size_m));
+}
+
+double equivalent_tear_energy_j_per_m(double stiffness_n_per_m, double tear_strain, double cell_size_m) {
+  return 0.5 * stiffness_n_per_m * tear_strain * tear_strain * cell_size_m;
+}
+
+}  // namespace repose

@@ -1,0 +1,56 @@
+// The paper-fit file: the shipped one loads with its published values and
+// parameters in the solver's order; a bad entry is refused at its key.
+#include "experiments/tearing/paper_fit_spec.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "models/core/base/error.h"
+
+namespace repose {
+namespace {
+
+TEST(PaperFitSpec, TheShippedFileLoads) {
+  const PaperFitSpec s = load_paper_fit_spec(std::string(REPOSE_SOURCE_DIR) + "/experiments/tearing_paper_fit.yaml");
+  EXPECT_FALSE(s.source.empty());
+  EXPECT_TRUE(std::filesystem::exists(s.tensile_scene)) << s.tensile_scene;
+  EXPECT_TRUE(std::filesystem::exists(s.tear_scene)) << s.tear_scene;
+  ASSERT_EQ(s.parameters.size(), 3u);
+  EXPECT_EQ(s.parameters[0].name, "stiffness_scale");
+  EXPECT_EQ(s.parameters[2].name, "fibre_anisotropy");
+  EXPECT_GT(s.md_strength_n_per_m, s.cd_strength_n_per_m);
+  for (const PaperFitParameter& p : s.parameters) {
+    EXPECT_LE(p.lower, p.initial);
+    EXPECT_LE(p.initial, p.upper);
+  }
+}
+
+std::string error_of(const std::string& parameters) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "repose_paper_fit_spec_test.yaml";
+  std::ofstream(path) << "name: t\nsource: s\ntensile_scene: a.yaml\nseeds: [1]\n"
+                         "published: {md_stiffness_n_per_m: 1, cd_stiffness_n_per_m: 1, md_strength_n_per_m: 1,"
+                         " cd_strength_n_per_m: 1, tear_cd_over_md: 1}\nparameters:\n" << parameters;
+  try {
+    load_paper_fit_spec(path.string());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(PaperFitSpec, RefusesBoundsWithoutTheInitialValueAndParametersOutOfOrder) {
+  const std::string good = "  - {name: stiffness_scale, initial: 1, bounds: [0, 2], step: 0.1}\n"
+                           "  - {name: tear_strain, initial: 0.02, bounds: [0.01, 0.1], step: 0.001}\n";
+  EXPECT_EQ(error_of(good + "  - {name: fibre_anisotropy, initial: 0.2, bounds: [0, 0.9], step: 0.03}\n"), "accepted");
+  EXPECT_NE(error_of(good + "  - {name: fibre_anisotropy, initial: 0.95, bounds: [0, 0.9], step: 0.03}\n").find("bounds"),
+            std::string::npos);
+  EXPECT_NE(error_of(good + "  - {name: anisotropy, initial: 0.2, bounds: [0, 0.9], step: 0.03}\n").find("name"),
+            std::string::npos);
+  EXPECT_NE(error_of(good + "  - {name: fibre_anisotropy, initial: 0.2, bounds: [0, 0.9], step: 0}\n").find("step"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace repose
