@@ -36,7 +36,6 @@ bool rotates(const ObjectSpec& object) {
   return false;
 }
 
-
 namespace {
 
 // The constant-rate rotation carrying orientation a to b along the slerp
