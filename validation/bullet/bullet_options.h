@@ -30,6 +30,11 @@ struct BulletOptions {
   // truer but leaves ~30x more residual kinetic energy in a settled bed, so
   // the default keeps Bullet's behaviour (20 radii: 0.04 m for 2 mm grains).
   double split_impulse_fraction = 20.0;
+  // Sliding friction rows per contact: Bullet's default is 1, along the
+  // current slip (or an arbitrary tangent at rest), so a resting contact
+  // holds in one tangential direction only; 2 adds the perpendicular one
+  // (SOLVER_USE_2_FRICTION_DIRECTIONS), as a Coulomb contact has.
+  int friction_directions = 1;
 };
 
 template <class V, class O>
@@ -41,6 +46,7 @@ void bullet_option_fields(V& v, O& o) {
   v.number("broadphase_margin_fraction", o.broadphase_margin_fraction, Range::closed(0.0, 2.0));
   v.number("shape_margin_fraction", o.shape_margin_fraction, Range::left_open(0.0, 0.5));
   v.number("split_impulse_fraction", o.split_impulse_fraction, Range::closed(0.0, 100.0));
+  v.integer("friction_directions", o.friction_directions, IntRange{1, 2});
 }
 
 // Throws FieldError (an InputError) "KEY: expected RULE, got VALUE".
