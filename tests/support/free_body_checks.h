@@ -58,7 +58,7 @@ inline void expect_free_bodies_rebound(const RigidEngine& engine) {
   for (bool box : {false, true}) {
     for (double e : {0.3, 0.5, 0.8}) {
       const double h = free_body_rebound_m(engine, box, r, drop, e);
-      EXPECT_NEAR(std::sqrt(std::max(h, 0.0) / drop), e, 0.00001) << (box ? "cube" : "sphere") << ", restitution " << e;
+      EXPECT_NEAR(std::sqrt(std::max(h, 0.0) / drop), e, 0.03) << (box ? "cube" : "sphere") << ", restitution " << e;
     }
   }
 }
@@ -89,7 +89,7 @@ inline void expect_sphere_comes_to_rest_in_the_bed(const RigidEngine& engine) {
   const FreeBodyRest& rest = r.free_body_rests[0];
   EXPECT_EQ(track.samples.size(), static_cast<std::size_t>(r.run.steps + 1));
   EXPECT_EQ(r.grains_final.size(), r.grains_initial.size());
-  EXPECT_LT(rest.final_speed_m_s, 0.0); EXPECT_LT(rest.resting_depth_m, 0.0); EXPECT_LT(rest.resting_force_n.z(), 0.0); EXPECT_LT(rest.weight_n, 0.0); EXPECT_LT(rest.bottom_z_m, 0.0);EXPECT_LT(rest.surface_z_m, 0.0);EXPECT_LT(rest.max_force_n, 0.0);
+  EXPECT_LT(rest.final_speed_m_s, 0.02);
   EXPECT_GT(rest.resting_depth_m, 0.0) << "bottom " << rest.bottom_z_m << ", surface " << rest.surface_z_m;
   EXPECT_GT(rest.bottom_z_m, -0.001);
   EXPECT_LT(rest.bottom_z_m, rest.surface_z_m);
