@@ -62,5 +62,9 @@ TEST(BulletWorld, AFreeSphereDroppedIntoABedComesToRestInItHeldByTheGrains) {
   expect_sphere_comes_to_rest_in_the_bed(bullet_engine({}));
 }
 
+TEST(BulletWorld, AFreeMeshDroppedOnTheFloorLandsOnItAsItsConvexHull) {
+  expect_free_mesh_lands_on_the_floor(bullet_engine({}), false);
+}
+
 }  // namespace
 }  // namespace repose

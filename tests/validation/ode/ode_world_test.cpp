@@ -61,5 +61,9 @@ TEST(OdeWorld, AFreeSphereDroppedIntoABedComesToRestInItHeldByTheGrains) {
   expect_sphere_comes_to_rest_in_the_bed(ode_engine({}));
 }
 
+TEST(OdeWorld, AFreeMeshDroppedOnTheFloorComesToRestFlatOnIt) {
+  expect_free_mesh_lands_on_the_floor(ode_engine({}), true);
+}
+
 }  // namespace
 }  // namespace repose
