@@ -16,13 +16,14 @@ namespace repose {
 
 namespace {
 
-// Removes dh' from colliding cells; returns the region with alpha*dh' carried.
+// Removes dh' from colliding cells; returns the region with the displaced
+// fraction of dh' carried (alpha, or its drag value: material.h).
 // The floor: the height field is material above a base at z = 0, below
 // which lies bedrock, which neither moves nor compresses; an object reaching
 // below the base removes the material down to the base only, and how far it
 // reaches below is recorded (DisplacementResult::bedrock_m3).
 ContactRegion remove_intersection(const GroundModel& model, const GroundParams& params, const Underside& contact,
-                                  GroundState* state, DisplacementResult* result) {
+                                  bool dragging, GroundState* state, DisplacementResult* result) {
   ContactRegion r;
   r.fp = contact.footprint;
   const int n = r.fp.ni * r.fp.nj;
@@ -38,7 +39,7 @@ ContactRegion remove_intersection(const GroundModel& model, const GroundParams& 
     REPOSE_DEMAND(h >= 0.0);  // heights are material amounts (ground_state.h)
     const double floor_m = std::max(under, 0.0);
     const double dh = h - floor_m;
-    const double alpha = params.materials[model.material_at(model.cell(i, j))].alpha;
+    const double alpha = params.materials[model.material_at(model.cell(i, j))].displaced_fraction(dragging);
     h = floor_m;
     r.carry[l] = alpha * dh;
     r.dist[l] = -1;
@@ -183,7 +184,8 @@ DisplacementResult displace(const GroundModel& model, const GroundParams& params
   DisplacementResult result;
   if (contact.empty()) return result;
   const double crest_m = crest_of(contact, state->height);
-  ContactRegion region = remove_intersection(model, params, contact, state, &result);
+  const DragDirection dir = drag_direction(motion_m, model.grid.cell_size_m);
+  ContactRegion region = remove_intersection(model, params, contact, dir.active, state, &result);
   result.contact_cells = static_cast<int>(region.cells.size());
   state->ledger.bedrock_m3 = std::max(state->ledger.bedrock_m3, result.bedrock_m3);
   if (region.cells.empty()) return result;
@@ -191,7 +193,6 @@ DisplacementResult displace(const GroundModel& model, const GroundParams& params
 
   Received received;
   Sink sink{model, state, &region, &received};
-  const DragDirection dir = drag_direction(motion_m, model.grid.cell_size_m);
   if (dir.active) {
     spread_rear_to_front(dir, &region, &sink);
   } else {

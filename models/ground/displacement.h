@@ -2,7 +2,8 @@
 // Compression and displacement (the ground paper, 3.4, after Sumner et al.
 // 1999). In every colliding cell the intersected height dh' = h - underside
 // is removed; alpha*dh' is carried towards the border of the contact region
-// and (1 - alpha)*dh' is compressed away (recorded in the ledger).
+// and (1 - alpha)*dh' is compressed away (recorded in the ledger). While
+// dragging, alpha is the material's drag value (Material::displaced_fraction).
 //
 // Pressing (the object moves down, or not at all): a 4-neighbour distance
 // transform gives each contact cell its distance to the border (1 next to a
@@ -51,7 +52,7 @@ struct GroundState;
 struct DisplacementResult {
   int contact_cells = 0;
   double removed_m3 = 0.0;    // sum of dh' * cell area
-  double displaced_m3 = 0.0;  // alpha * dh' * cell area
+  double displaced_m3 = 0.0;  // displaced fraction * dh' * cell area
   double bedrock_m3 = 0.0;    // sum of (base - underside) * cell area where the underside is below the base
 };
 

@@ -1,5 +1,6 @@
 #include "models/ground/material.h"
 
+#include <algorithm>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -30,6 +31,10 @@ bool material_preset(const std::string& name, Material* out) {
   return true;
 }
 
+double Material::displaced_fraction(bool dragging) const {
+  return dragging ? std::max(0.0, 1.0 - drag_compaction_ratio * (1.0 - alpha)) : alpha;
+}
+
 void validate(const Material& m) {
   if (!(m.alpha >= 0.0 && m.alpha <= 1.0)) throw FieldError("alpha", "a number in [0, 1]", yaml_number(m.alpha));
   if (!(m.repose_angle_rad > 0.0 && m.repose_angle_rad <= std::numbers::pi / 2)) {
@@ -41,6 +46,9 @@ void validate(const Material& m) {
   }
   if (m.erosion_iterations < 1 || m.erosion_iterations > 1000) {
     throw FieldError("erosion_iterations", "an integer in [1, 1000]", std::to_string(m.erosion_iterations));
+  }
+  if (!(m.drag_compaction_ratio >= 0.0 && m.drag_compaction_ratio <= 10.0)) {
+    throw FieldError("drag_compaction_ratio", "a number in [0, 10]", yaml_number(m.drag_compaction_ratio));
   }
 }
 

@@ -25,6 +25,19 @@ struct Material {
   double sigma = 0.2;
   // Erosion passes per time step (En). >= 1
   int erosion_iterations = 5;
+  // What a dragging object compresses, as a ratio to what a pressing one
+  // does (departure: the paper has one alpha for both). While an object
+  // drags (moves sideways and not down: displacement.h), the fraction
+  // displaced is 1 - drag_compaction_ratio * (1 - alpha), at least 0.
+  // 1: the paper's model. Below 1: material pushed ahead of an object,
+  // with a free surface in front, is compacted less than material pressed
+  // into the confined bed beneath it, as the DEM references say (fitted
+  // alone, pressing gives alpha 0.27 and dragging 0.94: data/README.md).
+  // [0, 10]
+  double drag_compaction_ratio = 1.0;
+
+  // The fraction of the intersected height displaced (the rest is compressed).
+  double displaced_fraction(bool dragging) const;
 
   bool operator==(const Material&) const = default;
 };
@@ -35,18 +48,20 @@ bool material_preset(const std::string& name, Material* out);
 
 // Throws FieldError (models/core/config/fields.h) naming the field when a
 // value is outside its interval: alpha in [0, 1], repose_angle_rad in (0,
-// pi/2], sigma in (0, kSigmaMax], erosion_iterations in [1, 1000]. The scene
+// pi/2], sigma in (0, kSigmaMax], erosion_iterations in [1, 1000],
+// drag_compaction_ratio in [0, 10]. The scene
 // loader and the model both call this one rule.
 void validate(const Material& material);
 
 // The field list of a material (fields.h): alpha, repose_angle_deg, sigma,
-// erosion_iterations.
+// erosion_iterations, drag_compaction_ratio.
 template <class Visitor>
 void material_fields(Visitor& v, Material& m) {
   v.number("alpha", m.alpha, Range::any());
   v.angle_deg("repose_angle_deg", m.repose_angle_rad, Range::any());
   v.number("sigma", m.sigma, Range::any());
   v.integer("erosion_iterations", m.erosion_iterations, IntRange{});
+  v.number("drag_compaction_ratio", m.drag_compaction_ratio, Range::any());
 }
 
 }  // namespace repose

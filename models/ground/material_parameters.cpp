@@ -26,6 +26,8 @@ void MaterialParameters::declare(const Material& m) {
   add("repose_angle_deg", Field::kReposeAngle, "deg", deg, 1e-6 * deg, 90.0 * deg, m.repose_angle_rad,
       "angle of repose: steeper slopes erode");
   add("sigma", Field::kSigma, "1", 1.0, 1e-9, kSigmaMax, m.sigma, "fraction of the excess moved per erosion pass");
+  add("drag_compaction_ratio", Field::kDragCompactionRatio, "1", 1.0, 0.0, 10.0, m.drag_compaction_ratio,
+      "what dragging compresses, as a ratio to what pressing does");
 }
 
 GroundParams MaterialParameters::params_for(const GroundModel& model, const std::vector<double>& values_si) const {
@@ -36,6 +38,7 @@ GroundParams MaterialParameters::params_for(const GroundModel& model, const std:
       if (targets_[k].field == Field::kAlpha) m.alpha = values_si[k];
       if (targets_[k].field == Field::kReposeAngle) m.repose_angle_rad = values_si[k];
       if (targets_[k].field == Field::kSigma) m.sigma = values_si[k];
+      if (targets_[k].field == Field::kDragCompactionRatio) m.drag_compaction_ratio = values_si[k];
     }
   }
   validate(params, model);

@@ -1,8 +1,9 @@
 #pragma once
 // The fittable parameters of the ground model's materials, as a solver
 // declares them (models/core/solver/solver.h): per named material its
-// alpha, repose angle and sigma ("sand.alpha", "sand.repose_angle_deg",
-// "sand.sigma"; a value applies to every region of that material). Shared
+// alpha, repose angle, sigma and drag compaction ratio ("sand.alpha",
+// "sand.repose_angle_deg", "sand.sigma", "sand.drag_compaction_ratio"; a
+// value applies to every region of that material). Shared
 // by the ground solver and the models built on the ground (heightspan), so
 // that a calibration fits them by the same names.
 
@@ -18,7 +19,7 @@ struct GroundModel;
 
 class MaterialParameters {
  public:
-  // One alpha, repose angle and sigma per distinct material name of the model.
+  // One of each field per distinct material name of the model.
   explicit MaterialParameters(const GroundModel& model);
 
   const std::vector<ParameterInfo>& infos() const { return infos_; }
@@ -27,7 +28,7 @@ class MaterialParameters {
   GroundParams params_for(const GroundModel& model, const std::vector<double>& values_si) const;
 
  private:
-  enum class Field { kAlpha, kReposeAngle, kSigma };
+  enum class Field { kAlpha, kReposeAngle, kSigma, kDragCompactionRatio };
   struct Target {
     std::string material;
     Field field;

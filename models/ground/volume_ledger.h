@@ -10,7 +10,7 @@ namespace repose {
 
 struct VolumeLedger {
   double initial_m3 = 0.0;     // volume of the initial height field
-  double compressed_m3 = 0.0;  // (1 - alpha) * dh' summed over contacts
+  double compressed_m3 = 0.0;  // (1 - displaced fraction) * dh' summed over contacts
   double left_grid_m3 = 0.0;   // displaced past the grid's edge (open boundary of displacement)
   double bedrock_m3 = 0.0;     // largest volume below the base that one contact's underside reached (0: none)
 

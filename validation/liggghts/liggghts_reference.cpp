@@ -116,6 +116,7 @@ nlohmann::json liggghts_results_json(const LiggghtsReferenceResult& r) {
   json["grain_count"] = r.grain_count;
   json["steps"] = r.steps;
   json["particle_steps_per_s"] = r.particle_steps_per_s;
+  json["neighbor"] = {{"builds", r.neighbor.builds}, {"dangerous_builds", r.neighbor.dangerous_builds}};
   json["run_wall_s"] = r.run.wall_time_s;
   json["run_cpu_s"] = r.run.cpu_time_s;
   json["bed_wall_s"] = r.bed.wall_time_s;
@@ -151,6 +152,7 @@ LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::st
   run.dump_directory = kDumpDirectory;
   r.run = run_liggghts(run_dir, kRunScriptFile, run);
   r.steps = script.total_steps;
+  r.neighbor = read_neighbor_stats((dir / "log.liggghts").string());
 
   const Grid& grid = scene.ground.grid;
   const auto dumps = list_dump_files((dir / kDumpDirectory).string());

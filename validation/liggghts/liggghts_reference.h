@@ -32,6 +32,7 @@
 #include "validation/particles/column_collapse.h"
 #include "validation/particles/free_body_track.h"
 #include "validation/liggghts/liggghts_bed.h"
+#include "validation/liggghts/liggghts_neighbor_stats.h"
 #include "validation/liggghts/liggghts_runner.h"
 #include "validation/liggghts/liggghts_script.h"
 #include "validation/particles/particle_observables.h"
@@ -55,6 +56,7 @@ struct LiggghtsReferenceResult {
   long steps = 0;                // steps of the run (after the bed)
   double particle_steps_per_s = 0.0;
   std::string script_sha256;
+  NeighborStats neighbor;        // list builds and dangerous builds of the run (liggghts_neighbor_stats.h)
   HeightField height_initial;    // surface of the settled bed on the scene's grid
   HeightField height_final;      // surface after the run
   HeightField material_per_area_final;  // grain volume per unit area (m), particle_observables.h

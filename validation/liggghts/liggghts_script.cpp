@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "validation/liggghts/liggghts_motion.h"
+#include "validation/liggghts/liggghts_section.h"
 
 namespace repose {
 
@@ -31,7 +33,7 @@ bool is_prime(std::uint64_t n) {
   return true;
 }
 
-long steps_for(double time_s, double step_s) { return std::lround(time_s / step_s); }
+
 
 std::string rolling_model_name(const DemSpec& dem) {
   return dem.rolling_model == DemSpec::RollingModel::kCdt ? "cdt" : "epsd2";
@@ -48,8 +50,6 @@ std::string box_block(const DemDomain& d) {
                      liggghts_number(d.z_max_m));
 }
 
-// Everything both scripts set after the box exists: contact law, materials,
-// time step, gravity, the floor and side walls, integration.
 // Atom types: 1 the grains (and every wall), 2 a rough floor. Per-type
 // properties list the grains' values for both; pair tables differ only in
 // the grain-floor rolling friction.
@@ -67,12 +67,33 @@ std::string per_type_pair(const DemSpec& dem, double grains, double floor) {
   return "2 " + n(grains) + " " + n(floor) + " " + n(floor) + " " + n(floor);
 }
 
+bool periodic_sides(const DemSpec& dem) { return dem.sides == DemSpec::Sides::kPeriodic; }
+
+// The box's boundaries: fixed, or periodic in y for a periodic strip.
+std::string box_header(const DemSpec& dem) {
+  return fmt::format("atom_style granular\natom_modify map array\nboundary f {} f\nnewton off\n"
+                     "communicate single vel yes\nunits si\n",
+                     periodic_sides(dem) ? "p" : "f");
+}
+
+// The neighbour list and memory sort. With the default options the lines
+// are the ones every cached bed was made with (its cache key is the text).
+void write_neighbor_settings(std::ostringstream& s, const DemSpec& dem, const LiggghtsOptions& o) {
+  const double largest_radius_m = dem.grain_radius_m * (1.0 + dem.radius_spread);
+  s << "neighbor " << liggghts_number(o.neighbor_skin_radii * largest_radius_m) << " bin\n"
+    << "neigh_modify delay 0";
+  if (o.neighbor_check_every_steps != 1) s << " every " << o.neighbor_check_every_steps << " check yes";
+  s << "\n";
+  if (o.sort_every_steps != LiggghtsOptions{}.sort_every_steps) s << "atom_modify sort " << o.sort_every_steps << " 0\n";
+  s << "\n";
+}
+
 // Everything both scripts set after the box exists: contact law, materials,
 // time step, gravity, the floor and side walls, integration.
-void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d) {
+void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d, const LiggghtsOptions& neighbor) {
   const auto n = [](double v) { return liggghts_number(v); };
-  s << "neighbor " << n(dem.grain_radius_m * (1.0 + dem.radius_spread)) << " bin\n"
-    << "neigh_modify delay 0\n\n"
+  write_neighbor_settings(s, dem, neighbor);
+  s
     << "# materials (Young's modulus softened, as DEM practice does)"
     << (rough_floor(dem) ? "; type 2: the rough floor" : "") << "\n"
     << "fix m1 all property/global youngsModulus peratomtype " << per_type(dem, dem.youngs_modulus_pa) << "\n"
@@ -99,10 +120,12 @@ void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d
   const std::string floor = "all wall/gran " + wall_model(dem) + " primitive type " + std::to_string(atom_type_count(dem));
   s << "fix wall_floor " << floor << " zplane " << n(d.z_min_m) << "\n"
     << "fix wall_xmin " << wall << " xplane " << n(d.x_min_m) << "\n"
-    << "fix wall_xmax " << wall << " xplane " << n(d.x_max_m) << "\n"
-    << "fix wall_ymin " << wall << " yplane " << n(d.y_min_m) << "\n"
-    << "fix wall_ymax " << wall << " yplane " << n(d.y_max_m) << "\n"
-    << "fix integrate all nve/sphere\n\n";
+    << "fix wall_xmax " << wall << " xplane " << n(d.x_max_m) << "\n";
+  if (!periodic_sides(dem)) {
+    s << "fix wall_ymin " << wall << " yplane " << n(d.y_min_m) << "\n"
+      << "fix wall_ymax " << wall << " yplane " << n(d.y_max_m) << "\n";
+  }
+  s << "fix integrate all nve/sphere\n\n";
 }
 
 bool is_column(const DemSpec& dem) { return dem.initial == DemSpec::Initial::kColumn; }
@@ -118,7 +141,7 @@ double fill_height_m(const Scene& scene, const BedScriptOptions& o) {
     const ColumnGeometry c = column_geometry(scene);
     const double r = dem.grain_radius_m * (1.0 + dem.radius_spread);
     const double open = c.shape == DemSpec::ColumnShape::kSlot
-                            ? (c.width_m - 2 * r) * (c.gap_m - 2 * r)
+                            ? (c.width_m - 2 * r) * (periodic_sides(dem) ? c.gap_m : c.gap_m - 2 * r)
                             : std::numbers::pi * (c.width_m - r) * (c.width_m - r);
     factor = c.footprint_m2 / open;
   }
@@ -147,60 +170,6 @@ void write_insertion_region(std::ostringstream& s, const Scene& scene, const Dem
       << "region fill cylinder z " << n(c.axis_xy_m.x()) << " " << n(c.axis_xy_m.y()) << " " << n(c.width_m)
       << " 0 " << n(fill_m) << " units box\n";
   }
-}
-
-// Position of an object at time t: linear between keyframes, held outside.
-Eigen::Vector3d position_at(const ObjectSpec& object, double t) {
-  const auto& k = object.keyframes;
-  REPOSE_DEMAND(!k.empty());
-  if (t <= k.front().time_s) return k.front().pose.position_m;
-  if (t >= k.back().time_s) return k.back().pose.position_m;
-  for (std::size_t i = 0; i + 1 < k.size(); ++i) {
-    if (t <= k[i + 1].time_s) {
-      const double span = k[i + 1].time_s - k[i].time_s;
-      const double a = span > 0 ? (t - k[i].time_s) / span : 1.0;
-      return (1 - a) * k[i].pose.position_m + a * k[i + 1].pose.position_m;
-    }
-  }
-  return k.back().pose.position_m;
-}
-
-// Does any keyframe turn the object away from its first orientation?
-bool rotates(const ObjectSpec& object) {
-  const Eigen::Quaterniond q0 = object.keyframes.front().pose.orientation.normalized();
-  for (const Keyframe& k : object.keyframes) {
-    if (std::abs(std::abs(q0.dot(k.pose.orientation.normalized())) - 1.0) > 1e-12) return true;
-  }
-  return false;
-}
-
-// The constant-rate rotation carrying orientation a to b along the slerp
-// (the shortest way): angle in [0, pi] about a unit world axis; angle 0 when they agree.
-struct Turn {
-  double angle_rad = 0.0;
-  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
-};
-
-Turn turn_between(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b) {
-  Eigen::Quaterniond d = b.normalized() * a.normalized().conjugate();
-  if (d.w() < 0.0) d.coeffs() = -d.coeffs();
-  const double s = d.vec().norm();
-  Turn t;
-  if (s <= 1e-15) return t;
-  t.angle_rad = 2.0 * std::atan2(s, d.w());
-  t.axis = d.vec() / s;
-  return t;
-}
-
-// The times at which any object's velocity may change, within [0, duration].
-std::vector<double> segment_times(const Scene& scene) {
-  std::set<double> times = {0.0, scene.time.duration_s};
-  for (const ObjectSpec& o : scene.objects) {
-    for (const Keyframe& k : o.keyframes) {
-      if (k.time_s > 0.0 && k.time_s < scene.time.duration_s) times.insert(k.time_s);
-    }
-  }
-  return {times.begin(), times.end()};
 }
 
 }  // namespace
@@ -265,7 +234,7 @@ DemDomain bed_domain(const Scene& scene, const BedScriptOptions& options) {
 
 long bed_max_steps(const Scene& scene, const BedScriptOptions& options) {
   const DemSpec& dem = require_dem(scene, "LIGGGHTS");
-  const long chunk = std::max(1L, steps_for(options.settle_check_interval_s, dem.time_step_s));
+  const long chunk = std::max(1L, liggghts_steps(options.settle_check_interval_s, dem.time_step_s));
   const long chunks = std::max(1L, std::lround(std::ceil(options.max_settle_time_s / options.settle_check_interval_s)));
   return 1 + chunk * chunks;
 }
@@ -318,18 +287,17 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
         "(bed_depth_m) or a smaller ground grid",
         scene.source_path, grains, options.max_grain_count));
   }
-  const long chunk = std::max(1L, steps_for(options.settle_check_interval_s, dem.time_step_s));
+  const long chunk = std::max(1L, liggghts_steps(options.settle_check_interval_s, dem.time_step_s));
   const long chunks = std::max(1L, std::lround(std::ceil(options.max_settle_time_s / options.settle_check_interval_s)));
 
   std::ostringstream s;
   // no scene name here: the script is the bed's cache key, and scenes that
   // differ only in their objects (same grid, grains and seed) share a bed
   s << "# repose: settled bed (generated; do not edit)\n"
-    << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\n"
-    << "communicate single vel yes\nunits si\n"
+    << box_header(dem)
     << "region domain block " << box_block(d) << " units box\n"
     << "create_box " << atom_type_count(dem) << " domain\n";
-  write_physics(s, dem, d);
+  write_physics(s, dem, d, LiggghtsOptions{});
   s << "# grains: " << radii.size() << " radii, equal in number\n";
   for (std::size_t k = 0; k < radii.size(); ++k) {
     s << "fix pts" << k << " all particletemplate/sphere " << seeds[k] << " atom_type 1 density constant "
@@ -343,7 +311,7 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
     << " distributiontemplate pdd maxattempt 200 insert_every once overlapcheck yes all_in yes"
     << " vel constant 0 0 0 region fill particles_in_region " << grains << " ntry_mc 100000\n\n"
     << "thermo_style custom step atoms ke\n"
-    << "thermo " << std::max(1L, steps_for(options.thermo_interval_s, dem.time_step_s)) << "\n"
+    << "thermo " << std::max(1L, liggghts_steps(options.thermo_interval_s, dem.time_step_s)) << "\n"
     << "thermo_modify lost error norm no\n"
     << "run 1\nunfix ins\n\n";
   write_settle_loop(s, dem, options, chunk, chunks);
@@ -399,66 +367,6 @@ void write_object_walls(std::ostringstream& s, const RunScript& out, const DemSp
     << ids << "\n\n";
 }
 
-// One object's move/mesh fixes for one segment: a linear velocity and, for a
-// rotating object, a constant-rate rotation about the body origin's
-// segment-start position. Returns their ids in the order they must be unfixed.
-std::vector<std::string> write_segment_fixes(std::ostringstream& s, const ObjectSpec& o, std::size_t k,
-                                             std::size_t seg, double t0, double t1, double span_s,
-                                             const std::string& mesh_id) {
-  const auto n = [](double v) { return liggghts_number(v); };
-  const bool turning = rotates(o);
-  const Pose a = turning ? o.pose_at(t0) : Pose{position_at(o, t0), Eigen::Quaterniond::Identity()};
-  const Pose b = turning ? o.pose_at(t1) : Pose{position_at(o, t1), Eigen::Quaterniond::Identity()};
-  const Eigen::Vector3d v = (b.position_m - a.position_m) / span_s;
-  std::vector<std::string> fixes;
-  if (!v.isZero(0.0)) {
-    const std::string id = fmt::format("move{}_{}", k, seg);
-    s << "fix " << id << " all move/mesh mesh " << mesh_id << " linear " << n(v.x()) << " " << n(v.y()) << " "
-      << n(v.z()) << "\n";
-    fixes.push_back(id);
-  }
-  const Turn turn = turning ? turn_between(a.orientation, b.orientation) : Turn{};
-  if (turn.angle_rad > 0.0) {
-    const std::string id = fmt::format("turn{}_{}", k, seg);
-    const Eigen::Vector3d& p = a.position_m;
-    s << "fix " << id << " all move/mesh mesh " << mesh_id << " rotate origin " << n(p.x()) << " " << n(p.y()) << " "
-      << n(p.z()) << " axis " << n(turn.axis.x()) << " " << n(turn.axis.y()) << " " << n(turn.axis.z())
-      << " period " << n(2.0 * std::numbers::pi * span_s / turn.angle_rad) << "\n";
-    fixes.push_back(id);
-  }
-  return {fixes.rbegin(), fixes.rend()};
-}
-
-// Keyframed motion: per object and segment a linear velocity and, for a
-// rotating object, a constant-rate rotation (the slerp between keyframes)
-// about the body origin. LIGGGHTS superposes move/mesh fixes on one mesh,
-// each later one in the frame carried by the earlier ones: linear first,
-// then rotate with its origin at the body origin's segment-start position
-// (so the centre of rotation travels with the object); superposed fixes
-// must be unfixed in reverse order. Checked against a real run in
-// tests/validation/liggghts/rotating_mesh_test.cpp.
-void write_motion(std::ostringstream& s, const Scene& scene, const DemSpec& dem, RunScript* out) {
-  const auto n = [](double v) { return liggghts_number(v); };
-  const std::vector<double> times = segment_times(scene);
-  for (std::size_t seg = 0; seg + 1 < times.size(); ++seg) {
-    const long first = steps_for(times[seg], dem.time_step_s);
-    const long last = steps_for(times[seg + 1], dem.time_step_s);
-    if (last <= first) continue;
-    const double span_s = static_cast<double>(last - first) * dem.time_step_s;
-    std::vector<std::string> fixes;
-    s << "# segment " << seg << ": t = " << n(times[seg]) << " .. " << n(times[seg + 1]) << " s\n";
-    for (std::size_t k = 0, mesh = 0; k < scene.objects.size(); ++k) {
-      if (scene.objects[k].dynamic) continue;  // free: moved by LIGGGHTS itself
-      const auto ids = write_segment_fixes(s, scene.objects[k], k, seg, times[seg], times[seg + 1], span_s,
-                                           out->meshes[mesh++].fix_id);
-      fixes.insert(fixes.end(), ids.begin(), ids.end());
-    }
-    s << "run " << (last - first) << "\n";
-    for (const std::string& id : fixes) s << "unfix " << id << "\n";
-    out->total_steps = last;
-  }
-}
-
 }  // namespace
 
 RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
@@ -467,15 +375,14 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
   RunScript out;
   place_objects(scene, dem, options, &out);
   const DemDomain& d = out.domain;
-  const long thermo_every = std::max(1L, steps_for(options.thermo_interval_s, dem.time_step_s));
-  out.dump_interval_steps = std::max(1L, steps_for(dem.dump_interval_s, dem.time_step_s));
+  const long thermo_every = std::max(1L, liggghts_steps(options.thermo_interval_s, dem.time_step_s));
+  out.dump_interval_steps = std::max(1L, liggghts_steps(dem.dump_interval_s, dem.time_step_s));
 
   std::ostringstream s;
   s << "# repose: run of scene '" << scene.name << "' on a settled bed (generated; do not edit)\n"
-    << "atom_style granular\natom_modify map array\nboundary f f f\nnewton off\n"
-    << "communicate single vel yes\nunits si\n"
+    << box_header(dem)
     << "read_restart " << kBedRestartFile << "\n";
-  write_physics(s, dem, d);
+  write_physics(s, dem, d, liggghts_options_of(scene));
   s << "# per-atom restart data must be consumed by a run before the box may grow;\n"
     << "# after a restart, reset_timestep must come right before a run\n"
     << "reset_timestep 0\n"
@@ -490,7 +397,11 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
     << "dump grains " << liggghts_dump_group(scene) << " custom " << out.dump_interval_steps << " " << kDumpDirectory
     << "/dump.*.txt id type x y z radius\n"
     << "dump_modify grains sort id\n\n";
-  write_motion(s, scene, dem, &out);
+  std::vector<std::string> mesh_fix_ids;
+  for (std::size_t k = 0, mesh = 0; k < scene.objects.size(); ++k) {  // a free sphere has no mesh: ""
+    mesh_fix_ids.push_back(scene.objects[k].dynamic ? std::string() : out.meshes[mesh++].fix_id);
+  }
+  out.total_steps = write_motion(s, scene, dem, mesh_fix_ids);
   s << "print \"" << kCompleteMarker << "\"\n";
   out.text = s.str();
   return out;

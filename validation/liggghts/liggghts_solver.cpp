@@ -7,6 +7,7 @@
 
 #include "models/core/base/error.h"
 #include "validation/liggghts/liggghts_reference.h"
+#include "validation/liggghts/liggghts_section.h"
 #include "validation/particles/dem_section.h"
 
 namespace repose {
@@ -73,7 +74,13 @@ class CompiledLiggghts final : public CompiledSolver {
 
 }  // namespace
 
-std::vector<SectionType> LiggghtsSolver::sections() const { return {dem_section_type()}; }
+std::vector<SectionType> LiggghtsSolver::sections() const { return {dem_section_type(), liggghts_section_type()}; }
+
+bool LiggghtsSolver::can_run(const Scene& scene, std::string* why) const {
+  if (dem_of(scene) != nullptr) return true;
+  if (why != nullptr) *why = "the scene has no 'dem' section (the grains of the particle references)";
+  return false;
+}
 
 std::unique_ptr<CompiledSolver> LiggghtsSolver::compile(const Scene& scene) const {
   require_dem(scene, "LIGGGHTS");

@@ -20,6 +20,8 @@ class LiggghtsSolver final : public Solver {
     return "the LIGGGHTS DEM reference (needs the scene's dem section): settled bed, run, observables";
   }
   std::vector<SectionType> sections() const override;
+  // Needs the dem section; the liggghts: section is optional (defaults).
+  bool can_run(const Scene& scene, std::string* why) const override;
   std::unique_ptr<CompiledSolver> compile(const Scene& scene) const override;
 };
 

@@ -1,6 +1,6 @@
 #include "validation/ode/ode_options.h"
 
-#include "validation/rigid/option_fields.h"
+#include "validation/particles/option_fields.h"
 
 namespace repose {
 

@@ -67,6 +67,14 @@ struct DemSpec {
   Floor floor = Floor::kSmooth;
   double floor_rolling_friction = 1.0;  // rough floor only
 
+  // The grid's y edges. walls: two side walls of the grains' own material
+  // (a slot column's gap is between them). periodic: y repeats with the
+  // grid's y extent as its period, a strip with no side walls, so a
+  // quasi-2-D column collapses without wall friction (a channel far wider
+  // than the strip). LIGGGHTS only; the rigid engines refuse it.
+  enum class Sides { kWalls, kPeriodic };
+  Sides sides = Sides::kWalls;
+
   // How the reference's surface height field is read off the grains
   // (surface_height.h): 0 takes the top of the grain over each cell centre;
   // > 0 lowers a probe sphere of this radius onto the packing, a smooth
@@ -118,6 +126,8 @@ void dem_fields(Visitor& v, DemSpec& d) {
   using F = DemSpec::Floor;
   v.choice("floor", d.floor, std::vector<std::pair<std::string, F>>{{"smooth", F::kSmooth}, {"rough", F::kRough}});
   v.number("floor_rolling_friction", d.floor_rolling_friction, Range::any());
+  using S = DemSpec::Sides;
+  v.choice("sides", d.sides, std::vector<std::pair<std::string, S>>{{"walls", S::kWalls}, {"periodic", S::kPeriodic}});
   v.number("surface_probe_radius_m", d.surface_probe_radius_m, Range::any());
 }
 

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "validation/rigid/option_fields.h"
+#include "validation/particles/option_fields.h"
 
 namespace repose {
 

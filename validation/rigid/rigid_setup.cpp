@@ -118,6 +118,10 @@ std::vector<StaticBox> column_gate(const ColumnGeometry& c, const DemSpec& dem, 
 
 RigidInputs rigid_inputs(const Scene& scene, const std::string& solver) {
   const DemSpec& dem = require_dem(scene, solver);
+  if (dem.sides == DemSpec::Sides::kPeriodic) {
+    throw InputError(fmt::format("{}: dem: sides: periodic side walls are LIGGGHTS only; {} needs sides: walls",
+                                 scene.source_path, solver));
+  }
   RigidInputs in{dem, scene.ground.grid, scene.objects, scene.time, scene.seed, std::nullopt};
   if (dem.initial == DemSpec::Initial::kColumn) in.column = column_geometry(dem, scene);
   return in;

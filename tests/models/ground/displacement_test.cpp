@@ -92,5 +92,44 @@ TEST(Displacement, NoBedrockAboveTheBase) {
   EXPECT_EQ(state.ledger.bedrock_m3, 0.0);
 }
 
+// A sphere already 2 cm deep, dragged 8 cm along x (every step a drag):
+// with alpha 0.5 it compresses what it meets, less as the material's drag
+// compaction ratio falls, nothing at 0 (the volume is then conserved).
+GroundState pure_drag(double drag_compaction_ratio) {
+  const double low = kBed + kRadius - 0.02;
+  ObjectSpec ball = sphere(kRadius, {at(0, -0.04, 0.0011, low), at(4, 0.04, 0.0011, low)});
+  Material m = sand();
+  m.alpha = 0.5;
+  m.drag_compaction_ratio = drag_compaction_ratio;
+  const Scene scene = flat_scene(centred_grid(64, 40, 0.005), kBed, m, {ball}, 4);
+  const GroundModel model = build_ground_model(scene);
+  return run_steps(model, default_params(model), kBed, model.time.step_count());
+}
+
+TEST(Displacement, ADragCompressesByItsCompactionRatio) {
+  const GroundState none = pure_drag(0.0), half = pure_drag(0.5), all = pure_drag(1.0);
+  EXPECT_EQ(none.ledger.compressed_m3, 0.0);
+  EXPECT_GT(half.ledger.compressed_m3, 0.0);
+  EXPECT_GT(all.ledger.compressed_m3, 1.5 * half.ledger.compressed_m3);
+  for (const GroundState* s : {&none, &half, &all}) expect_balanced(s->ledger, s->height.volume_m3());
+  EXPECT_GT(none.height.volume_m3(), half.height.volume_m3());
+}
+
+// Pressing straight down is no drag: the ratio leaves it bit for bit alone.
+TEST(Displacement, TheDragCompactionRatioLeavesAPressAlone) {
+  HeightField pressed[2];
+  const double ratios[2] = {1.0, 0.2};
+  for (int k = 0; k < 2; ++k) {
+    ObjectSpec ball = sphere(kRadius, {at(0, 0, 0, kBed + kRadius + 0.01), at(2, 0, 0, kBed + kRadius - 0.02)});
+    Material m = sand();
+    m.alpha = 0.5;
+    m.drag_compaction_ratio = ratios[k];
+    const GroundModel model = build_ground_model(flat_scene(centred_grid(40, 40, 0.005), kBed, m, {ball}, 2));
+    pressed[k] = run_steps(model, default_params(model), kBed, model.time.step_count()).height;
+  }
+  EXPECT_TRUE((pressed[0].heights() == pressed[1].heights()).all());
+  EXPECT_LT(pressed[0].volume_m3(), HeightField(pressed[0].grid(), kBed).volume_m3());  // it did compress
+}
+
 }  // namespace
 }  // namespace repose

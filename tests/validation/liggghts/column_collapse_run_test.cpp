@@ -78,10 +78,34 @@ TEST_F(ColumnCollapseRun, SlotColumnSpreadsAlongXBetweenItsWalls) {
   EXPECT_GT(r.column->runout_normalised, 0.2);
   EXPECT_LT(r.column->height_final_m, r.column->height_initial_m);
   const DumpFrame last = read_last_dump_frame(list_dump_files((dir_ / "run" / "dumps").string()).back());
+  const double half_radius = 0.5 * dem_of(scene)->grain_radius_m * (1.0 - dem_of(scene)->radius_spread);
   for (Eigen::Index g = 0; g < last.grains.size(); ++g) {
-    EXPECT_GE(last.grains.position_m(g, 1), 0.0);
-    EXPECT_LE(last.grains.position_m(g, 1), 0.012);
+    EXPECT_GE(last.grains.position_m(g, 1), half_radius);  // the walls keep every centre off them
+    EXPECT_LE(last.grains.position_m(g, 1), 0.012 - half_radius);
   }
+}
+
+// Without side walls nothing keeps a grain's centre a radius off the strip's
+// y edges: in a periodic strip grains lie across them, between walls none does.
+TEST_F(ColumnCollapseRun, PeriodicSlotHasGrainsAcrossItsYEdges) {
+  const Scene walls = testing::column_dem_scene(DemSpec::ColumnShape::kSlot, 0.04);
+  const Scene periodic = with_dem_changed(walls, [](DemSpec& d) { d.sides = DemSpec::Sides::kPeriodic; });
+  const LiggghtsReferenceResult r = run(periodic);
+  EXPECT_EQ(r.grain_count, bed_grain_count(periodic, BedScriptOptions{}));
+  ASSERT_TRUE(r.column.has_value());
+  EXPECT_GT(r.column->runout_normalised, 0.2);
+  EXPECT_GT(r.neighbor.builds, 0);
+  EXPECT_EQ(r.neighbor.dangerous_builds, 0);
+  const DumpFrame last = read_last_dump_frame(list_dump_files((dir_ / "run" / "dumps").string()).back());
+  const double radius = dem_of(periodic)->grain_radius_m * (1.0 - dem_of(periodic)->radius_spread);
+  int across = 0;
+  for (Eigen::Index g = 0; g < last.grains.size(); ++g) {
+    const double y = last.grains.position_m(g, 1);
+    EXPECT_GE(y, 0.0);
+    EXPECT_LT(y, 0.012);
+    if (y < 0.5 * radius || y > 0.012 - 0.5 * radius) ++across;
+  }
+  EXPECT_GT(across, 0) << "no grain lies across the periodic edges";
 }
 
 }  // namespace

@@ -59,6 +59,26 @@ TEST(ColumnScript, SlotBedHasAGatePlaneAndInsertsBehindIt) {
   EXPECT_EQ(script.find("zcylinder"), std::string::npos);
 }
 
+// A periodic strip: y repeats, so neither script has side walls, and the
+// slot's grains are inserted over its whole gap (no wall keeps them off it).
+TEST(ColumnScript, PeriodicSidesDropTheSideWallsInBothScripts) {
+  const Scene walls = testing::column_dem_scene(Shape::kSlot, 0.03);
+  const Scene periodic = with_dem_changed(walls, [](DemSpec& d) { d.sides = DemSpec::Sides::kPeriodic; });
+  for (const std::string& script : {bed_script(periodic), run_script(periodic).text}) {
+    EXPECT_NE(script.find("boundary f p f\n"), std::string::npos) << script;
+    EXPECT_EQ(script.find("yplane"), std::string::npos) << script;
+    EXPECT_NE(script.find("fix wall_xmin"), std::string::npos) << script;
+    EXPECT_NE(script.find("fix wall_floor"), std::string::npos) << script;
+  }
+  for (const std::string& script : {bed_script(walls), run_script(walls).text}) {
+    EXPECT_NE(script.find("boundary f f f\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("fix wall_ymin"), std::string::npos) << script;
+  }
+  // the same grains fill a wider open area, so the insertion region is lower
+  EXPECT_LT(bed_domain(periodic, {}).z_max_m, bed_domain(walls, {}).z_max_m);
+  EXPECT_EQ(bed_grain_count(periodic, {}), bed_grain_count(walls, {}));
+}
+
 TEST(ColumnScript, CylinderBedHasACylinderGateAndInsertsInsideIt) {
   const Scene s = testing::column_dem_scene(Shape::kCylinder, 0.03);
   const std::string script = bed_script(s);

@@ -1,0 +1,57 @@
+// Material: the presets, the rule validate() applies to every field, and the
+// fraction displaced while pressing and while dragging.
+#include "models/ground/material.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "models/core/base/error.h"
+
+namespace repose {
+namespace {
+
+TEST(Material, PresetsDisplaceAlikeWhetherPressedOrDragged) {
+  for (const char* name : {"sand", "mud", "snow"}) {
+    Material m;
+    ASSERT_TRUE(material_preset(name, &m)) << name;
+    EXPECT_EQ(m.drag_compaction_ratio, 1.0) << name;
+    EXPECT_EQ(m.displaced_fraction(true), m.displaced_fraction(false)) << name;
+    EXPECT_NO_THROW(validate(m)) << name;
+  }
+}
+
+// Dragging compresses drag_compaction_ratio times what pressing does.
+TEST(Material, DraggingCompressesTheRatioOfWhatPressingDoes) {
+  Material m;
+  m.alpha = 0.4;
+  m.drag_compaction_ratio = 0.5;
+  EXPECT_DOUBLE_EQ(m.displaced_fraction(false), 0.4);
+  EXPECT_DOUBLE_EQ(1.0 - m.displaced_fraction(true), 0.5 * (1.0 - 0.4));
+  m.drag_compaction_ratio = 0.0;  // a drag displaces everything it meets
+  EXPECT_EQ(m.displaced_fraction(true), 1.0);
+  m.drag_compaction_ratio = 10.0;  // compresses more than there is: nothing displaced, never negative
+  EXPECT_EQ(m.displaced_fraction(true), 0.0);
+}
+
+TEST(Material, ValidateNamesTheFieldOutsideItsInterval) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const double bad : {-0.1, 10.5, nan}) {
+    Material m;
+    m.drag_compaction_ratio = bad;
+    try {
+      validate(m);
+      FAIL() << "accepted drag_compaction_ratio " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("drag_compaction_ratio"), std::string::npos) << e.what();
+    }
+  }
+  Material m;
+  m.alpha = 1.5;
+  EXPECT_THROW(validate(m), InputError);
+}
+
+}  // namespace
+}  // namespace repose

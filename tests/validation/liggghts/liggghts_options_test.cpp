@@ -1,0 +1,96 @@
+#include "validation/liggghts/liggghts_options.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "models/core/base/error.h"
+#include "models/core/config/scene.h"
+#include "models/core/config/scene_loader.h"
+#include "tests/validation/liggghts/dem_test_scene.h"
+#include "validation/liggghts/liggghts_script.h"
+#include "validation/liggghts/liggghts_section.h"
+#include "validation/particles/dem_section.h"
+
+namespace repose {
+namespace {
+
+std::string error_of(const std::string& section) {
+  try {
+    liggghts_section_type().read(parse_yaml(section, "scene.yaml"), Scene{});
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+Scene with_options(Scene scene, const LiggghtsOptions& options) {
+  auto section = std::make_shared<LiggghtsSection>();
+  section->options = options;
+  scene.sections[LiggghtsSection::kKey] = section;
+  return scene;
+}
+
+TEST(LiggghtsOptions, AbsentKeysKeepTheDocumentedDefaults) {
+  const auto section = liggghts_section_type().read(parse_yaml("{sort_every_steps: 0}", "scene.yaml"), Scene{});
+  const LiggghtsOptions& o = dynamic_cast<const LiggghtsSection&>(*section).options;
+  EXPECT_EQ(o.sort_every_steps, 0);
+  EXPECT_DOUBLE_EQ(o.neighbor_skin_radii, 1.0);
+  EXPECT_EQ(o.neighbor_check_every_steps, 1);
+}
+
+TEST(LiggghtsOptions, MalformedSectionsGiveOneLineErrorsNamingTheKey) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{neighbor_skin_radii: 0}", "neighbor_skin_radii"},
+      {"{neighbor_skin_radii: nan}", "neighbor_skin_radii"},
+      {"{neighbor_check_every_steps: 0}", "neighbor_check_every_steps"},
+      {"{sort_every_steps: -1}", "sort_every_steps"},
+      {"{sort_every_steps: 1.5}", "sort_every_steps"},
+      {"{skin: 2}", "skin"},  // unknown key
+  };
+  for (const auto& [section, key] : cases) {
+    const std::string message = error_of(section);
+    EXPECT_NE(message.find(key), std::string::npos) << section << " -> " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST(LiggghtsOptions, InASceneTheErrorNamesTheFileLineAndKeyPath) {
+  const std::string scene =
+      "time: {step_s: 0.01, duration_s: 0.1}\n"
+      "ground: {extent_m: [0.04, 0.04], cell_size_m: 0.004, initial_height: {kind: flat, height_m: 0.01}}\n"
+      "dem: {bed_depth_m: 0.01}\n"
+      "liggghts: {neighbor_check_every_steps: 5000}\n";
+  try {
+    load_scene_from_string(scene, "/tmp/scene.yaml", {dem_section_type(), liggghts_section_type()});
+    FAIL() << "accepted a check every 5000 steps";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/tmp/scene.yaml:4:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("liggghts.neighbor_check_every_steps"), std::string::npos) << e.what();
+  }
+}
+
+// The defaults write the lines every cached bed was made with; tuning
+// changes the run script only, so a tuned run keeps its settled bed.
+TEST(LiggghtsOptions, TuningChangesTheRunScriptAndNeverTheBed) {
+  const Scene plain = testing::small_dem_scene(true);
+  const std::string skin = liggghts_number(0.002 * 1.1);
+  EXPECT_NE(bed_script(plain).find("neighbor " + skin + " bin\nneigh_modify delay 0\n\n#"), std::string::npos);
+  const std::string plain_run = run_script(plain).text;
+  EXPECT_NE(plain_run.find("neighbor " + skin + " bin\nneigh_modify delay 0\n\n#"), std::string::npos);
+  EXPECT_EQ(plain_run.find("atom_modify sort"), std::string::npos);
+
+  LiggghtsOptions tuned;
+  tuned.neighbor_skin_radii = 0.5;
+  tuned.neighbor_check_every_steps = 5;
+  tuned.sort_every_steps = 0;
+  const Scene fast = with_options(plain, tuned);
+  EXPECT_EQ(bed_script(fast), bed_script(plain));
+  const std::string run = run_script(fast).text;
+  EXPECT_NE(run.find("neighbor " + liggghts_number(0.5 * 0.002 * 1.1) + " bin\n"), std::string::npos) << run;
+  EXPECT_NE(run.find("neigh_modify delay 0 every 5 check yes\n"), std::string::npos) << run;
+  EXPECT_NE(run.find("atom_modify sort 0 0\n"), std::string::npos) << run;
+}
+
+}  // namespace
+}  // namespace repose
