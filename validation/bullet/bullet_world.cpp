@@ -58,8 +58,11 @@ class BulletWorld final : public RigidWorld {
   double time_step_s() const override { return options_.rigid.time_step_s; }
   GrainSet grains() const override;
   double kinetic_energy_j() const override;
+  std::vector<FreeBodyState> free_bodies() const override;
 
  private:
+  void add_free_body(const ObjectSpec& object, const RigidContactLaw& law);
+  btCollisionShape* free_body_shape(const ObjectSpec& object);
   void set_globals() const;
   btRigidBody* add_body(btCollisionShape* shape, double mass_kg, const btTransform& at, const RigidContactLaw& law,
                         double rolling_mu);
@@ -84,6 +87,7 @@ class BulletWorld final : public RigidWorld {
   std::vector<std::unique_ptr<btRigidBody>> bodies_;  // grains first, in spec order
   std::vector<btRigidBody*> grains_;
   std::vector<btRigidBody*> objects_;
+  std::vector<btRigidBody*> free_;
 };
 
 BulletWorld::BulletWorld(const RigidWorldSpec& spec, const BulletOptions& options)
@@ -100,6 +104,7 @@ BulletWorld::BulletWorld(const RigidWorldSpec& spec, const BulletOptions& option
   info.m_splitImpulse = true;
   info.m_splitImpulsePenetrationThreshold = -options.split_impulse_fraction * grain_radius_m_;
   info.m_restitutionVelocityThreshold = options.rigid.restitution_velocity_threshold_m_s;
+  if (options.friction_directions == 2) info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
 
   std::map<double, btCollisionShape*> spheres;  // one shape per radius
   for (Eigen::Index g = 0; g < spec.grains.size(); ++g) {
@@ -134,6 +139,31 @@ BulletWorld::BulletWorld(const RigidWorldSpec& spec, const BulletOptions& option
     world_.addRigidBody(body);
     objects_.push_back(body);
   }
+  for (const ObjectSpec& object : spec.bodies) add_free_body(object, spec.law);
+}
+
+// A dynamic body of the object's mass: Bullet's primitive, or the convex
+// hull of a mesh (Bullet moves no concave triangle mesh but through GImpact);
+// its inertia is Bullet's (exact for sphere and box, the bounding box's for a hull).
+void BulletWorld::add_free_body(const ObjectSpec& object, const RigidContactLaw& law) {
+  REPOSE_DEMAND(object.dynamic.has_value());
+  const DynamicBody& d = *object.dynamic;
+  btRigidBody* body = add_body(free_body_shape(object), object.mass_kg(), bt(object.pose_at(0.0)), law,
+                               law.rolling_friction);
+  body->setLinearVelocity(bt(d.velocity_m_s));
+  body->setAngularVelocity(bt(d.angular_velocity_rad_s));
+  free_.push_back(body);
+}
+
+btCollisionShape* BulletWorld::free_body_shape(const ObjectSpec& object) {
+  if (rigid_shape(object).kind != RigidShape::Kind::kMesh) return object_shape(object);
+  auto* hull = new btConvexHullShape();
+  for (Eigen::Index v = 0; v < object.body.V.rows(); ++v) {
+    hull->addPoint(btVector3(object.body.V(v, 0), object.body.V(v, 1), object.body.V(v, 2)), false);
+  }
+  hull->recalcLocalAabb();
+  hull->setMargin(options_.shape_margin_fraction * grain_radius_m_);
+  return own(hull);
 }
 
 BulletWorld::~BulletWorld() {
@@ -220,6 +250,18 @@ double BulletWorld::kinetic_energy_j() const {
     e += 0.5 * b->getLinearVelocity().length2() / b->getInvMass() + 0.5 * (i.x() * w.x() * w.x() + i.y() * w.y() * w.y() + i.z() * w.z() * w.z());
   }
   return e;
+}
+
+std::vector<FreeBodyState> BulletWorld::free_bodies() const {
+  std::vector<FreeBodyState> out;
+  for (const btRigidBody* b : free_) {
+    const btTransform& t = b->getWorldTransform();
+    const btQuaternion q = t.getRotation();
+    const btVector3 &p = t.getOrigin(), v = b->getLinearVelocity(), w = b->getAngularVelocity();
+    out.push_back({Pose{Eigen::Vector3d(p.x(), p.y(), p.z()), Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z())},
+                   Eigen::Vector3d(v.x(), v.y(), v.z()), Eigen::Vector3d(w.x(), w.y(), w.z())});
+  }
+  return out;
 }
 
 }  // namespace

@@ -4,6 +4,10 @@
 // btSphereShape bodies, the ground box static btBoxShapes, objects kinematic
 // bodies (Bullet primitives, or btBvhTriangleMeshShape for meshes) moved
 // through their motion states, so Bullet derives their velocity from the move.
+// Free bodies (spec.bodies) are dynamic bodies of their mass: Bullet's
+// primitives, a mesh as its convex hull (btConvexHullShape; Bullet moves a
+// concave mesh only through GImpact), inertia Bullet's (a hull's is its
+// bounding box's).
 // Sequential impulse solver, btDbvtBroadphase, deactivation off (mm grains
 // never sleep: one island), every step of the fixed size.
 //

@@ -121,6 +121,7 @@ long write_motion(std::ostringstream& s, const Scene& scene, const DemSpec& dem,
     std::vector<std::string> fixes;
     s << "# segment " << seg << ": t = " << n(times[seg]) << " .. " << n(times[seg + 1]) << " s\n";
     for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+      if (scene.objects[k].dynamic) continue;  // a free sphere: moved by LIGGGHTS itself (liggghts_free_body.h)
       const auto ids = write_segment_fixes(s, scene.objects[k], k, seg, times[seg], times[seg + 1], span_s,
                                            mesh_fix_ids[k]);
       fixes.insert(fixes.end(), ids.begin(), ids.end());

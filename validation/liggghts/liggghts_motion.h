@@ -24,7 +24,7 @@ Eigen::Vector3d position_at(const ObjectSpec& object, double t);
 bool rotates(const ObjectSpec& object);
 
 // Writes every segment's fixes, its `run N` and the unfixes; object k's mesh
-// is the fix mesh_fix_ids[k]. Returns the steps of the whole run.
+// is the fix mesh_fix_ids[k] (free bodies are skipped). Returns the steps of the whole run.
 long write_motion(std::ostringstream& s, const Scene& scene, const DemSpec& dem,
                   const std::vector<std::string>& mesh_fix_ids);
 

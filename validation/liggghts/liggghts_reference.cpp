@@ -12,6 +12,7 @@
 #include "models/core/io/npy_io.h"
 #include "models/core/base/sha256.h"
 #include "validation/liggghts/liggghts_dump.h"
+#include "validation/liggghts/liggghts_free_body.h"
 #include "validation/liggghts/liggghts_thermo.h"
 #include "validation/particles/particle_observables.h"
 
@@ -22,6 +23,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kRunScriptFile = "run.in";
+constexpr double kRestingWindowFraction = 0.2;  // a free body's resting force: the mean over this last part of the run
 
 void write_forces_csv(const fs::path& path, const ThermoTable& thermo, const RunScript& script, double step_s) {
   std::ofstream out(path);
@@ -63,6 +65,20 @@ void measure_column(LiggghtsReferenceResult& r, const Scene& scene, const std::v
   if (geometry.shape == DemSpec::ColumnShape::kCylinder) {
     r.pile = pile_flank_angles(r.height_final, geometry.axis_xy_m, options.flank);
     write_flank_angles_csv((dir / "pile_flank_angles.csv").string(), *r.pile);
+  }
+}
+
+// The free spheres' tracks (printed by LIGGGHTS), their rest, their CSV files.
+void measure_free_bodies(LiggghtsReferenceResult& r, const Scene& scene, const fs::path& dir) {
+  const DemSpec& dem = *dem_of(scene);
+  r.free_bodies = read_liggghts_free_bodies(scene, dem, dir.string());
+  std::size_t b = 0;
+  for (const ObjectSpec& o : scene.objects) {
+    if (!o.dynamic) continue;
+    const FreeBodyTrack& t = r.free_bodies[b++];
+    r.free_body_rests.push_back(
+        free_body_rest(o, t, r.height_initial, dem.gravity_m_s2, kRestingWindowFraction * scene.time.duration_s));
+    write_free_body_csv((dir / ("free_body_" + t.name + ".csv")).string(), t);
   }
 }
 
@@ -109,6 +125,7 @@ nlohmann::json liggghts_results_json(const LiggghtsReferenceResult& r) {
       r.run.cpu_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.cpu_time_s : 0.0;
   json.update(column_results_json(r.column, r.pile));
   for (const auto& [name, kg] : r.mass_held_kg) json["mass_held_kg"][name] = kg;
+  if (!r.free_bodies.empty()) json["free_bodies"] = free_bodies_json(r.free_bodies, r.free_body_rests);
   return json;
 }
 
@@ -165,9 +182,11 @@ LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::st
   write_forces_csv(dir / "forces.csv", read_thermo_table((dir / "log.liggghts").string()), script,
                    dem_of(scene)->time_step_s);
   if (dem_of(scene)->initial == DemSpec::Initial::kColumn) measure_column(r, scene, dumps, options, dir);
-  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+  measure_free_bodies(r, scene, dir);
+  for (std::size_t k = 0, b = 0; k < scene.objects.size(); ++k) {
     const ObjectSpec& o = scene.objects[k];
-    const TriangleMesh world = transformed(o.body, o.pose_at(scene.time.duration_s));
+    const Pose end = o.dynamic ? r.free_bodies[b++].samples.back().state.pose : o.pose_at(scene.time.duration_s);
+    const TriangleMesh world = transformed(o.body, end);
     r.mass_held_kg.emplace_back(o.name.empty() ? fmt::format("object_{}", k) : o.name,
                                 mass_held_by_object_kg(last.grains, world, dem_of(scene)->density_kg_m3));
   }

@@ -11,7 +11,9 @@
 //        liggghts_manifest.json      LIGGGHTS version, script sha256, grain count,
 //                                    steps, particle-steps per second, wall and CPU times
 //        bed_manifest.json           the settled bed's manifest (its cost)
-//   the manifest also holds mass_held_kg: the mass of grains each object holds at the end
+//        free_body_NAME.csv          a free sphere's trajectory and contact force (free_body_track.h;
+//                                    LIGGGHTS prints free_body_NAME.txt, liggghts_free_body.h)
+//   the manifest also holds free_bodies (each one's rest: depth, force, final state) and mass_held_kg: the mass of grains each object holds at the end
 //   and for a scene that starts from a column (dem.initial: column):
 //        runout.csv                  time_s, front_m: the deposit front over the dumps
 //        pile_flank_angles.csv       cylinder columns: the final pile's flank angle per azimuth (degrees)
@@ -28,6 +30,7 @@
 
 #include "models/core/config/scene.h"
 #include "validation/particles/column_collapse.h"
+#include "validation/particles/free_body_track.h"
 #include "validation/liggghts/liggghts_bed.h"
 #include "validation/liggghts/liggghts_neighbor_stats.h"
 #include "validation/liggghts/liggghts_runner.h"
@@ -63,6 +66,8 @@ struct LiggghtsReferenceResult {
   // holds at the end of the run (mass_held_by_object_kg, observables.h), the
   // object at ObjectSpec::pose_at(scene duration), grains of the scene's density.
   std::vector<std::pair<std::string, double>> mass_held_kg;
+  std::vector<FreeBodyTrack> free_bodies;  // per free sphere (scene order)
+  std::vector<FreeBodyRest> free_body_rests;
 };
 
 // Throws InputError for a scene that cannot run (no dem section, a time step

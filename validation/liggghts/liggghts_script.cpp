@@ -1,4 +1,5 @@
 #include "validation/liggghts/liggghts_script.h"
+#include "validation/liggghts/liggghts_free_body.h"
 
 #include <algorithm>
 #include <charconv>
@@ -333,6 +334,8 @@ void place_objects(const Scene& scene, const DemSpec& dem, const RunScriptOption
   double top = is_column(dem) ? 1.25 * dem.column_height_m : dem.bed_depth_m * 2.0;
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     const ObjectSpec& o = scene.objects[k];
+    if (o.dynamic) top = std::max(top, free_sphere_top_m(o, dem.gravity_m_s2));  // an atom (liggghts_free_body.h)
+    if (o.dynamic) continue;
     if (rotates(o)) {
       // any orientation in between: the body's farthest vertex from its origin bounds its top
       double reach = 0.0;
@@ -385,16 +388,19 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
     << "reset_timestep 0\n"
     << "run 0\n"
     << "change_box all z final " << n(d.z_min_m) << " " << n(d.z_max_m) << " units box\n\n";
+  s << free_sphere_commands(scene, dem);
   std::string thermo = "thermo_style custom step atoms ke";
   write_object_walls(s, out, dem, &thermo);
   s << thermo << "\n"
     << "thermo " << thermo_every << "\n"
     << "thermo_modify lost error norm no\n"
-    << "dump grains all custom " << out.dump_interval_steps << " " << kDumpDirectory
+    << "dump grains " << liggghts_dump_group(scene) << " custom " << out.dump_interval_steps << " " << kDumpDirectory
     << "/dump.*.txt id type x y z radius\n"
     << "dump_modify grains sort id\n\n";
   std::vector<std::string> mesh_fix_ids;
-  for (const LiggghtsMeshFile& m : out.meshes) mesh_fix_ids.push_back(m.fix_id);
+  for (std::size_t k = 0, mesh = 0; k < scene.objects.size(); ++k) {  // a free sphere has no mesh: ""
+    mesh_fix_ids.push_back(scene.objects[k].dynamic ? std::string() : out.meshes[mesh++].fix_id);
+  }
   out.total_steps = write_motion(s, scene, dem, mesh_fix_ids);
   s << "print \"" << kCompleteMarker << "\"\n";
   out.text = s.str();

@@ -23,7 +23,7 @@ void split_results(const nlohmann::json& json, const std::string& prefix, Run& r
     if (value.is_object()) {
       split_results(value, name, run);
     } else if (value.is_number()) {
-      const bool cost = name.ends_with("_s") && !name.starts_with("particle");
+      const bool cost = name.ends_with("_s") && !name.ends_with("_m_s") && !name.starts_with("particle");
       run.set(name, value.get<double>(), cost ? "s" : name.starts_with("mass_held_kg") ? "kg" : "");
     } else {
       run.details[name] = value;
@@ -60,6 +60,7 @@ class CompiledLiggghts final : public CompiledSolver {
     if (!temporary) {
       run.files = {"height_final.csv", "height_initial.csv", "material_per_area_final.csv", "forces.csv",
                    "liggghts_manifest.json", "bed_manifest.json", "run.in", "log.liggghts"};
+      for (const FreeBodyTrack& t : r.free_bodies) run.files.push_back("free_body_" + t.name + ".csv");
       if (r.column) run.files.push_back("runout.csv");
       if (r.pile) run.files.push_back("pile_flank_angles.csv");
     }

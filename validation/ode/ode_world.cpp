@@ -2,6 +2,7 @@
 
 #include <ode/ode.h>
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <vector>
@@ -22,6 +23,8 @@ struct GeomInfo {
   bool grain = false;
   double radius_m = 0.0;      // grains
   double rolling_mu = 0.0;    // mu_r against grains
+  bool free = false;          // a free body: meets walls, objects and other free bodies too
+  double cfm_scale = 1.0;     // its contacts' CFM relative to the grains' (free bodies: grain mass / its mass)
 };
 
 void init_ode_once() {
@@ -39,8 +42,10 @@ class OdeWorld final : public RigidWorld {
   double time_step_s() const override { return options_.rigid.time_step_s; }
   GrainSet grains() const override;
   double kinetic_energy_j() const override;
+  std::vector<FreeBodyState> free_bodies() const override;
 
  private:
+  void add_free_body(const ObjectSpec& object, const RigidContactLaw& law);
   static void near_callback(void* self, dGeomID a, dGeomID b);
   void collide_pair(dGeomID a, dGeomID b);
   void add_grains(const RigidWorldSpec& spec);
@@ -62,6 +67,8 @@ class OdeWorld final : public RigidWorld {
   std::vector<double> grain_radius_m_;
   std::vector<dBodyID> objects_;
   std::vector<Pose> object_targets_;
+  std::vector<dBodyID> free_;
+  double grain_mass_kg_ = 0.0;  // of the largest grain: sizes a free body's contact softness
   std::vector<dTriMeshDataID> mesh_data_;
   std::vector<std::vector<double>> mesh_vertices_;
   std::vector<std::vector<dTriIndex>> mesh_indices_;
@@ -79,13 +86,15 @@ OdeWorld::OdeWorld(const RigidWorldSpec& spec, const OdeOptions& options) : opti
   dWorldSetQuickStepNumIterations(world_, options.rigid.solver_iterations);
   dWorldSetAutoDisableFlag(world_, 0);
   const double r_max = spec.grains.size() > 0 ? spec.grains.radius_m.maxCoeff() : 0.001;
+  grain_mass_kg_ = spec.density_kg_m3 * 4.0 / 3.0 * M_PI * r_max * r_max * r_max;
   dWorldSetContactSurfaceLayer(world_, options.surface_layer_fraction * r_max);
   space_ = dHashSpaceCreate(nullptr);
   const int min_level = static_cast<int>(std::floor(std::log2(2.0 * r_max)));
   dHashSpaceSetLevels(space_, min_level, min_level + 4);
   contacts_ = dJointGroupCreate(0);
   scratch_.resize(static_cast<std::size_t>(options.max_contacts_per_pair));
-  infos_.reserve(static_cast<std::size_t>(spec.grains.size()) + spec.walls.size() + spec.objects.size());
+  infos_.reserve(static_cast<std::size_t>(spec.grains.size()) + spec.walls.size() + spec.objects.size() +
+                 spec.bodies.size());
 
   add_grains(spec);
   for (const StaticBox& wall : spec.walls) {
@@ -110,6 +119,7 @@ OdeWorld::OdeWorld(const RigidWorldSpec& spec, const OdeOptions& options) : opti
     objects_.push_back(body);
     object_targets_.push_back(p);
   }
+  for (const ObjectSpec& object : spec.bodies) add_free_body(object, spec.law);
   for (std::size_t k = 0; k < geoms_.size(); ++k) dGeomSetData(geoms_[k], &infos_[k]);
 }
 
@@ -132,6 +142,44 @@ void OdeWorld::add_grains(const RigidWorldSpec& spec) {
     grains_.push_back(body);
     grain_radius_m_.push_back(r);
   }
+}
+
+// The mass of a primitive is ODE's exact one; a mesh's is its bounding box's
+// of the same mass (ODE's own trimesh mass needs the centre of mass at the
+// body origin, which a scene mesh need not have).
+void OdeWorld::add_free_body(const ObjectSpec& object, const RigidContactLaw& law) {
+  REPOSE_DEMAND(object.dynamic.has_value());
+  const DynamicBody& d = *object.dynamic;
+  const RigidShape s = rigid_shape(object);
+  const double m = object.mass_kg();
+  dMass mass;
+  switch (s.kind) {
+    case RigidShape::Kind::kSphere: dMassSetSphereTotal(&mass, m, s.radius_m); break;
+    case RigidShape::Kind::kBox: {
+      const Eigen::Vector3d size = 2.0 * s.half_extents_m;
+      dMassSetBoxTotal(&mass, m, size.x(), size.y(), size.z());
+      break;
+    }
+    case RigidShape::Kind::kCylinder: dMassSetCylinderTotal(&mass, m, 3, s.radius_m, 2.0 * s.half_height_m); break;
+    case RigidShape::Kind::kCapsule: dMassSetCapsuleTotal(&mass, m, 3, s.radius_m, 2.0 * s.half_height_m); break;
+    case RigidShape::Kind::kMesh: {
+      const Eigen::Vector3d size = object.body.V.colwise().maxCoeff() - object.body.V.colwise().minCoeff();
+      dMassSetBoxTotal(&mass, m, size.x(), size.y(), size.z());
+      break;
+    }
+  }
+  dBodyID body = dBodyCreate(world_);
+  dBodySetMass(body, &mass);
+  dGeomID geom = object_geom(object);
+  dGeomSetBody(geom, body);
+  attach(geom, {false, 0.0, law.rolling_friction, true, std::min(1.0, grain_mass_kg_ / m)});
+  const Pose p = object.pose_at(0.0);
+  dBodySetPosition(body, p.position_m.x(), p.position_m.y(), p.position_m.z());
+  const dQuaternion q = {p.orientation.w(), p.orientation.x(), p.orientation.y(), p.orientation.z()};
+  dBodySetQuaternion(body, q);
+  dBodySetLinearVel(body, d.velocity_m_s.x(), d.velocity_m_s.y(), d.velocity_m_s.z());
+  dBodySetAngularVel(body, d.angular_velocity_rad_s.x(), d.angular_velocity_rad_s.y(), d.angular_velocity_rad_s.z());
+  free_.push_back(body);
 }
 
 OdeWorld::~OdeWorld() {
@@ -168,16 +216,24 @@ void OdeWorld::near_callback(void* self, dGeomID a, dGeomID b) { static_cast<Ode
 void OdeWorld::collide_pair(dGeomID a, dGeomID b) {
   const auto* ia = static_cast<const GeomInfo*>(dGeomGetData(a));
   const auto* ib = static_cast<const GeomInfo*>(dGeomGetData(b));
-  if (!ia->grain && !ib->grain) return;  // walls and objects do not meet
+  const bool rolling = ia->grain || ib->grain;  // rolling resistance is the grains' (rigid_world.h)
+  if (!rolling && !ia->free && !ib->free) return;  // walls and kinematic objects do not meet
   const int n = dCollide(a, b, static_cast<int>(scratch_.size()), scratch_.data(), sizeof(dContactGeom));
   if (n == 0) return;
-  const double lever = ia->grain && ib->grain ? rolling_lever_m(ia->rolling_mu, ia->radius_m, ib->radius_m)
+  const double lever = !rolling              ? 0.0
+                       : ia->grain && ib->grain ? rolling_lever_m(ia->rolling_mu, ia->radius_m, ib->radius_m)
                        : ia->grain            ? rolling_lever_m(ib->rolling_mu, ia->radius_m, 0.0)
                                               : rolling_lever_m(ia->rolling_mu, ib->radius_m, 0.0);
   for (int k = 0; k < n; ++k) {
     dContact c{};
     c.geom = scratch_[static_cast<std::size_t>(k)];
-    c.surface.mode = dContactApprox1 | dContactBounce | dContactRolling | dContactAxisDep;
+    c.surface.mode = dContactApprox1 | dContactBounce | (rolling ? dContactRolling | dContactAxisDep : 0);
+    // ODE's CFM is an absolute compliance: a free body many grains heavy would sink into it
+    // and lose its bounce (rebound 0.67 e at 33 g), so its contacts are as stiff relative to its mass as a grain's
+    if (ia->free || ib->free) {
+      c.surface.mode |= dContactSoftCFM;
+      c.surface.soft_cfm = options_.cfm * std::min(ia->cfm_scale, ib->cfm_scale);
+    }
     c.surface.mu = c.surface.mu2 = law_.friction;
     c.surface.bounce = law_.restitution;
     c.surface.bounce_vel = options_.rigid.restitution_velocity_threshold_m_s;
@@ -241,6 +297,17 @@ double OdeWorld::kinetic_energy_j() const {
     e += 0.5 * m.mass * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) + 0.5 * inertia * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
   }
   return e;
+}
+
+std::vector<FreeBodyState> OdeWorld::free_bodies() const {
+  std::vector<FreeBodyState> out;
+  for (dBodyID b : free_) {
+    const dReal *p = dBodyGetPosition(b), *q = dBodyGetQuaternion(b);
+    const dReal *v = dBodyGetLinearVel(b), *w = dBodyGetAngularVel(b);
+    out.push_back({Pose{Eigen::Vector3d(p[0], p[1], p[2]), Eigen::Quaterniond(q[0], q[1], q[2], q[3])},
+                   Eigen::Vector3d(v[0], v[1], v[2]), Eigen::Vector3d(w[0], w[1], w[2])});
+  }
+  return out;
 }
 
 }  // namespace

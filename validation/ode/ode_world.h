@@ -7,6 +7,10 @@
 // rotation). QuickStep solver, dHashSpace with levels from the grain size
 // (2^min about one grain diameter, 2^(min+4) above; the default levels are
 // 1.3-2.7x slower), auto-disable off.
+// Free bodies (spec.bodies) are dynamic bodies with their geom (a mesh as
+// dTriMesh, its origin taken as its centre of mass), ODE's exact mass for
+// the primitives and a box's of the mesh's bounds; they meet grains, walls,
+// objects and each other (rolling resistance only against grains).
 //
 // Contacts take the pair values rigid_world.h states: dContactApprox1 makes
 // mu and the rolling rho coefficients of the normal force (without it they

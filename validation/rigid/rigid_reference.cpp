@@ -20,6 +20,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// The resting force is the mean over this last fraction of the run.
+constexpr double kRestingWindowFraction = 0.2;
+
 nlohmann::json phase_json(const RigidPhaseSummary& s) {
   return {{"steps", s.steps},
           {"simulated_s", s.simulated_s},
@@ -54,6 +57,7 @@ void write_manifest(const std::string& path, const RigidReferenceResult& r) {
                          {"run", phase_json(r.run)},
                          {"mass_held_kg", nlohmann::json::object()}};
   for (const auto& [name, kg] : r.mass_held_kg) json["mass_held_kg"][name] = kg;
+  if (!r.free_bodies.empty()) json["free_bodies"] = free_bodies_json(r.free_bodies, r.free_body_rests);
   json.update(column_results_json(r.column, r.pile));
   std::ofstream out(path);
   out << json.dump(2) << "\n";
@@ -91,7 +95,9 @@ RigidReferenceResult run_rigid_reference(const RigidEngine& engine, const RigidI
   const RigidWorldSpec spec = run_world(in, r.bed.grains);
   const auto world = engine.make_world(spec);
   std::vector<RigidFrame> frames;
-  r.run = run_motion(*world, in.objects, in.time.duration_s, in.dem.dump_interval_s, &frames);
+  r.free_bodies = start_free_body_tracks(spec.bodies);
+  const RigidRecording recording{in.dem.dump_interval_s, &frames, &r.free_bodies, in.dem.gravity_m_s2};
+  r.run = run_motion(*world, spec.objects, in.time.duration_s, recording);
   r.grains_final = world->grains();
   demand_no_grain_lost(r.grains_final, spec.bounds, engine.name, "the run");
 
@@ -103,8 +109,16 @@ RigidReferenceResult run_rigid_reference(const RigidEngine& engine, const RigidI
   r.height_initial = surface_height(r.grains_initial, in.grid, surface);
   r.height_final = surface_height(r.grains_final, in.grid, surface);
   r.material_per_area_final = material_per_area(r.grains_final, in.grid);
+  for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
+    r.free_body_rests.push_back(free_body_rest(spec.bodies[k], r.free_bodies[k], r.height_initial, in.dem.gravity_m_s2,
+                                               kRestingWindowFraction * in.time.duration_s));
+  }
   for (const ObjectSpec& o : in.objects) {
-    const TriangleMesh world_mesh = transformed(o.body, o.pose_at(in.time.duration_s));
+    Pose end = o.pose_at(in.time.duration_s);
+    for (const FreeBodyTrack& t : r.free_bodies) {
+      if (t.name == o.name) end = t.samples.back().state.pose;
+    }
+    const TriangleMesh world_mesh = transformed(o.body, end);
     r.mass_held_kg.emplace_back(o.name, mass_held_by_object_kg(r.grains_final, world_mesh, in.dem.density_kg_m3));
   }
   if (in.column) measure_column(r, in, frames, options);
@@ -118,6 +132,7 @@ void write_rigid_reference(const RigidReferenceResult& r, const std::string& run
   write_npy_2d((dir / "material_per_area_final.npy").string(), r.material_per_area_final.heights());
   write_grains_npy((dir / "grains_initial.npy").string(), r.grains_initial);
   write_grains_npy((dir / "grains_final.npy").string(), r.grains_final);
+  for (const FreeBodyTrack& t : r.free_bodies) write_free_body_csv((dir / ("free_body_" + t.name + ".csv")).string(), t);
   if (r.column) write_runout_csv((dir / "runout.csv").string(), *r.column);
   if (r.pile) write_flank_angles_csv((dir / "pile_flank_angles.csv").string(), *r.pile);
   write_manifest((dir / fmt::format("{}_manifest.json", r.engine)).string(), r);

@@ -13,6 +13,9 @@
 //   ENGINE_manifest.json (engine, version, every option used, grain count, steps,
 //   particle-steps per CPU second, wall and CPU times, mass_held_kg, and
 //   for a column scene its runout and pile flank angles, as LIGGGHTS writes them);
+//   a scene with free bodies writes free_body_NAME.csv per body (trajectory
+//   and contact force every step, free_body_track.h) and their rest in the
+//   manifest's free_bodies;
 //   a column scene also writes runout.csv (the front every dem.dump_interval_s)
 //   and, for a cylinder, pile_flank_angles.csv.
 
@@ -23,6 +26,7 @@
 
 #include "models/core/geometry/height_field.h"
 #include "validation/particles/column_collapse.h"
+#include "validation/particles/free_body_track.h"
 #include "validation/particles/grain_set.h"
 #include "validation/particles/particle_observables.h"
 #include "validation/particles/surface_height.h"
@@ -55,6 +59,8 @@ struct RigidReferenceResult {
   // Per object (scene order): its name and the mass (kg) of the grains it
   // holds at the end (mass_held_by_object_kg), the object at pose_at(duration).
   std::vector<std::pair<std::string, double>> mass_held_kg;
+  std::vector<FreeBodyTrack> free_bodies;  // per free body (scene order): a sample every step
+  std::vector<FreeBodyRest> free_body_rests;
   std::optional<ColumnCollapse> column;  // a column scene: its runout
   std::optional<FlankAngles> pile;       // a cylinder column: the final pile's flank angles
 };

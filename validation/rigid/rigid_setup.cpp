@@ -9,6 +9,7 @@
 
 #include "models/core/base/error.h"
 #include "validation/liggghts/liggghts_script.h"
+#include "validation/rigid/rigid_simulation.h"
 
 namespace repose {
 
@@ -172,7 +173,8 @@ RigidWorldSpec run_world(const RigidInputs& in, const GrainSet& settled) {
   double top = grains_top_m(settled);
   for (const ObjectSpec& o : in.objects) top = std::max(top, object_top_m(o));
   RigidWorldSpec w = world_of(in, settled, top + 4.0 * largest_radius_m(in.dem));
-  w.objects = in.objects;
+  w.objects = kinematic_objects(in.objects);
+  w.bodies = free_body_objects(in.objects);
   return w;
 }
 

@@ -56,24 +56,44 @@ RigidPhaseSummary settle(RigidWorld& world, double threshold_j, double check_int
 }
 
 RigidPhaseSummary run_motion(RigidWorld& world, const std::vector<ObjectSpec>& objects, double duration_s,
-                             double frame_interval_s, std::vector<RigidFrame>* frames) {
+                             const RigidRecording& rec) {
   const PhaseClock clock;
   RigidPhaseSummary s;
   const double dt = world.time_step_s();
   const long steps = std::lround(std::ceil(duration_s / dt - 1e-9));
-  const long steps_per_frame = frame_interval_s > 0.0 ? std::max(1L, std::lround(frame_interval_s / dt)) : steps;
+  const long steps_per_frame = rec.frame_interval_s > 0.0 ? std::max(1L, std::lround(rec.frame_interval_s / dt)) : steps;
   std::vector<Pose> poses(objects.size());
+  if (rec.free_bodies) record_free_bodies(*rec.free_bodies, 0.0, world.free_bodies(), rec.gravity_m_s2);
   for (; s.steps < steps; ++s.steps) {
     const double t_end = static_cast<double>(s.steps + 1) * dt;
     for (std::size_t k = 0; k < objects.size(); ++k) poses[k] = objects[k].pose_at(t_end);
     world.set_object_poses(poses);
     world.step();
-    if (frames && ((s.steps + 1) % steps_per_frame == 0 || s.steps + 1 == steps)) frames->push_back({t_end, world.grains()});
+    if (rec.frames && ((s.steps + 1) % steps_per_frame == 0 || s.steps + 1 == steps)) {
+      rec.frames->push_back({t_end, world.grains()});
+    }
+    if (rec.free_bodies) record_free_bodies(*rec.free_bodies, t_end, world.free_bodies(), rec.gravity_m_s2);
   }
   s.simulated_s = static_cast<double>(s.steps) * dt;
   s.kinetic_energy_j = world.kinetic_energy_j();
   clock.stop(s);
   return s;
+}
+
+std::vector<ObjectSpec> kinematic_objects(const std::vector<ObjectSpec>& objects) {
+  std::vector<ObjectSpec> out;
+  for (const ObjectSpec& o : objects) {
+    if (!o.dynamic) out.push_back(o);
+  }
+  return out;
+}
+
+std::vector<ObjectSpec> free_body_objects(const std::vector<ObjectSpec>& objects) {
+  std::vector<ObjectSpec> out;
+  for (const ObjectSpec& o : objects) {
+    if (o.dynamic) out.push_back(o);
+  }
+  return out;
 }
 
 std::vector<long> lost_grains(const GrainSet& grains, const RigidBounds& b) {

@@ -31,11 +31,23 @@ struct RigidFrame {
   GrainSet grains;
 };
 
-// Steps ceil(duration_s / time step) times; before each step the objects
-// are placed at ObjectSpec::pose_at(end of that step). With frames, the
-// grains are recorded every frame_interval_s (to the nearest step) and at the end.
+// The objects moved along keyframes (dynamic unset) and the free bodies, each in scene order.
+std::vector<ObjectSpec> kinematic_objects(const std::vector<ObjectSpec>& objects);
+std::vector<ObjectSpec> free_body_objects(const std::vector<ObjectSpec>& objects);
+
+// What a run records besides its summary (each optional).
+struct RigidRecording {
+  double frame_interval_s = 0.0;          // grains every this (to the nearest step) and at the end
+  std::vector<RigidFrame>* frames = nullptr;
+  std::vector<FreeBodyTrack>* free_bodies = nullptr;  // started tracks (free_body_track.h): a sample every step
+  double gravity_m_s2 = 9.81;             // for the free bodies' contact force
+};
+
+// Steps ceil(duration_s / time step) times; before each step the kinematic
+// objects (the world's, in order) are placed at ObjectSpec::pose_at(end of
+// that step).
 RigidPhaseSummary run_motion(RigidWorld& world, const std::vector<ObjectSpec>& objects, double duration_s,
-                             double frame_interval_s = 0.0, std::vector<RigidFrame>* frames = nullptr);
+                             const RigidRecording& recording = {});
 
 // The grains that left the ground box (centre beyond a side wall or below
 // the floor by more than its radius) or are not finite; empty when none.

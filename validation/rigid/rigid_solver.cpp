@@ -35,6 +35,16 @@ void set_measures(const RigidReferenceResult& r, const RigidEngine& engine, Run&
   run.set("time_step_s", engine.rigid.time_step_s, "s");
   run.set("solver_iterations", engine.rigid.solver_iterations, "count");
   for (const auto& [name, kg] : r.mass_held_kg) run.set("mass_held_kg." + name, kg, "kg");
+  for (std::size_t k = 0; k < r.free_bodies.size(); ++k) {
+    const std::string key = "free_bodies." + r.free_bodies[k].name;
+    const FreeBodyRest& rest = r.free_body_rests[k];
+    run.set(key + ".resting_depth_m", rest.resting_depth_m, "m");
+    run.set(key + ".final_z_m", rest.position_m.z(), "m");
+    run.set(key + ".final_speed_m_s", rest.final_speed_m_s, "m/s");
+    run.set(key + ".resting_force_z_n", rest.resting_force_n.z(), "N");
+    run.set(key + ".weight_n", rest.weight_n, "N");
+    run.set(key + ".max_force_n", rest.max_force_n, "N");
+  }
   if (r.column) {
     run.set("column.height_initial_m", r.column->height_initial_m, "m");
     run.set("column.aspect_ratio", r.column->aspect_ratio, "1");
@@ -77,6 +87,7 @@ class CompiledRigid final : public CompiledSolver {
       write_rigid_reference(r, options.output_dir);
       run.files = {"height_initial.npy", "height_final.npy", "material_per_area_final.npy", "grains_initial.npy",
                    "grains_final.npy", engine_.name + "_manifest.json"};
+      for (const FreeBodyTrack& t : r.free_bodies) run.files.push_back("free_body_" + t.name + ".csv");
       if (r.column) run.files.push_back("runout.csv");
       if (r.pile) run.files.push_back("pile_flank_angles.csv");
     }

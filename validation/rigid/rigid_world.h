@@ -26,6 +26,7 @@
 
 #include "models/core/config/scene.h"
 #include "validation/particles/dem_section.h"
+#include "validation/particles/free_body_track.h"
 #include "models/core/geometry/triangle_mesh.h"
 #include "validation/particles/grain_set.h"
 
@@ -61,6 +62,10 @@ struct RigidWorldSpec {
   std::vector<StaticBox> walls;     // floor first, then the side walls
   RigidBounds bounds;
   std::vector<ObjectSpec> objects;  // kinematic bodies, placed at pose_at(0); none while settling
+  // Free bodies (dynamic set): rigid bodies of their mass, from their initial
+  // pose and velocities, meeting grains, walls, objects and each other. A
+  // mesh becomes its convex hull where the engine needs one (bullet_world.h).
+  std::vector<ObjectSpec> bodies;
 };
 
 class RigidWorld {
@@ -75,6 +80,8 @@ class RigidWorld {
   virtual GrainSet grains() const = 0;
   // Translational plus rotational kinetic energy of the grains (J).
   virtual double kinetic_energy_j() const = 0;
+  // The free bodies' states (spec.bodies order); empty without free bodies.
+  virtual std::vector<FreeBodyState> free_bodies() const { return {}; }
 };
 
 using RigidWorldFactory = std::function<std::unique_ptr<RigidWorld>(const RigidWorldSpec&)>;

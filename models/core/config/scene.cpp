@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "models/core/base/error.h"
 
@@ -21,6 +22,25 @@ Pose ObjectSpec::pose_at(double time_s) const {
   p.position_m = (1.0 - u) * a.pose.position_m + u * b.pose.position_m;
   p.orientation = a.pose.orientation.slerp(u, b.pose.orientation).normalized();
   return p;
+}
+
+double ObjectSpec::volume_m3() const {
+  const double pi = std::numbers::pi;
+  const double s = scale.prod();
+  switch (shape) {
+    case Shape::kSphere: return s * 4.0 / 3.0 * pi * radius_m * radius_m * radius_m;
+    case Shape::kBox: return s * 8.0 * half_extents_m.prod();
+    case Shape::kCylinder: return s * pi * radius_m * radius_m * 2.0 * half_height_m;
+    case Shape::kCapsule:
+      return s * (pi * radius_m * radius_m * 2.0 * half_height_m + 4.0 / 3.0 * pi * radius_m * radius_m * radius_m);
+    case Shape::kMesh: break;
+  }
+  return signed_volume_m3(body);
+}
+
+double ObjectSpec::mass_kg() const {
+  REPOSE_DEMAND(dynamic.has_value());
+  return dynamic->mass_kg > 0.0 ? dynamic->mass_kg : dynamic->density_kg_m3 * volume_m3();
 }
 
 int TimeSpec::step_count() const {

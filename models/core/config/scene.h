@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 
+#include "models/core/config/dynamic_body.h"
 #include "models/core/geometry/grid.h"
 #include "models/core/geometry/height_field.h"
 #include "models/core/config/scene_section.h"
@@ -72,11 +73,17 @@ struct ObjectSpec {
   Eigen::Vector3d scale = Eigen::Vector3d::Ones();     // applied to the body before placing
   TriangleMesh body;   // the tessellated (or loaded), scaled body in body coordinates
   bool simple = false; // may be computed on a coarser height field (multi-resolution rule)
-  std::vector<Keyframe> keyframes;  // sorted by time, at least one
+  std::vector<Keyframe> keyframes;  // sorted by time, at least one; a free body: its initial pose at t = 0
+  std::optional<DynamicBody> dynamic;  // set: a free body (dynamic_body.h), not moved along keyframes
 
   // Pose at time t: position linear, orientation slerp between keyframes;
   // held constant before the first and after the last.
   Pose pose_at(double time_s) const;
+  // The body's volume: exact for the primitives (times the scale's
+  // product), the closed mesh's volume for a mesh.
+  double volume_m3() const;
+  // A free body's mass: dynamic->mass_kg, or its density times volume_m3().
+  double mass_kg() const;
 };
 
 struct TimeSpec {

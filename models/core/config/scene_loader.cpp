@@ -14,6 +14,7 @@
 #include "models/core/io/mesh_io.h"
 #include "models/core/io/npy_io.h"
 #include "models/core/io/png_io.h"
+#include "models/core/config/dynamic_body.h"
 #include "models/core/config/fields.h"
 #include "models/core/config/scene_fields.h"
 #include "models/core/config/yaml_reader.h"
@@ -230,6 +231,33 @@ std::vector<Keyframe> read_motion(const YamlValue& value) {
   return keys;
 }
 
+// A free body's dynamic: map (dynamic_body.h); its initial pose becomes the one keyframe.
+DynamicBody read_dynamic(const YamlValue& value) {
+  const YamlMap map = value.map(field_keys<DynamicBody>(kDynamicBodyFields));
+  map.required("position_m", "the initial position [x, y, z] of the free body");
+  DynamicBody d;
+  read_fields_into(map, kDynamicBodyFields, d);
+  validate_at(map, [&] { validate(d); });
+  return d;
+}
+
+// Either motion (keyframes) or dynamic (a free body), never both.
+void read_object_motion(const YamlMap& map, ObjectSpec& o) {
+  const auto motion = map.get("motion");
+  const auto dynamic = map.get("dynamic");
+  if (motion && dynamic) dynamic->fail("either motion (keyframes) or dynamic (a free body), not both", "both");
+  if (!dynamic) {
+    o.keyframes = read_motion(map.required("motion", "a list of keyframes {time_s, position_m, orientation_deg} (or dynamic: for a free body)"));
+    return;
+  }
+  o.dynamic = read_dynamic(*dynamic);
+  o.keyframes = {Keyframe{0.0, Pose{o.dynamic->position_m, orientation_from_rpy_deg(o.dynamic->orientation_deg)}}};
+  const double volume = o.volume_m3();
+  if (!(volume > 0.0) || !std::isfinite(o.mass_kg())) {
+    dynamic->fail("a body of positive volume and finite mass", fmt::format("volume {} m^3, mass {} kg", volume, o.mass_kg()));
+  }
+}
+
 Eigen::Vector3d read_scale(const YamlValue& value) {
   const Range scale = Range::left_open(0.0, 1.0e6);
   if (value.is_scalar()) return Eigen::Vector3d::Constant(value.number(scale));
@@ -254,7 +282,7 @@ TriangleMesh read_closed_mesh(const YamlValue& value, const std::string& path) {
 ObjectSpec read_object(const Context& ctx, const YamlValue& value, std::size_t index) {
   using S = ObjectSpec::Shape;
   const std::vector<std::string> shapes = {"sphere", "box", "cylinder", "capsule", "mesh"};
-  const std::vector<std::string> common = {"name", "shape", "scale", "simple", "motion"};
+  const std::vector<std::string> common = {"name", "shape", "scale", "simple", "motion", "dynamic"};
   const std::vector<std::vector<std::string>> shape_keys = {
       {"radius_m"}, {"half_extents_m", "size_m"}, {"radius_m", "half_height_m"}, {"radius_m", "half_height_m"}, {"mesh"}};
   std::vector<std::string> all = common;
@@ -307,7 +335,7 @@ ObjectSpec read_object(const Context& ctx, const YamlValue& value, std::size_t i
               fmt::format("a body reaching {} m", reach));
   }
   o.simple = map.boolean_or("simple", false);
-  o.keyframes = read_motion(map.required("motion", "a list of keyframes {time_s, position_m, orientation_deg}"));
+  read_object_motion(map, o);
   return o;
 }
 

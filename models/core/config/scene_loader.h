@@ -25,6 +25,9 @@
 //       simple: false              # optional
 //       motion:                    # keyframes, times strictly increasing; one = static
 //         - {time_s: 0, position_m: [0, 0, 0.1], orientation_deg: [roll, pitch, yaw]}
+//       # or, instead of motion, a free body (dynamic_body.h): {mass_kg | density_kg_m3,
+//       # position_m, orientation_deg, velocity_m_s, angular_velocity_rad_s}
+//       dynamic: {density_kg_m3: 7800, position_m: [0, 0, 0.05]}
 //   camera: {position_m, target_m, up, fov_y_deg, width_px, height_px}   # optional
 //   ground_model: {...}            # sections: one per solver (family), each read by the
 //   dem: {...}                     # SectionType its folder defines (scene_section.h); the

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "models/core/config/dynamic_body.h"
 #include "models/core/config/fields.h"
 #include "models/core/config/scene_fields.h"
 
@@ -72,6 +73,12 @@ void write_object(YAML::Emitter& out, const ObjectSpec& o) {
   }
   write_vec(out, "scale", o.scale);
   out << YAML::Key << "simple" << YAML::Value << o.simple;
+  if (o.dynamic) {
+    out << YAML::Key << "dynamic" << YAML::Value;
+    write_fields_map(out, *o.dynamic, kDynamicBodyFields);
+    out << YAML::EndMap;
+    return;
+  }
   out << YAML::Key << "motion" << YAML::Value << YAML::BeginSeq;
   for (const Keyframe& k : o.keyframes) {
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "time_s" << YAML::Value << num(k.time_s);
@@ -172,8 +179,10 @@ std::string describe_scene(const Scene& s) {
   for (const ObjectSpec& o : s.objects) {
     const double first_s = o.keyframes.empty() ? 0.0 : o.keyframes.front().time_s;
     const double last_s = o.keyframes.empty() ? 0.0 : o.keyframes.back().time_s;
-    out += fmt::format("  {}: {}, {} triangles, {} keyframe(s) over [{}, {}] s{}\n", o.name, shape_summary(o),
-                       o.body.F.rows(), o.keyframes.size(), first_s, last_s, o.simple ? ", simple" : "");
+    const std::string motion = o.dynamic ? fmt::format("free body of {} kg", o.mass_kg())
+                                         : fmt::format("{} keyframe(s) over [{}, {}] s", o.keyframes.size(), first_s, last_s);
+    out += fmt::format("  {}: {}, {} triangles, {}{}\n", o.name, shape_summary(o), o.body.F.rows(), motion,
+                       o.simple ? ", simple" : "");
   }
   out += fmt::format("time: {} steps of {} s ({} s); seed {}{}{}\n", s.time.step_count(), s.time.step_s,
                      s.time.duration_s, s.seed, s.camera ? "; camera" : "", "");

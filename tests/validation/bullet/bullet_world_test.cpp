@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/free_body_checks.h"
 #include "tests/support/rigid_checks.h"
 #include "validation/bullet/bullet_engine.h"
 
@@ -49,6 +50,20 @@ TEST(BulletWorld, AKinematicSpherePressedIntoTheBedLeavesADentAndLosesNoGrain) {
 
 TEST(BulletWorld, AColumnReleasedOnARoughFloorSpreadsAndLosesNoGrain) {
   expect_column_spreads(bullet_engine({}));
+}
+
+TEST(BulletWorld, AFreeSphereAndCubeDroppedOnTheFloorReboundToRestitutionSquaredTimesTheDrop) {
+  BulletOptions options;
+  options.rigid.time_step_s = 1.0 / 2400.0;  // resolves the impact, as for a grain
+  expect_free_bodies_rebound(bullet_engine(options));
+}
+
+TEST(BulletWorld, AFreeSphereDroppedIntoABedComesToRestInItHeldByTheGrains) {
+  expect_sphere_comes_to_rest_in_the_bed(bullet_engine({}));
+}
+
+TEST(BulletWorld, AFreeMeshDroppedOnTheFloorLandsOnItAsItsConvexHull) {
+  expect_free_mesh_lands_on_the_floor(bullet_engine({}), false);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/free_body_checks.h"
 #include "tests/support/rigid_checks.h"
 #include "validation/ode/ode_engine.h"
 
@@ -48,6 +49,20 @@ TEST(OdeWorld, AKinematicSpherePressedIntoTheBedLeavesADentAndLosesNoGrain) {
 
 TEST(OdeWorld, AColumnReleasedOnARoughFloorSpreadsAndLosesNoGrain) {
   expect_column_spreads(ode_engine({}));
+}
+
+TEST(OdeWorld, AFreeSphereAndCubeDroppedOnTheFloorReboundToRestitutionSquaredTimesTheDrop) {
+  OdeOptions options;
+  options.rigid.time_step_s = 1.0 / 2400.0;  // resolves the impact, as for a grain
+  expect_free_bodies_rebound(ode_engine(options));
+}
+
+TEST(OdeWorld, AFreeSphereDroppedIntoABedComesToRestInItHeldByTheGrains) {
+  expect_sphere_comes_to_rest_in_the_bed(ode_engine({}));
+}
+
+TEST(OdeWorld, AFreeMeshDroppedOnTheFloorComesToRestFlatOnIt) {
+  expect_free_mesh_lands_on_the_floor(ode_engine({}), true);
 }
 
 }  // namespace

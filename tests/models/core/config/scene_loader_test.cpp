@@ -325,6 +325,12 @@ void expect_same_scene(const Scene& a, const Scene& b) {
       EXPECT_EQ(x.keyframes[f].pose.position_m, y.keyframes[f].pose.position_m);
       EXPECT_NEAR(x.keyframes[f].pose.orientation.angularDistance(y.keyframes[f].pose.orientation), 0.0, 1e-12);
     }
+    ASSERT_EQ(x.dynamic.has_value(), y.dynamic.has_value());
+    if (x.dynamic) {
+      EXPECT_EQ(x.mass_kg(), y.mass_kg());
+      EXPECT_EQ(x.dynamic->velocity_m_s, y.dynamic->velocity_m_s);
+      EXPECT_EQ(x.dynamic->angular_velocity_rad_s, y.dynamic->angular_velocity_rad_s);
+    }
   }
   EXPECT_EQ(a.camera.has_value(), b.camera.has_value());
   EXPECT_EQ(dem_of(a) != nullptr, dem_of(b) != nullptr);
