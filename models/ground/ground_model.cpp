@@ -30,6 +30,19 @@ GroundModel make_plain_ground_model(const Grid& grid, const Material& material, 
   return model;
 }
 
+bool keyframed_objects_only(const Scene& scene, std::string* why) {
+  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    if (!scene.objects[k].dynamic) continue;
+    if (why != nullptr) {
+      *why = fmt::format("objects[{}] ('{}'): a free body (dynamic:) moves only in the particle engines (liggghts, "
+                         "bullet, ode); the ground model moves objects along keyframes (motion:)",
+                         k, scene.objects[k].name);
+    }
+    return false;
+  }
+  return true;
+}
+
 GroundModel build_ground_model(const Scene& scene) {
   const GroundSpec& ground = scene.ground;
   // material_index is 8-bit: the ground's material and at most 254 regions
@@ -47,6 +60,7 @@ GroundModel build_ground_model(const Scene& scene) {
       for (int i = i0; i <= i1; ++i) model.material_index[static_cast<std::size_t>(model.cell(i, j))] = r + 1;
     }
   }
+  if (std::string why; !keyframed_objects_only(scene, &why)) throw InputError(fmt::format("{}: {}", scene.source_path, why));
   model.objects = scene.objects;
   for (const ObjectSpec& object : model.objects) model.swept_bodies.push_back(make_swept_body(object.body));
   model.time = scene.time;

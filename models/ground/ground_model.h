@@ -37,7 +37,13 @@ struct GroundModel {
 // The scene's ground-model section gives the options and the materials
 // (ground_section.h; its reader has checked them). Throws FieldError for
 // options changed in code that break validate(GroundModelSpec).
+// Throws InputError naming the object when the scene has a free body
+// (dynamic:): only the particle engines move one.
 GroundModel build_ground_model(const Scene& scene);
+
+// False, with why (the object and what to do), when the scene has a free
+// body: the ground model and the models built on it cannot move one.
+bool keyframed_objects_only(const Scene& scene, std::string* why);
 
 // A model of a grid alone (no objects), all cells of one material: for
 // tests and the coarse patches of the multi-resolution stage.

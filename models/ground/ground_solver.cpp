@@ -90,6 +90,10 @@ class CompiledGround final : public CompiledSolver {
 
 std::vector<SectionType> GroundSolver::sections() const { return {ground_model_section_type()}; }
 
+bool GroundSolver::can_run(const Scene& scene, std::string* why) const {
+  return Solver::can_run(scene, why) && keyframed_objects_only(scene, why);
+}
+
 std::unique_ptr<CompiledSolver> GroundSolver::compile(const Scene& scene) const {
   return std::make_unique<CompiledGround>(scene);
 }

@@ -19,6 +19,8 @@ class GroundSolver final : public Solver {
     return "the ground-deformation heuristic (models/ground): height_final";
   }
   std::vector<SectionType> sections() const override;
+  // Also false for a scene with a free body (ground_model.h).
+  bool can_run(const Scene& scene, std::string* why) const override;
   std::unique_ptr<CompiledSolver> compile(const Scene& scene) const override;
 };
 

@@ -11,6 +11,7 @@
 #include "models/core/base/error.h"
 #include "models/core/config/initial_height.h"
 #include "models/core/io/npy_io.h"
+#include "models/ground/ground_model.h"
 #include "models/ground/ground_section.h"
 #include "models/ground/material_parameters.h"
 #include "models/ground/simulate_ground.h"
@@ -188,6 +189,10 @@ class CompiledHeightSpan final : public CompiledSolver {
 
 std::vector<SectionType> HeightSpanSolver::sections() const {
   return {ground_model_section_type(), heightspan_section_type()};
+}
+
+bool HeightSpanSolver::can_run(const Scene& scene, std::string* why) const {
+  return Solver::can_run(scene, why) && keyframed_objects_only(scene, why);
 }
 
 std::unique_ptr<CompiledSolver> HeightSpanSolver::compile(const Scene& scene) const {

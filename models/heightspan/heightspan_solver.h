@@ -35,6 +35,8 @@ class HeightSpanSolver final : public Solver {
     return "the height-span model (models/heightspan): objects that scoop, carry and spill material";
   }
   std::vector<SectionType> sections() const override;
+  // Also false for a scene with a free body (ground_model.h).
+  bool can_run(const Scene& scene, std::string* why) const override;
   std::unique_ptr<CompiledSolver> compile(const Scene& scene) const override;
 };
 
