@@ -30,7 +30,7 @@ from fingerprint import engine_versions
 from inputs import InputsError, load_inputs
 from latex import escape
 from macros import write_macros
-from mixed_versions import describe, mixed_versions
+from mixed_versions import describe, mixed_versions, remedies
 from provenance import write_provenance
 from run_cache import MISSING, STALE, previous_wall_s, run_entry, status_of
 from staleness_report import report_lines, write_staleness
@@ -148,8 +148,7 @@ def main(argv):
     mixed = mixed_versions([s for s in statuses if s.usable])
     if mixed and not args.allow_mixed:
         print("make-paper: refused: the run folders were made by different code versions:", file=sys.stderr)
-        print("\n".join(describe(mixed)), file=sys.stderr)
-        print("rerun the stale ones (--full), or build anyway with --allow-mixed", file=sys.stderr)
+        print("\n".join(describe(mixed) + remedies(mixed, statuses)), file=sys.stderr)
         return 3
     os.makedirs(args.out, exist_ok=True)
     try:
