@@ -4,22 +4,13 @@
 
 #include "models/core/config/fields.h"
 #include "models/core/config/scene.h"
+#include "validation/particles/option_fields.h"
 
 namespace repose {
 
 namespace {
 
 const auto kBulletFields = [](auto& v, BulletOptions& o) { bullet_option_fields(v, o); };
-
-std::shared_ptr<const SceneSection> read_bullet_section(const YamlValue& value, const Scene&) {
-  auto section = std::make_shared<BulletSection>();
-  if (value.node().IsDefined() && !value.node().IsNull()) {
-    const YamlMap map = value.map(field_keys<BulletOptions>(kBulletFields));
-    read_fields_into(map, kBulletFields, section->options);
-    validate_at(map, [&] { validate(section->options); });
-  }
-  return section;
-}
 
 }  // namespace
 
@@ -30,13 +21,13 @@ std::string BulletSection::summary() const {
 }
 
 SectionType bullet_section_type() {
-  return {BulletSection::kKey, "the Bullet rigid-body reference's options (validation/bullet/bullet_options.h)", read_bullet_section,
-          false};
+  auto read = [](const YamlValue& value, const Scene&) {
+    return read_option_section<BulletSection>(value, kBulletFields);
+  };
+  return {BulletSection::kKey,
+          "the Bullet rigid-body reference's options (validation/bullet/bullet_options.h)", read, false};
 }
 
-BulletOptions bullet_options_of(const Scene& scene) {
-  const BulletSection* section = scene.section<BulletSection>();
-  return section ? section->options : BulletOptions{};
-}
+BulletOptions bullet_options_of(const Scene& scene) { return options_of<BulletSection>(scene); }
 
 }  // namespace repose

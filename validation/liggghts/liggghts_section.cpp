@@ -4,22 +4,13 @@
 
 #include "models/core/config/fields.h"
 #include "models/core/config/scene.h"
+#include "validation/particles/option_fields.h"
 
 namespace repose {
 
 namespace {
 
 const auto kLiggghtsFields = [](auto& v, LiggghtsOptions& o) { liggghts_option_fields(v, o); };
-
-std::shared_ptr<const SceneSection> read_liggghts_section(const YamlValue& value, const Scene&) {
-  auto section = std::make_shared<LiggghtsSection>();
-  if (value.node().IsDefined() && !value.node().IsNull()) {
-    const YamlMap map = value.map(field_keys<LiggghtsOptions>(kLiggghtsFields));
-    read_fields_into(map, kLiggghtsFields, section->options);
-    validate_at(map, [&] { validate(section->options); });
-  }
-  return section;
-}
 
 }  // namespace
 
@@ -31,13 +22,13 @@ std::string LiggghtsSection::summary() const {
 }
 
 SectionType liggghts_section_type() {
-  return {LiggghtsSection::kKey, "how LIGGGHTS finds contacts (validation/liggghts/liggghts_options.h)",
-          read_liggghts_section, false};
+  auto read = [](const YamlValue& value, const Scene&) {
+    return read_option_section<LiggghtsSection>(value, kLiggghtsFields);
+  };
+  return {LiggghtsSection::kKey,
+          "how LIGGGHTS finds contacts (validation/liggghts/liggghts_options.h)", read, false};
 }
 
-LiggghtsOptions liggghts_options_of(const Scene& scene) {
-  const LiggghtsSection* section = scene.section<LiggghtsSection>();
-  return section ? section->options : LiggghtsOptions{};
-}
+LiggghtsOptions liggghts_options_of(const Scene& scene) { return options_of<LiggghtsSection>(scene); }
 
 }  // namespace repose

@@ -4,22 +4,13 @@
 
 #include "models/core/config/fields.h"
 #include "models/core/config/scene.h"
+#include "validation/particles/option_fields.h"
 
 namespace repose {
 
 namespace {
 
 const auto kOdeFields = [](auto& v, OdeOptions& o) { ode_option_fields(v, o); };
-
-std::shared_ptr<const SceneSection> read_ode_section(const YamlValue& value, const Scene&) {
-  auto section = std::make_shared<OdeSection>();
-  if (value.node().IsDefined() && !value.node().IsNull()) {
-    const YamlMap map = value.map(field_keys<OdeOptions>(kOdeFields));
-    read_fields_into(map, kOdeFields, section->options);
-    validate_at(map, [&] { validate(section->options); });
-  }
-  return section;
-}
 
 }  // namespace
 
@@ -30,13 +21,13 @@ std::string OdeSection::summary() const {
 }
 
 SectionType ode_section_type() {
-  return {OdeSection::kKey, "the ODE rigid-body reference's options (validation/ode/ode_options.h)", read_ode_section,
-          false};
+  auto read = [](const YamlValue& value, const Scene&) {
+    return read_option_section<OdeSection>(value, kOdeFields);
+  };
+  return {OdeSection::kKey,
+          "the ODE rigid-body reference's options (validation/ode/ode_options.h)", read, false};
 }
 
-OdeOptions ode_options_of(const Scene& scene) {
-  const OdeSection* section = scene.section<OdeSection>();
-  return section ? section->options : OdeOptions{};
-}
+OdeOptions ode_options_of(const Scene& scene) { return options_of<OdeSection>(scene); }
 
 }  // namespace repose

@@ -9,7 +9,11 @@
 
 #include <fmt/format.h>
 
+#include <memory>
+
 #include "models/core/config/fields.h"
+#include "models/core/config/scene.h"
+#include "models/core/config/scene_section.h"
 #include "models/core/config/yaml_reader.h"
 
 namespace repose {
@@ -34,5 +38,27 @@ struct OptionFieldText {
     text += fmt::format("{}={}\n", key, x);
   }
 };
+
+// An engine's optional section (bullet:, ode:, liggghts:): a scene without
+// the key, or with an empty one, keeps Section::options' defaults; keys are
+// checked against `fields` and the result by validate(options), every error
+// one line at its key.
+template <class Section, class Fields>
+std::shared_ptr<const SceneSection> read_option_section(const YamlValue& value, Fields fields) {
+  auto section = std::make_shared<Section>();
+  if (value.node().IsDefined() && !value.node().IsNull()) {
+    const YamlMap map = value.map(field_keys<decltype(section->options)>(fields));
+    read_fields_into(map, fields, section->options);
+    validate_at(map, [&] { validate(section->options); });
+  }
+  return section;
+}
+
+// The scene's options of that section, or the defaults when it has none.
+template <class Section>
+auto options_of(const Scene& scene) {
+  const Section* section = scene.section<Section>();
+  return section != nullptr ? section->options : decltype(section->options){};
+}
 
 }  // namespace repose
