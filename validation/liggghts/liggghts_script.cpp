@@ -1,5 +1,4 @@
 #include "validation/liggghts/liggghts_script.h"
-#include "validation/liggghts/liggghts_free_body.h"
 
 #include <algorithm>
 #include <charconv>
@@ -11,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "validation/liggghts/liggghts_free_body.h"
 #include "validation/liggghts/liggghts_motion.h"
 #include "validation/liggghts/liggghts_section.h"
 
@@ -32,8 +32,6 @@ bool is_prime(std::uint64_t n) {
   }
   return true;
 }
-
-
 
 std::string rolling_model_name(const DemSpec& dem) {
   return dem.rolling_model == DemSpec::RollingModel::kCdt ? "cdt" : "epsd2";
@@ -93,8 +91,7 @@ void write_neighbor_settings(std::ostringstream& s, const DemSpec& dem, const Li
 void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d, const LiggghtsOptions& neighbor) {
   const auto n = [](double v) { return liggghts_number(v); };
   write_neighbor_settings(s, dem, neighbor);
-  s
-    << "# materials (Young's modulus softened, as DEM practice does)"
+  s << "# materials (Young's modulus softened, as DEM practice does)"
     << (rough_floor(dem) ? "; type 2: the rough floor" : "") << "\n"
     << "fix m1 all property/global youngsModulus peratomtype " << per_type(dem, dem.youngs_modulus_pa) << "\n"
     << "fix m2 all property/global poissonsRatio peratomtype " << per_type(dem, dem.poisson_ratio) << "\n"
