@@ -70,8 +70,13 @@ void fill_git(BuildInfo* info) {
   std::string commit;
   if (!run_and_read(git + " rev-parse HEAD", &commit) || commit.size() != 40) return;
   info->git_commit = commit;
+  // dirty: the code differs from the commit. Changes under data/ (what the
+  // canonical-data script writes while it runs) are results, not code: a
+  // run made while they are being copied in is not from changed code.
   std::string changes;
-  if (run_and_read(git + " status --porcelain --untracked-files=no", &changes)) info->git_dirty = !changes.empty();
+  if (run_and_read(git + " status --porcelain --untracked-files=no -- . ':(exclude)data'", &changes)) {
+    info->git_dirty = !changes.empty();
+  }
 #endif
 }
 

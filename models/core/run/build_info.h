@@ -15,7 +15,7 @@ struct LibraryVersion {
 
 struct BuildInfo {
   std::string git_commit;   // 40 hex digits, or "unknown" outside a checkout
-  bool git_dirty = false;   // tracked files differ from git_commit
+  bool git_dirty = false;   // tracked files outside data/ differ from git_commit
   std::string compiler;     // e.g. "GCC 12.2.0"
   std::string build_type;   // CMake's build type when passed, else from NDEBUG/__OPTIMIZE__
   std::vector<LibraryVersion> libraries;
