@@ -62,7 +62,8 @@ DisplacementResult displace(const GroundModel& model, const GroundParams& params
                             const Ceiling& ceiling, const Eigen::Vector3d& motion_m, GroundState* state);
 
 // True when a motion counts as dragging: it moves horizontally by more than
-// `min_horizontal_m` and not downwards.
+// `min_horizontal_m` and not downwards (a descent below 1e-9 of the
+// horizontal motion is round-off of keyframe interpolation, not a descent).
 bool is_drag(const Eigen::Vector3d& motion_m, double min_horizontal_m);
 
 }  // namespace repose
