@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -160,7 +161,14 @@ pid_t spawn(const std::string& executable, const std::vector<std::string>& args,
   if (pid == 0) {
     ::setpgid(0, 0);  // own process group, so a limit kills everything it started
     if (::chdir(dir.c_str()) != 0) ::_exit(126);
-    if (nice_increment > 0) ::setpriority(PRIO_PROCESS, 0, nice_increment);
+    // Lowered relative to the caller's priority: setpriority sets an absolute
+    // value, which for a caller already niced above it (and run as root)
+    // raised the run's priority back to nice_increment.
+    if (nice_increment > 0) {
+      errno = 0;
+      const int current = ::getpriority(PRIO_PROCESS, 0);
+      if (errno == 0) ::setpriority(PRIO_PROCESS, 0, std::min(19, current + nice_increment));
+    }
     const int out = ::open(kStdoutFile, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     const int in = ::open("/dev/null", O_RDONLY);
     if (out >= 0) {

@@ -33,7 +33,7 @@ struct LiggghtsRunOptions {
   // CMake-found path when the build defines REPOSE_LIGGGHTS_EXECUTABLE, else "liggghts".
   std::string executable;
   double wall_clock_limit_s = 0.0;  // kill the run (whole process group) after this; 0: no limit
-  int nice_increment = 10;          // the run's CPU priority is lowered by this (shared machines)
+  int nice_increment = 10;          // the run's niceness is the caller's plus this, at most 19 (shared machines)
   long total_steps = 0;             // steps the script runs in all (for progress); 0: no fraction
   bool expect_complete_marker = true;  // a run that exits 0 without printing REPOSE_COMPLETE failed
   std::string dump_directory;       // relative to the run directory: every file there is checked for

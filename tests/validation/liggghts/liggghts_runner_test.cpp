@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -109,6 +111,20 @@ TEST_F(LiggghtsRunner, MissingProgramOrScriptIsAnInputError) {
   o.executable = "repose-no-such-program";
   EXPECT_THROW(resolve_liggghts_executable(o), InputError);
   EXPECT_THROW(run_liggghts(dir_.string(), "missing.in", fake("true")), InputError);
+}
+
+// The run is niced relative to its caller: a caller already at a low
+// priority (nice -n 19 repose ...) must not see its run raised to 10.
+TEST_F(LiggghtsRunner, NicesTheRunRelativeToItsCaller) {
+  errno = 0;
+  const int caller = ::nice(5);  // this test's own process: each test runs in its own (gtest_discover_tests)
+  ASSERT_EQ(errno, 0);
+  LiggghtsRunOptions o = fake("nice > niceness; echo REPOSE_COMPLETE >> \"$LOG\"");
+  o.nice_increment = 3;
+  run_liggghts(dir_.string(), "in.test", o);
+  int run = -100;
+  std::ifstream(dir_ / "niceness") >> run;
+  EXPECT_EQ(run, std::min(19, caller + 3));
 }
 
 }  // namespace
