@@ -11,7 +11,21 @@
 // iterations at 200 x 200); what is left is ~155 Jacobi-preconditioned CG
 // iterations over 1.2e5 unknowns (~0.45 s). An incomplete Cholesky
 // preconditioner cut the iterations to ~50 but cost more per step (1.57 s).
-// cg_iterations counts them per step. Run:
+// cg_iterations counts them per step.
+// Measured 2026-11-23 (same machine, load ~6.6; median of 3, CPU time):
+// explicit 50 x 50 5,460 steps per CPU s (target 1,000: met; but not real
+// time: the seed's twist at 50 cells steps 0.56 us, so a simulated second
+// costs ~350 CPU s, experiments/tearing_ladder.yaml), 100 x 100 1,290,
+// 200 x 200 286; implicit 50 x 50 26 steps/s (39 ms, 191 CG iterations),
+// 200 x 200 1.6 steps/s (624 ms, 161 iterations; target 20: missed 12x).
+// Adding each stiffness block at a place found once, instead of a search
+// per entry, cut the 200 x 200 assembly from ~275 to ~90 ms (results
+// bit-identical). What is left is the CG: ~4 ms per iteration over 4.2e6
+// non-zeros (memory-bound; row-major storage measured no faster). A
+// looser tolerance would help but not enough, and changes the yardstick:
+// relative residual 1e-9 takes 116 iterations (2.0 steps/s), 1e-6 71
+// (2.8 steps/s). 20 steps/s needs ~10 iterations a step: a multigrid or
+// a preconditioner kept over many steps, not Jacobi CG. Run:
 //   build/bin/tearing_benchmark --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 
 #include <benchmark/benchmark.h>

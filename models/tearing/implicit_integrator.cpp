@@ -1,6 +1,7 @@
 #include "models/tearing/implicit_integrator.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <Eigen/Sparse>
@@ -14,16 +15,20 @@ namespace repose {
 
 namespace {
 
-// Calls add(a, b, block) for every 3 x 3 block (a, b) of -K (the stiffness,
-// positive) of the intact springs and acting bending terms; a pair may come
-// several times, its blocks add up.
+// Calls add(index, a, b, block) for every 3 x 3 block (a, b) of -K (the
+// stiffness, positive) of the intact springs and acting bending terms; a
+// pair may come several times, its blocks add up. index numbers the blocks
+// of the whole sheet (for_each_block_place): 4 (6 c + k) + 0..3 for spring
+// k of cell c, 24 cells + 9 t + 3 p + q for bending term t.
 template <class Add>
 void for_each_stiffness_block(const SheetModel& model, const SheetParams& params, const SheetState& state, Add&& add) {
   const SpringConstants kc = spring_constants(model, params);
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (int c = 0; c < model.cell_count(); ++c) {
     if (!state.intact(c)) continue;
-    for (const CellSpring& s : cell_springs(model, c)) {
+    const std::array<CellSpring, 6> springs = cell_springs(model, c);
+    for (int k = 0; k < 6; ++k) {
+      const CellSpring& s = springs[static_cast<std::size_t>(k)];
       const Eigen::Vector3d d = state.positions.col(s.b) - state.positions.col(s.a);
       const double length = d.norm();
       if (length == 0.0) continue;
@@ -31,19 +36,45 @@ void for_each_stiffness_block(const SheetModel& model, const SheetParams& params
       const double ks = spring_constant_n_per_m(kc, s, model.cell_stiffness[c]);
       const double geometric = std::max(0.0, 1.0 - s.rest_length_m / length);
       const Eigen::Matrix3d h = ks * (n * n.transpose() + geometric * (identity - n * n.transpose()));
-      add(s.a, s.a, h);
-      add(s.b, s.b, h);
-      add(s.a, s.b, -h);
-      add(s.b, s.a, -h);
+      const int first = 4 * (6 * c + k);
+      add(first, s.a, s.a, h);
+      add(first + 1, s.b, s.b, h);
+      add(first + 2, s.a, s.b, -h);
+      add(first + 3, s.b, s.a, -h);
     }
   }
   constexpr double kCoefficient[3] = {1.0, -2.0, 1.0};
-  for (const BendingTerm& t : model.bending) {
+  const int bending_first = 24 * model.cell_count();
+  for (std::size_t k = 0; k < model.bending.size(); ++k) {
+    const BendingTerm& t = model.bending[k];
     if (!bending_acts(t, state)) continue;
     const int v[3] = {t.a, t.b, t.c};
     const double kb = kc.bending_n_per_m * t.weight;
     for (int p = 0; p < 3; ++p) {
-      for (int q = 0; q < 3; ++q) add(v[p], v[q], kb * kCoefficient[p] * kCoefficient[q] * identity);
+      for (int q = 0; q < 3; ++q) {
+        add(bending_first + 9 * static_cast<int>(k) + 3 * p + q, v[p], v[q],
+            kb * kCoefficient[p] * kCoefficient[q] * identity);
+      }
+    }
+  }
+}
+
+// Calls place(a, b) for every block for_each_stiffness_block can give, in
+// the order of its index, whether or not the spring or term acts.
+template <class Place>
+void for_each_block_place(const SheetModel& model, Place&& place) {
+  for (int c = 0; c < model.cell_count(); ++c) {
+    for (const CellSpring& s : cell_springs(model, c)) {
+      place(s.a, s.a);
+      place(s.b, s.b);
+      place(s.a, s.b);
+      place(s.b, s.a);
+    }
+  }
+  for (const BendingTerm& t : model.bending) {
+    const int v[3] = {t.a, t.b, t.c};
+    for (const int a : v) {
+      for (const int b : v) place(a, b);
     }
   }
 }
@@ -61,22 +92,36 @@ Eigen::SparseMatrix<double> system_pattern(const SheetModel& model, const std::v
     }
   };
   for (int v = 0; v < model.vertex_count(); ++v) add_block(v, v);
-  for (int c = 0; c < model.cell_count(); ++c) {
-    for (const CellSpring& s : cell_springs(model, c)) {
-      add_block(s.a, s.b);
-      add_block(s.b, s.a);
-    }
-  }
-  for (const BendingTerm& t : model.bending) {
-    const int v[3] = {t.a, t.b, t.c};
-    for (const int a : v) {
-      for (const int b : v) add_block(a, b);
-    }
-  }
+  for_each_block_place(model, add_block);
   Eigen::SparseMatrix<double> pattern(free_count, free_count);
   pattern.setFromTriplets(triplets.begin(), triplets.end());
   pattern.makeCompressed();
   return pattern;
+}
+
+// Where block (a, b) lies in the pattern's values: per column q of b, the
+// place of the first free row of a (its free rows follow it in the column),
+// -1 for a held column or an a without free rows.
+std::array<int, 3> block_place(const Eigen::SparseMatrix<double>& pattern, const std::vector<int>& free_index,
+                               const std::vector<int>& first_row, int a, int b) {
+  std::array<int, 3> place = {-1, -1, -1};
+  const int row0 = first_row[static_cast<std::size_t>(a)];
+  if (row0 < 0) return place;
+  const int* rows = pattern.innerIndexPtr();
+  for (int q = 0; q < 3; ++q) {
+    const int col = free_index[static_cast<std::size_t>(3 * b + q)];
+    if (col < 0) continue;
+    const int* begin = rows + pattern.outerIndexPtr()[col];
+    const int* end = rows + pattern.outerIndexPtr()[col + 1];
+    const int* at = std::lower_bound(begin, end, row0);
+    place[static_cast<std::size_t>(q)] = static_cast<int>(at - rows);
+    // a's free rows are consecutive in the column from there
+    for (int p = 0; p < 3; ++p) {
+      const int row = free_index[static_cast<std::size_t>(3 * a + p)];
+      REPOSE_DEMAND(row < 0 || (at + (row - row0) < end && at[row - row0] == row));
+    }
+  }
+  return place;
 }
 
 }  // namespace
@@ -93,17 +138,26 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
       if (!(model.held_axes[static_cast<std::size_t>(v)] & (1u << a))) free_index_[3 * v + a] = free_count_++;
     }
   }
-  pattern_ = system_pattern(model, free_index_, free_count_);
+  system_ = system_pattern(model, free_index_, free_count_);
+  first_row_.assign(static_cast<std::size_t>(model.vertex_count()), -1);
+  for (int v = 0; v < model.vertex_count(); ++v) {
+    for (int a = 2; a >= 0; --a) {
+      if (free_index_[3 * v + a] >= 0) first_row_[static_cast<std::size_t>(v)] = free_index_[3 * v + a];
+    }
+  }
+  for_each_block_place(model, [&](int a, int b) {
+    block_place_.push_back(block_place(system_, free_index_, first_row_, a, b));
+  });
 }
 
-void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd& dv_all, Eigen::SparseMatrix<double>* matrix,
-                                  Eigen::VectorXd* rhs_out) const {
+void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd& dv_all, Eigen::VectorXd* rhs_out) {
   const double c = model_.spec.damping_per_s;
   const Eigen::Vector3d& g = model_.spec.gravity_m_per_s2;
-  // the fixed pattern, refilled: no sort of millions of triplets each step
-  Eigen::SparseMatrix<double>& a_matrix = *matrix;
-  a_matrix = pattern_;
+  // the fixed pattern, refilled in place: no sort of millions of triplets
+  // and no search for an entry each step
+  Eigen::SparseMatrix<double>& a_matrix = system_;
   a_matrix.coeffs().setZero();
+  double* values = a_matrix.valuePtr();
   Eigen::VectorXd& rhs = *rhs_out;
   rhs.resize(free_count_);
   for (int v = 0; v < model_.vertex_count(); ++v) {
@@ -117,7 +171,9 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
   }
   const Eigen::Map<const Eigen::VectorXd> v0(state.velocities.data(), 3 * model_.vertex_count());
   const double dt2 = dt_ * dt_;
-  for_each_stiffness_block(model_, params_, state, [&](int va, int vb, const Eigen::Matrix3d& block) {
+  for_each_stiffness_block(model_, params_, state, [&](int index, int va, int vb, const Eigen::Matrix3d& block) {
+    const std::array<int, 3>& place = block_place_[static_cast<std::size_t>(index)];
+    const int row0 = first_row_[static_cast<std::size_t>(va)];
     for (int p = 0; p < 3; ++p) {
       const int row = free_index_[3 * va + p];
       if (row < 0) continue;
@@ -125,9 +181,8 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
         const double kpq = block(p, q);  // of -K
         // dt K v_n on the right; -dt^2 K dv on the left, held dv moved right
         rhs[row] -= dt2 * kpq * v0[3 * vb + q];
-        const int col = free_index_[3 * vb + q];
-        if (col >= 0) {
-          a_matrix.coeffRef(row, col) += dt2 * kpq;
+        if (free_index_[3 * vb + q] >= 0) {
+          values[place[static_cast<std::size_t>(q)] + (row - row0)] += dt2 * kpq;
         } else {
           rhs[row] -= dt2 * kpq * dv_all[3 * vb + q];
         }
@@ -150,15 +205,14 @@ int ImplicitIntegrator::step(SheetState* state) {
       dv_all[3 * v + a] = model_.spec.grips[static_cast<std::size_t>(grip)].velocity_m_per_s[a] - state->velocities(a, v);
     }
   }
-  Eigen::SparseMatrix<double> system;
   Eigen::VectorXd rhs;
-  assemble(*state, dv_all, &system, &rhs);
+  assemble(*state, dv_all, &rhs);
   // conjugate gradients: the system is symmetric positive definite, and a
   // direct factorisation of a 200 x 200 sheet took 18 s a step (measured)
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> solver;
   solver.setTolerance(1e-12);
   solver.setMaxIterations(std::max(1000, 2 * free_count_));
-  solver.compute(system);
+  solver.compute(system_);
   // warm start from the last step's dv: the velocity change varies slowly
   if (last_dv_.size() != free_count_) last_dv_ = Eigen::VectorXd::Zero(free_count_);
   const Eigen::VectorXd dv = solver.solveWithGuess(rhs, last_dv_);

@@ -8,7 +8,8 @@
 // preconditioner, warm-started from the last step's dv) over the free
 // degrees of freedom (held axes of gripped vertices move with their grip and
 // enter the right-hand side). The matrix is refilled each step into the
-// sparsity pattern of the whole sheet, built once (torn springs leave zeros).
+// sparsity pattern of the whole sheet, built once (torn springs leave zeros),
+// each spring's and bending term's blocks added at places found once.
 // Tearing is the explicit integrator's rule, judged at x_n.
 //
 // It is the converged yardstick, not the fast path: stable at any step,
@@ -19,6 +20,7 @@
 // a buckling sheet is then a little stiffer over one step than it should be.
 // The grip force recorded is the one at x_n.
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -44,9 +46,9 @@ class ImplicitIntegrator {
   int last_iterations() const { return last_iterations_; }
 
  private:
-  // The system over the free degrees of freedom; dv_all holds the held ones.
-  void assemble(const SheetState& state, const Eigen::VectorXd& dv_all, Eigen::SparseMatrix<double>* matrix,
-                Eigen::VectorXd* rhs) const;
+  // The system (into system_) over the free degrees of freedom; dv_all
+  // holds the held ones.
+  void assemble(const SheetState& state, const Eigen::VectorXd& dv_all, Eigen::VectorXd* rhs);
 
   const SheetModel& model_;
   const SheetParams& params_;
@@ -55,7 +57,12 @@ class ImplicitIntegrator {
   int free_count_ = 0;
   Eigen::Matrix3Xd forces_;
   Eigen::VectorXd last_dv_;  // the last step's solution: the next solve's first guess
-  Eigen::SparseMatrix<double> pattern_;  // every entry the system can have, values 0
+  // every entry the system can have (torn springs leave zeros), refilled each step
+  Eigen::SparseMatrix<double> system_;
+  std::vector<int> first_row_;  // per vertex: the row of its first free axis, or -1
+  // per stiffness block (for_each_stiffness_block's index), per column of
+  // the block: where its first free row lies in system_'s values, or -1
+  std::vector<std::array<int, 3>> block_place_;
   int last_iterations_ = 0;
 };
 

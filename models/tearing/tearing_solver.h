@@ -11,11 +11,14 @@
 // measures tear.length_m, tear.depth_m, tear.tortuosity, tear.roughness_m,
 // tear.deviation_m, tear.cells, tear.stray_cells, tear.from_notch,
 // grip.peak_force_n, grip.work_j, tear.work_per_length_j_per_m, steps,
-// time_step_s, stable_time_step_s and simulated_time_s (the run's
-// timings are Run::wall_s and cpu_s, not measures, so that measures repeat).
+// time_step_s, stable_time_step_s and simulated_time_s, and its timings:
+// run_wall_s and run_cpu_s (the run without compiling and writing files,
+// also in Run::wall_s and cpu_s; thread CPU time) and cpu_s_per_simulated_s
+// and wall_s_per_simulated_s (for speed/accuracy ladders). The timings are
+// the only measures that differ between two runs of the same scene.
 // A scene with tensile: runs the tensile test of tensile_test.h instead and
 // returns tensile.stiffness_n_per_m, tensile.strength_n_per_m,
-// tensile.strain_at_peak, tensile.broke and steps (and, with an
+// tensile.strain_at_peak, tensile.broke, steps, run_wall_s and run_cpu_s (and, with an
 // output folder, tensile.csv: force per width against strain). With an output folder it writes the
 // fibre layers and composite (16-bit PNG), the tear map and the layered tear
 // edge (RGB PNG). The scene's ground is not used.

@@ -3,6 +3,9 @@
 #include "models/tearing/implicit_integrator.h"
 
 #include <random>
+#include <vector>
+
+#include <Eigen/Dense>
 
 #include <gtest/gtest.h>
 
@@ -75,6 +78,84 @@ TEST(ImplicitIntegrator, SlowUniaxialPullMeetsTheAnalyticStiffness) {
   const double strain = speed * (state.time_s - integrator.time_step_s()) / spec.width_m;
   const double expected = params.stiffness_n_per_m * spec.height_m * strain;
   EXPECT_NEAR(state.grip_force_n(0, 2), expected, 0.01 * expected);
+}
+
+// One step against the linearised backward Euler it stands for, built here
+// from scratch: K by central differences of the internal forces, the system
+// (M (1 + c dt) - dt^2 df/dx) dv = dt (f + dt df/dx v_n + M g - c M v_n)
+// solved densely over the free axes (the held ones' dv moved right). The
+// sheet is stretched 1 % both ways, so every spring is in tension and no
+// geometric stiffness is dropped; gripped columns, damping and gravity act.
+TEST(ImplicitIntegrator, OneStepIsBackwardEulerLinearisedByFiniteDifferences) {
+  SheetSpec spec = free_sheet_spec(0.012, 4);
+  spec.damping_per_s = 300.0;
+  spec.gravity_m_per_s2 = Eigen::Vector3d(0.0, -9.81, 0.0);
+  add_uniaxial_grips(&spec, 0.7);
+  const SheetModel model = fibre_sheet(spec, 6);
+  SheetParams params;
+  params.tear_strain = 1.0;
+  SheetState state = affinely_stretched(model, 0.01, 0.01);
+  std::mt19937_64 rng(8);
+  for (int v = 0; v < model.vertex_count(); ++v) {
+    for (int a = 0; a < 3; ++a) {
+      state.positions(a, v) += draw_between(rng, -2e-6, 2e-6);
+      state.velocities(a, v) = draw_between(rng, -0.3, 0.3);
+    }
+  }
+  const int n = 3 * model.vertex_count();
+  const double dt = integrator_limit_fraction(model, params, 10.0), c = spec.damping_per_s;
+  Eigen::Matrix3Xd f0, plus, minus;
+  internal_forces(model, params, state, &f0);
+  Eigen::MatrixXd jacobian(n, n);  // df/dx
+  const double eps = 1e-8;
+  for (int k = 0; k < n; ++k) {
+    SheetState moved = state;
+    moved.positions(k % 3, k / 3) += eps;
+    internal_forces(model, params, moved, &plus);
+    moved.positions(k % 3, k / 3) -= 2.0 * eps;
+    internal_forces(model, params, moved, &minus);
+    const Eigen::Matrix3Xd difference = plus - minus;
+    jacobian.col(k) = Eigen::Map<const Eigen::VectorXd>(difference.data(), n) / (2.0 * eps);
+  }
+  const Eigen::Map<const Eigen::VectorXd> v0(state.velocities.data(), n), f(f0.data(), n);
+  Eigen::VectorXd mass(n), gravity(n), dv_held = Eigen::VectorXd::Zero(n);
+  std::vector<int> free_axes, held_axes;
+  for (int k = 0; k < n; ++k) {
+    const int v = k / 3, a = k % 3;
+    mass[k] = model.mass_kg[v];
+    gravity[k] = spec.gravity_m_per_s2[a];
+    if (model.held_axes[static_cast<std::size_t>(v)] & (1u << a)) {
+      held_axes.push_back(k);
+      const int grip = model.grip_of_vertex[static_cast<std::size_t>(v)];
+      dv_held[k] = model.spec.grips[static_cast<std::size_t>(grip)].velocity_m_per_s[a] - v0[k];
+    } else {
+      free_axes.push_back(k);
+    }
+  }
+  ASSERT_FALSE(held_axes.empty());
+  const Eigen::MatrixXd system = Eigen::MatrixXd(mass.asDiagonal()) * (1.0 + c * dt) - dt * dt * jacobian;
+  const Eigen::VectorXd rhs =
+      dt * (f + dt * jacobian * v0 + mass.cwiseProduct(gravity) - c * mass.cwiseProduct(v0)) - system * dv_held;
+  const int m = static_cast<int>(free_axes.size());
+  Eigen::MatrixXd a_free(m, m);
+  Eigen::VectorXd b_free(m);
+  for (int i = 0; i < m; ++i) {
+    b_free[i] = rhs[free_axes[i]];
+    for (int j = 0; j < m; ++j) a_free(i, j) = system(free_axes[i], free_axes[j]);
+  }
+  const Eigen::VectorXd dv = a_free.partialPivLu().solve(b_free);
+  ImplicitIntegrator integrator(model, params, dt);
+  const SheetState before = state;
+  ASSERT_EQ(integrator.step(&state), 0);
+  const double scale = dv.cwiseAbs().maxCoeff();
+  ASSERT_GT(scale, 1e-3);
+  for (int i = 0; i < m; ++i) {
+    const int k = free_axes[i];
+    const double expected_v = before.velocities(k % 3, k / 3) + dv[i];
+    EXPECT_NEAR(state.velocities(k % 3, k / 3), expected_v, 1e-6 * scale) << "axis " << k;
+    EXPECT_NEAR(state.positions(k % 3, k / 3), before.positions(k % 3, k / 3) + dt * expected_v, 1e-6 * scale * dt)
+        << "axis " << k;
+  }
 }
 
 // The peak force of a strip torn apart: the explicit integrator at 0.9 of

@@ -3,6 +3,8 @@
 #include "models/tearing/tearing_solver.h"
 
 #include <filesystem>
+#include <map>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -23,6 +25,15 @@ Scene small_scene() {
       "/tmp/tearing_solver_test.yaml", solver_registry().sections());
 }
 
+// The measures without the run's timings (the only ones that may differ
+// between two runs of the same scene).
+std::map<std::string, Measure> without_timings(std::map<std::string, Measure> measures) {
+  for (const char* key : {"run_wall_s", "run_cpu_s", "cpu_s_per_simulated_s", "wall_s_per_simulated_s"}) {
+    EXPECT_EQ(measures.erase(key), 1u) << key;
+  }
+  return measures;
+}
+
 TEST(TearingSolver, DeclaresItsParametersAndRunsDeterministically) {
   const auto compiled = solver_registry().get("tearing").compile(small_scene());
   ASSERT_EQ(compiled->parameters().size(), 3u);
@@ -35,11 +46,27 @@ TEST(TearingSolver, DeclaresItsParametersAndRunsDeterministically) {
   EXPECT_GE(a.measure("tear.tortuosity").value, 1.0);
   EXPECT_GT(a.measure("grip.peak_force_n").value, 0.0);
   EXPECT_EQ(a.measure("grip.peak_force_n").unit, "N");
-  EXPECT_EQ(a.measures, b.measures);
+  EXPECT_EQ(without_timings(a.measures), without_timings(b.measures));
   EXPECT_TRUE((a.field("displacement_z_m").heights() == b.field("displacement_z_m").heights()).all());
   EXPECT_EQ(a.field("torn_time_s").nx(), 15);
   EXPECT_EQ(a.field("displacement_z_m").nx(), 16);
   EXPECT_EQ(a.field("fibre_composite").nx(), 120);
+}
+
+TEST(TearingSolver, ReportsItsTimingsPerSimulatedSecond) {
+  const auto compiled = solver_registry().get("tearing").compile(small_scene());
+  const repose::Run run = compiled->run(compiled->default_values(), {});
+  const double simulated = run.measure("simulated_time_s").value;
+  // the whole duration (no stop depth), in whole steps
+  EXPECT_GE(simulated, 0.002 - 1e-12);
+  EXPECT_NEAR(simulated, run.measure("steps").value * run.measure("time_step_s").value, 1e-12);
+  EXPECT_EQ(run.measure("run_cpu_s").value, run.cpu_s);
+  EXPECT_EQ(run.measure("run_wall_s").value, run.wall_s);
+  EXPECT_GT(run.cpu_s, 0.0);
+  EXPECT_EQ(run.measure("run_cpu_s").unit, "s");
+  EXPECT_DOUBLE_EQ(run.measure("cpu_s_per_simulated_s").value, run.cpu_s / simulated);
+  EXPECT_DOUBLE_EQ(run.measure("wall_s_per_simulated_s").value, run.wall_s / simulated);
+  EXPECT_EQ(run.measure("cpu_s_per_simulated_s").unit, "s/s");
 }
 
 TEST(TearingSolver, AStifferSheetTearsUnderMoreForce) {
@@ -80,6 +107,7 @@ TEST(TearingSolver, RunsATensileTestAndDeclaresTheEnergyRulesParameter) {
   EXPECT_GT(run.measure("tensile.stiffness_n_per_m").value, 0.0);
   EXPECT_GT(run.measure("tensile.strength_n_per_m").value, 0.0);
   EXPECT_EQ(run.measure("tensile.strength_n_per_m").unit, "N/m");
+  EXPECT_EQ(run.measure("run_cpu_s").value, run.cpu_s);
 }
 
 TEST(TearingSolver, RefusesValuesOutsideTheirIntervalAndScenesWithoutTheSection) {
