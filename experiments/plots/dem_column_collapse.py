@@ -8,8 +8,9 @@ bullet_), fits
 small (a <= A_SMALL) and large (a >= A_LARGE) aspect ratios, per solver
 (the summary's solver column: LIGGGHTS, Bullet, ODE), and writes
 dem_column_collapse.png (the runs, the fits and the published laws) and
-dem_column_collapse_fits.csv (solver, geometry, range, k, n, points, and
-the published law for that range: its prefactor and exponent).
+dem_column_collapse_fits.csv (solver, geometry, range, k, n, points, the
+published law for that range: its prefactor and exponent, and the runs'
+runout over the law's at their a: the geometric mean of the ratios).
 
 Published laws (experiments with sand and glass beads):
   planar, Lube et al. 2005 / Lajeunesse et al. 2005:
@@ -78,17 +79,22 @@ def draw_solver(ax, rows, shape, solver, index, fits):
             LABEL.get(solver, solver), "<=" if name == "small" else ">=",
             A_SMALL if name == "small" else A_LARGE, k, n))
         law = PUBLISHED[shape][0 if name == "small" else 1]
-        fits.append((solver, shape, name, a[sel].min(), a[sel].max(), k, n, int(sel.sum()), law[0], law[1]))
+        ratio = math.exp(float(np.mean(np.log(r[sel] / (law[0] * a[sel] ** law[1])))))
+        fits.append((solver, shape, name, a[sel].min(), a[sel].max(), k, n, int(sel.sum()), law[0], law[1], ratio))
 
 
 def main(folder):
     with open(os.path.join(folder, "summary.csv")) as f:
         rows = list(csv.DictReader(f))
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
+    titles = {"slot": "quasi-2-D (slot or periodic strip)", "cylinder": "axisymmetric (cylinder)"}
+    shapes = [s for s in titles if any(SHAPES[s].search(r["name"]) for r in rows)]
+    if not shapes:
+        sys.exit("dem_column_collapse: summary.csv has no slot_, strip_ or cylinder_ runs")
+    fig, axes = plt.subplots(1, len(shapes), figsize=(5.5 * len(shapes) + 0.5, 4.5), sharey=True, squeeze=False)
+    axes = axes[0]
     fits = []
-    for ax, shape, title in zip(axes, ["slot", "cylinder"], ["quasi-2-D (slot or periodic strip)", "axisymmetric (cylinder)"]):
-        if not any(SHAPES[shape].search(r["name"]) for r in rows):
-            continue
+    for ax, shape in zip(axes, shapes):
+        title = titles[shape]
         for k, n, lo, hi, label in PUBLISHED[shape]:
             x = np.geomspace(lo, hi, 20)
             ax.loglog(x, k * x ** n, "--", color="0.4" if n == 1 else "0.1", label=label)
@@ -103,12 +109,13 @@ def main(folder):
     fig.tight_layout()
     save(fig, folder, "dem_column_collapse.png", dpi=130)
     with open(os.path.join(folder, "dem_column_collapse_fits.csv"), "w") as f:
-        f.write("solver,geometry,range,a_min,a_max,prefactor,exponent,points,published_prefactor,published_exponent\n")
+        f.write("solver,geometry,range,a_min,a_max,prefactor,exponent,points,published_prefactor,published_exponent,"
+                "ratio_to_published\n")
         for row in fits:
-            f.write("{},{},{},{},{},{},{},{},{},{}\n".format(*row))
-    for solver, shape, name, lo, hi, k, n, count, k_pub, n_pub in fits:
-        print("{} {} {} a ({:.2f}..{:.2f}, {} runs): runout = {:.2f} a^{:.2f}; published {:.2f} a^{:.2f}".format(
-            solver, shape, name, lo, hi, count, k, n, k_pub, n_pub))
+            f.write("{},{},{},{},{},{},{},{},{},{},{}\n".format(*row))
+    for solver, shape, name, lo, hi, k, n, count, k_pub, n_pub, ratio in fits:
+        print("{} {} {} a ({:.2f}..{:.2f}, {} runs): runout = {:.2f} a^{:.2f}; published {:.2f} a^{:.2f}; "
+              "runs / published law {:.2f}".format(solver, shape, name, lo, hi, count, k, n, k_pub, n_pub, ratio))
 
 
 if __name__ == "__main__":
