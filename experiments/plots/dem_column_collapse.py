@@ -2,12 +2,15 @@
 
 usage: python3 dem_column_collapse.py EXPERIMENT_DIR
 Reads EXPERIMENT_DIR/summary.csv (runs slot_<H0> or strip_<H0>, a periodic
-strip, and cylinder_<H0>), fits
+strip, and cylinder_<H0>, each name optionally after a prefix such as
+bullet_), fits
 (L_inf - L0)/L0 = k a^n by least squares in log-log space separately for
-small (a <= A_SMALL) and large (a >= A_LARGE) aspect ratios, and writes
+small (a <= A_SMALL) and large (a >= A_LARGE) aspect ratios, per solver
+(the summary's solver column: LIGGGHTS, Bullet, ODE), and writes
 dem_column_collapse.png (the runs, the fits and the published laws) and
-dem_column_collapse_fits.csv (geometry, range, k, n, points, and the
-published law for that range: its prefactor and exponent).
+dem_column_collapse_fits.csv (solver, geometry, range, k, n, points, the
+published law for that range: its prefactor and exponent, and the runs'
+runout over the law's at their a: the geometric mean of the ratios).
 
 Published laws (experiments with sand and glass beads):
   planar, Lube et al. 2005 / Lajeunesse et al. 2005:
@@ -20,6 +23,7 @@ Published laws (experiments with sand and glass beads):
 import csv
 import math
 import os
+import re
 import sys
 
 import matplotlib
@@ -32,7 +36,9 @@ from figure_output import save  # noqa: E402
 A_SMALL = 2.5
 A_LARGE = 3.0
 
-PREFIXES = {"slot": ("slot_", "strip_"), "cylinder": ("cylinder_",)}
+SHAPES = {"slot": re.compile(r"(^|_)(slot|strip)_"), "cylinder": re.compile(r"(^|_)cylinder_")}
+ORDER = ["liggghts", "bullet", "ode"]
+LABEL = {"liggghts": "LIGGGHTS", "bullet": "Bullet", "ode": "ODE"}
 PUBLISHED = {
     "slot": [(1.2, 1.0, 0.3, 1.8, "Lube 2005: 1.2 a"), (1.9, 2.0 / 3.0, 2.8, 10, "Lube 2005: 1.9 a$^{2/3}$")],
     "cylinder": [(1.24, 1.0, 0.3, 1.7, "Lube 2004: 1.24 a"), (1.6, 0.5, 1.7, 10, "Lube 2004: 1.6 a$^{1/2}$")],
@@ -47,48 +53,69 @@ def fit(a, r):
     return math.exp(log_k), n
 
 
+def solvers_of(rows):
+    present = {r.get("solver", "liggghts") for r in rows}
+    return sorted(present, key=lambda e: (ORDER.index(e) if e in ORDER else len(ORDER), e))
+
+
+def draw_solver(ax, rows, shape, solver, index, fits):
+    data = sorted((float(r["column.aspect_ratio"]), float(r["column.runout_normalised"]))
+                  for r in rows if SHAPES[shape].search(r["name"]) and r.get("solver", "liggghts") == solver
+                  and r["column.runout_normalised"])
+    data = [(a, r) for a, r in data if r > 0]
+    if not data:
+        return
+    a = np.array([d[0] for d in data])
+    r = np.array([d[1] for d in data])
+    color = "C{}".format(3 * index)
+    ax.loglog(a, r, "o", color=color, label="DEM ({})".format(LABEL.get(solver, solver)))
+    for name, sel, style in [("small", a <= A_SMALL, "-"), ("large", a >= A_LARGE, "-.")]:
+        kn = fit(a[sel], r[sel])
+        if kn is None:
+            continue
+        k, n = kn
+        x = np.geomspace(a[sel].min(), a[sel].max(), 20)
+        ax.loglog(x, k * x ** n, style, color=color, label="{} fit a {} {}: {:.2f} a$^{{{:.2f}}}$".format(
+            LABEL.get(solver, solver), "<=" if name == "small" else ">=",
+            A_SMALL if name == "small" else A_LARGE, k, n))
+        law = PUBLISHED[shape][0 if name == "small" else 1]
+        ratio = math.exp(float(np.mean(np.log(r[sel] / (law[0] * a[sel] ** law[1])))))
+        fits.append((solver, shape, name, a[sel].min(), a[sel].max(), k, n, int(sel.sum()), law[0], law[1], ratio))
+
+
 def main(folder):
     with open(os.path.join(folder, "summary.csv")) as f:
         rows = list(csv.DictReader(f))
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5), sharey=True)
+    titles = {"slot": "quasi-2-D (slot or periodic strip)", "cylinder": "axisymmetric (cylinder)"}
+    shapes = [s for s in titles if any(SHAPES[s].search(r["name"]) for r in rows)]
+    if not shapes:
+        sys.exit("dem_column_collapse: summary.csv has no slot_, strip_ or cylinder_ runs")
+    fig, axes = plt.subplots(1, len(shapes), figsize=(5.5 * len(shapes) + 0.5, 4.5), sharey=True, squeeze=False)
+    axes = axes[0]
     fits = []
-    for ax, shape, title in zip(axes, ["slot", "cylinder"], ["quasi-2-D (slot or periodic strip)", "axisymmetric (cylinder)"]):
-        data = sorted((float(r["column.aspect_ratio"]), float(r["column.runout_normalised"]))
-                      for r in rows if r["name"].startswith(PREFIXES[shape]) and r["column.runout_normalised"])
-        data = [(a, r) for a, r in data if r > 0]
-        if not data:
-            continue
-        a = np.array([d[0] for d in data])
-        r = np.array([d[1] for d in data])
-        ax.loglog(a, r, "o", color="C0", label="DEM (LIGGGHTS)")
+    for ax, shape in zip(axes, shapes):
+        title = titles[shape]
         for k, n, lo, hi, label in PUBLISHED[shape]:
             x = np.geomspace(lo, hi, 20)
             ax.loglog(x, k * x ** n, "--", color="0.4" if n == 1 else "0.1", label=label)
-        for name, sel, color in [("small", a <= A_SMALL, "C1"), ("large", a >= A_LARGE, "C2")]:
-            kn = fit(a[sel], r[sel])
-            if kn is None:
-                continue
-            k, n = kn
-            x = np.geomspace(a[sel].min(), a[sel].max(), 20)
-            ax.loglog(x, k * x ** n, "-", color=color, label="fit a {} {}: {:.2f} a$^{{{:.2f}}}$".format(
-                "<=" if name == "small" else ">=", A_SMALL if name == "small" else A_LARGE, k, n))
-            law = PUBLISHED[shape][0 if name == "small" else 1]
-            fits.append((shape, name, a[sel].min(), a[sel].max(), k, n, int(sel.sum()), law[0], law[1]))
+        for index, solver in enumerate(solvers_of(rows)):
+            draw_solver(ax, rows, shape, solver, index, fits)
         ax.set_title(title)
         ax.set_xlabel("aspect ratio a = H$_0$/L$_0$")
         ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=8, loc="upper left")
+        ax.legend(fontsize=7, loc="upper left")
     axes[0].set_ylabel("normalised runout (L$_\\infty$ - L$_0$)/L$_0$")
     fig.suptitle("Granular column collapse: DEM reference vs published laws")
     fig.tight_layout()
     save(fig, folder, "dem_column_collapse.png", dpi=130)
     with open(os.path.join(folder, "dem_column_collapse_fits.csv"), "w") as f:
-        f.write("geometry,range,a_min,a_max,prefactor,exponent,points,published_prefactor,published_exponent\n")
+        f.write("solver,geometry,range,a_min,a_max,prefactor,exponent,points,published_prefactor,published_exponent,"
+                "ratio_to_published\n")
         for row in fits:
-            f.write("{},{},{},{},{},{},{},{},{}\n".format(*row))
-    for shape, name, lo, hi, k, n, count, k_pub, n_pub in fits:
-        print("{} {} a ({:.2f}..{:.2f}, {} runs): runout = {:.2f} a^{:.2f}; published {:.2f} a^{:.2f}".format(
-            shape, name, lo, hi, count, k, n, k_pub, n_pub))
+            f.write("{},{},{},{},{},{},{},{},{},{},{}\n".format(*row))
+    for solver, shape, name, lo, hi, k, n, count, k_pub, n_pub, ratio in fits:
+        print("{} {} {} a ({:.2f}..{:.2f}, {} runs): runout = {:.2f} a^{:.2f}; published {:.2f} a^{:.2f}; "
+              "runs / published law {:.2f}".format(solver, shape, name, lo, hi, count, k, n, k_pub, n_pub, ratio))
 
 
 if __name__ == "__main__":
