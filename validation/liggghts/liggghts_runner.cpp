@@ -23,6 +23,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/core/run/interrupt_cleanup.h"
 #include "validation/liggghts/liggghts_dump.h"
 #include "validation/liggghts/liggghts_script.h"
 
@@ -183,6 +184,19 @@ pid_t spawn(const std::string& executable, const std::vector<std::string>& args,
   return pid;
 }
 
+// Registered while the run lives: SIGINT, SIGTERM or SIGHUP to repose ends
+// the run's process group too (interrupt_cleanup.h).
+class GroupEndedOnInterrupt {
+ public:
+  explicit GroupEndedOnInterrupt(pid_t group) : slot_(end_group_on_interrupt(group)) {}
+  ~GroupEndedOnInterrupt() { forget_group_on_interrupt(slot_); }
+  GroupEndedOnInterrupt(const GroupEndedOnInterrupt&) = delete;
+  GroupEndedOnInterrupt& operator=(const GroupEndedOnInterrupt&) = delete;
+
+ private:
+  int slot_;
+};
+
 void kill_group(pid_t pid) {
   ::kill(-pid, SIGTERM);
   for (int k = 0; k < 20; ++k) {
@@ -275,6 +289,7 @@ LiggghtsRunSummary run_liggghts(const std::string& run_dir, const std::string& s
   const auto start = std::chrono::steady_clock::now();
   const pid_t pid = spawn(executable, {"-in", script_name, "-log", kLogFile, "-screen", kScreenFile}, run_dir,
                           options.nice_increment);
+  const GroupEndedOnInterrupt interrupt_guard(pid);  // a Ctrl-C ends the run with repose
   ThermoFollower thermo(log);
   ChildExit exit;
   for (;;) {

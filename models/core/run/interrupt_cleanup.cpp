@@ -29,6 +29,10 @@ struct Slot {
 };
 
 Slot g_slots[kSlots];
+// Process groups of child programs (a LIGGGHTS run) to end with this
+// process: each runs in its own group, which a Ctrl-C at the terminal does
+// not reach, and would run on for hours.
+std::atomic<pid_t> g_groups[kSlots];
 // The process that registered the paths: a child forked before exec (which
 // inherits the handler) must not remove its parent's folders.
 std::atomic<pid_t> g_owner{0};
@@ -74,6 +78,10 @@ void remove_tree_at(int dir_fd, const char* name, int depth) {
 extern "C" void remove_temporaries_and_die(int signal_number) {
   const int saved_errno = errno;
   if (g_owner.load() == ::getpid()) {
+    for (std::atomic<pid_t>& group : g_groups) {
+      const pid_t g = group.load(std::memory_order_acquire);
+      if (g > 0) ::kill(-g, SIGTERM);
+    }
     for (Slot& slot : g_slots) {
       if (slot.state.load(std::memory_order_acquire) == kReady) remove_tree_at(AT_FDCWD, slot.path, 0);
     }
@@ -101,12 +109,16 @@ void install_handlers() {
   }
 }
 
-}  // namespace
-
-int remove_on_interrupt(const std::filesystem::path& path) {
+void own_handlers() {
   static std::once_flag installed;
   g_owner.store(::getpid());
   std::call_once(installed, install_handlers);
+}
+
+}  // namespace
+
+int remove_on_interrupt(const std::filesystem::path& path) {
+  own_handlers();
   const std::string absolute = std::filesystem::absolute(path).lexically_normal().string();
   if (absolute.size() >= PATH_MAX) return -1;
   for (int k = 0; k < kSlots; ++k) {
@@ -123,6 +135,22 @@ void forget_on_interrupt(int slot) {
   if (slot < 0) return;
   REPOSE_DEMAND(slot < kSlots);
   g_slots[slot].state.store(kFree, std::memory_order_release);
+}
+
+int end_group_on_interrupt(pid_t process_group) {
+  REPOSE_DEMAND(process_group > 0);
+  own_handlers();
+  for (int k = 0; k < kSlots; ++k) {
+    pid_t expected = 0;
+    if (g_groups[k].compare_exchange_strong(expected, process_group, std::memory_order_acq_rel)) return k;
+  }
+  return -1;
+}
+
+void forget_group_on_interrupt(int slot) {
+  if (slot < 0) return;
+  REPOSE_DEMAND(slot < kSlots);
+  g_groups[slot].store(0, std::memory_order_release);
 }
 
 }  // namespace repose

@@ -16,6 +16,12 @@
 //
 // SIGKILL cannot be caught: its leftovers are removed by the next
 // OutputDirectory::open of the same target (output_directory.h).
+//
+// Child programs run in their own process group (a LIGGGHTS run: so that a
+// wall-clock limit kills all it started) are out of reach of a Ctrl-C at
+// the terminal; the handler sends each registered group SIGTERM first.
+
+#include <sys/types.h>
 
 #include <filesystem>
 
@@ -28,5 +34,11 @@ int remove_on_interrupt(const std::filesystem::path& path);
 // Unregisters a slot (after commit or after removing the path normally).
 // A slot of -1 is ignored.
 void forget_on_interrupt(int slot);
+
+// Registers a child's process group to be sent SIGTERM on those signals.
+// Returns a slot for forget_group_on_interrupt, or -1 when the table is full.
+int end_group_on_interrupt(pid_t process_group);
+// Unregisters it (once the child has been waited for). -1 is ignored.
+void forget_group_on_interrupt(int slot);
 
 }  // namespace repose

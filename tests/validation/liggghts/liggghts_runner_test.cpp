@@ -5,14 +5,17 @@
 #include "validation/liggghts/liggghts_runner.h"
 
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -125,6 +128,48 @@ TEST_F(LiggghtsRunner, NicesTheRunRelativeToItsCaller) {
   int run = -100;
   std::ifstream(dir_ / "niceness") >> run;
   EXPECT_EQ(run, std::min(19, caller + 3));
+}
+
+// True once `pid` has ended (gone, or a zombie waiting for its new parent).
+bool ended(pid_t pid) {
+  if (::kill(pid, 0) != 0) return true;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string pid_field, name, state;
+  stat >> pid_field >> name >> state;
+  return state == "Z" || state == "X";
+}
+
+// The run has its own process group, which a Ctrl-C at the terminal does
+// not reach: repose ended by SIGTERM (or SIGINT) must end the run too.
+TEST_F(LiggghtsRunner, AnInterruptedRunEndsItsProgramToo) {
+  const fs::path pid_file = dir_ / "program.pid";
+  const LiggghtsRunOptions o = fake("echo $$ > program.pid.tmp; mv program.pid.tmp program.pid; exec sleep 60");
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {  // stands in for repose: runs the program until a signal ends it
+    try {
+      run_liggghts(dir_.string(), "in.test", o);
+    } catch (...) {
+    }
+    ::_exit(0);
+  }
+  pid_t program = 0;
+  for (int k = 0; k < 100 && program == 0; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::ifstream(pid_file) >> program;
+  }
+  ASSERT_GT(program, 0) << "the stand-in program never started";
+  ::kill(child, SIGTERM);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM);
+  bool program_ended = false;
+  for (int k = 0; k < 60 && !program_ended; ++k) {
+    program_ended = ended(program);
+    if (!program_ended) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  if (!program_ended) ::kill(program, SIGKILL);  // leave nothing behind
+  EXPECT_TRUE(program_ended);
 }
 
 }  // namespace
