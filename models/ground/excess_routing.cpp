@@ -284,9 +284,11 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k,
   Shed s{c, 0.0, 0, {}};
   if (!(mine > 0.0)) return s;
   double lowest = std::numeric_limits<double>::infinity();
-  for (const bool allow_backward : {false, true}) {
+  // tiers: ahead along a drag; not backwards; any way out (excess_routing.h)
+  for (const int tier : {0, 1, 2}) {
     for (const auto& o : kNeighbours) {
-      if (!allow_backward && in.dir.backward(o[0], o[1])) continue;
+      if (tier == 0 && in.dir.active && !in.dir.forward(o[0], o[1])) continue;
+      if (tier <= 1 && in.dir.backward(o[0], o[1])) continue;
       const int ni = i + o[0], nj = j + o[1];
       const bool inside = g.contains(ni, nj);
       if (inside && !onward(rings, c, k, in.model.cell(ni, nj))) continue;

@@ -32,7 +32,7 @@ struct Material {
   // 1: the paper's model. Below 1: material pushed ahead of an object,
   // with a free surface in front, is compacted less than material pressed
   // into the confined bed beneath it, as the DEM references say (fitted
-  // alone, pressing gives alpha 0.27 and dragging 0.99: calibration_*_only).
+  // alone, pressing gives alpha 0.27 and dragging 0.92: calibration_*_only).
   // [0, 10]
   double drag_compaction_ratio = 1.0;
 

@@ -24,7 +24,7 @@ def main(argv):
     out = os.path.join(work, "out")
     command = [sys.executable, os.path.join(tools_path.TOOLS, "make_paper.py"), "--quick", "--out", out,
                "--cache", os.path.join(work, "cache"), "--repose", repose, "--skip", "tearing_grain",
-               "--skip", "calibration_drag_compaction"]
+               "--skip", "calibration_one_alpha"]
     if subprocess.run(command).returncode != 0:
         print("quick build: make_paper.py failed")
         return 1

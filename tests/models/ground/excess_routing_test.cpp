@@ -58,5 +58,37 @@ TEST(ExcessRouting, AtNinetyDegreesTheHeapStopsAtTheCrest) {
   EXPECT_LE(highest_at_any_step(scene), centre + 0.04 + 1e-12);  // the crest: the box's top
 }
 
+// A blade pushed through sand drives a heap ahead of it, as the DEM
+// references do (ref_bulldoze: a crescent ahead of the blade, levees
+// beside the trench of a millimetre or two). Shedding the heap's material
+// sideways as readily as forwards left most of it beside the trench, where
+// the advancing blade never met it again: twice as much beside as ahead.
+// While dragging, a heap now sheds forwards first.
+TEST(ExcessRouting, ADraggedBladePushesItsHeapAheadNotAside) {
+  const double half_x = 0.0075, half_y = 0.02, low = kBed - 0.01 + 0.015;  // bottom 1 cm below the surface
+  ObjectSpec blade;
+  blade.name = "blade";
+  blade.shape = ObjectSpec::Shape::kBox;
+  blade.half_extents_m = Eigen::Vector3d(half_x, half_y, 0.015);
+  blade.body = make_box(blade.half_extents_m);
+  const double from_x = -0.06, to_x = 0.04;
+  blade.keyframes = {at(0, from_x, 0, low + 0.02), at(1, from_x, 0, low), at(11, to_x, 0, low)};
+  Scene scene = flat_scene(centred_grid(60, 40, 0.005), kBed, sand(), {blade}, 11);
+  const GroundModel model = build_ground_model(scene);
+  const GroundState state = run_steps(model, default_params(model), kBed, 11);
+  double ahead_m3 = 0.0, beside_m3 = 0.0;
+  const Grid& g = model.grid;
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      const double x = g.origin_x_m + (i + 0.5) * g.cell_size_m, y = g.origin_y_m + (j + 0.5) * g.cell_size_m;
+      const double raised_m3 = std::max(0.0, state.height.at(i, j) - kBed) * g.cell_area_m2();
+      if (x > to_x + half_x) ahead_m3 += raised_m3;
+      if (x < to_x - half_x && std::abs(y) > half_y) beside_m3 += raised_m3;
+    }
+  }
+  EXPECT_GT(ahead_m3, 3.0 * beside_m3) << "ahead " << ahead_m3 << " m^3, beside " << beside_m3 << " m^3";
+  expect_balanced(state.ledger, state.height.volume_m3());
+}
+
 }  // namespace
 }  // namespace repose
