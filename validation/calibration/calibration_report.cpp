@@ -213,7 +213,7 @@ void write_calibration_report(const CalibrationOutputs& o, const std::vector<std
     }
     if (l.liggghts_over_ground_time) {
       out << fmt::format("\nLIGGGHTS / ground model time at the scene's resolution: {:.3g} (wall), {:.3g} (LIGGGHTS CPU time "
-                         "over ground wall time); target >= 1e4.\n",
+                         "over ground wall time); target >= 1e5 (issue 10).\n",
                          *l.liggghts_over_ground_time, l.liggghts_over_ground_cpu_time.value_or(0.0));
     }
   }
