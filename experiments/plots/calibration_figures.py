@@ -95,7 +95,7 @@ def ladder(run_dir, calibration):
     if not lad:
         return
     fig, ax = plt.subplots(figsize=(8, 4.8), constrained_layout=True)
-    markers = {"ground": "o", "ground-multires": "s", "liggghts": "^"}
+    markers = {"ground": "o", "ground-multires": "s", "liggghts": "^", "bullet": "v", "ode": "D"}
     # every rung at its measured (time, error); numbered on the plot, named in the legend
     for n, r in enumerate(lad["rungs"], start=1):
         t = r["cpu_time_s"] if r.get("cpu_time_s") is not None else r["wall_time_s"]
@@ -107,7 +107,7 @@ def ladder(run_dir, calibration):
         low = 0.7 * min([noise] + [r["rmse_m"] * 1e3 for r in lad["rungs"] if r["rmse_m"] > 0])
         ax.axhspan(low, noise, color="0.85", zorder=0, label=f"within the reference's noise floor ({noise:.2f} mm, seed to seed)")
         ax.set_ylim(bottom=low)
-    ax.set_xlabel("time (s): CPU for LIGGGHTS, wall (one thread) for the heuristic")
+    ax.set_xlabel("CPU time (s)")
     ax.set_ylabel("RMSE of the surface change against the reference (mm)")
     ax.set_title(f"speed/accuracy ladder: {lad['scene']}\n(reference: {lad['yardstick']})", fontsize=9)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))

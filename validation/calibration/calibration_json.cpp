@@ -43,7 +43,7 @@ json ladder_json(const Ladder& ladder) {
           {"noise_floor_m", optional_number(ladder.noise_floor_m)},
           {"rungs", rungs},
           {"liggghts_over_ground_wall_time", optional_number(ladder.liggghts_over_ground_time)},
-          {"liggghts_cpu_over_ground_wall_time", optional_number(ladder.liggghts_over_ground_cpu_time)}};
+          {"liggghts_over_ground_cpu_time", optional_number(ladder.liggghts_over_ground_cpu_time)}};
 }
 
 json parameter_json(const CalibrationProblem& problem, const CalibrationFit& fit, std::size_t p) {

@@ -1,12 +1,13 @@
 #include "validation/calibration/calibration_ladder.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include <fmt/format.h>
 
+#include "models/core/base/cpu_time.h"
 #include "models/core/base/error.h"
 #include "models/core/io/npy_io.h"
 #include "models/core/config/scene_loader.h"
@@ -48,37 +49,44 @@ double change_rmse_m(const HeightField& initial, const HeightField& final_height
 
 std::string millimetres(double m) { return fmt::format("{:.3g} mm", m * 1e3); }
 
-struct LiggghtsRun {
+struct ReferenceRun {
   LadderRung rung;
   std::string directory;
   HeightField initial_height, final_height;
 };
 
-LiggghtsRun load_liggghts_rung(const LadderReference& ref, const SectionTypes& sections) {
+std::string engine_label(const std::string& engine) {
+  if (engine == "liggghts") return "LIGGGHTS";
+  if (engine == "bullet") return "Bullet";
+  if (engine == "ode") return "ODE";
+  return engine;
+}
+
+ReferenceRun load_reference_rung(const LadderReference& ref, const SectionTypes& sections) {
   const Scene scene = load_scene(ref.scene_path, sections);
   if (dem_of(scene) == nullptr) {
-    throw InputError(ref.scene_path + ": a ladder LIGGGHTS scene needs a dem section (its grain size)");
+    throw InputError(ref.scene_path + ": a ladder reference scene needs a dem section (its grain size)");
   }
   const Grid& grid = scene.ground.grid;
-  LiggghtsRun run;
+  ReferenceRun run;
   run.directory = ref.directory;
   const std::string what = "a ladder run of " + ref.scene_path;
   run.initial_height = read_height_field((fs::path(ref.directory) / "height_initial.npy").string(), grid, what);
   run.final_height = read_height_field((fs::path(ref.directory) / "height_final.npy").string(), grid, what);
-  run.rung.kind = "liggghts";
+  run.rung.kind = read_run_engine(ref.directory);
   run.rung.resolution_m = 2.0 * dem_of(scene)->grain_radius_m;
-  run.rung.label = "LIGGGHTS d = " + millimetres(run.rung.resolution_m);
+  run.rung.label = engine_label(run.rung.kind) + " d = " + millimetres(run.rung.resolution_m);
   const auto cost = read_run_cost(ref.directory);
-  if (!cost) throw InputError(ref.directory + ": a ladder reference folder without its cost (liggghts_manifest.json)");
+  if (!cost) throw InputError(ref.directory + ": a ladder reference folder without its cost (liggghts_manifest.json or manifest.json)");
   run.rung.wall_time_s = cost->wall_s;
   run.rung.cpu_time_s = cost->cpu_s;
   return run;
 }
 
-// A LIGGGHTS rung's error. A run that is one of the reference's own seeds is
+// A particle engine's rung error. A run that is one of the reference's own seeds is
 // compared with the mean of the other seeds (comparing it with a mean that
 // holds it would flatter it): its error is then the reference's noise.
-double liggghts_rung_rmse_m(LiggghtsRun& run, const PreparedScene& s, const Yardstick& yard) {
+double reference_rung_rmse_m(ReferenceRun& run, const PreparedScene& s, const Yardstick& yard) {
   const auto& seeds = s.entry.reference.directories;
   const auto own = std::find_if(seeds.begin(), seeds.end(),
                                 [&](const std::string& d) { return fs::equivalent(d, run.directory); });
@@ -110,21 +118,29 @@ Grid regridded(const Grid& grid, double h, const std::string& source) {
   return g;
 }
 
+struct RunTimes {
+  double wall_s = std::numeric_limits<double>::infinity();
+  double cpu_s = std::numeric_limits<double>::infinity();
+};
+
 // The fastest of `repeats` runs of the calibrated solver on `scene` (its
-// parameters by name from the prepared scene's values), and the result.
-double timed_run(const CalibrationProblem& problem, const PreparedScene& prepared, const Scene& scene,
-                 const std::vector<double>& values, int repeats, HeightField* result) {
+// parameters by name from the prepared scene's values), by wall and by
+// thread CPU time (the heuristics run on the calling thread; on a shared
+// machine the CPU time is the steadier), and the result.
+RunTimes timed_run(const CalibrationProblem& problem, const PreparedScene& prepared, const Scene& scene,
+                   const std::vector<double>& values, int repeats, HeightField* result) {
   const auto solver = problem.solver().compile(scene);
   std::vector<double> solver_values = solver->default_values();
   const std::vector<double> prepared_values = problem.solver_values(prepared, values);
   for (std::size_t k = 0; k < prepared_values.size(); ++k) {
     solver_values[solver->parameter_index(prepared.solver->parameters()[k].name)] = prepared_values[k];
   }
-  double best = std::numeric_limits<double>::infinity();
+  RunTimes best;
   for (int r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
+    const Stopwatch watch;
     Run run = solver->run(solver_values, RunOptions{});
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    best.wall_s = std::min(best.wall_s, watch.wall_s());
+    best.cpu_s = std::min(best.cpu_s, watch.cpu_s());
     *result = run.field("height_final");
   }
   return best;
@@ -141,7 +157,9 @@ LadderRung solver_rung(const CalibrationProblem& problem, const PreparedScene& s
                        const std::vector<double>& values, const Yardstick& yard, LadderRung rung) {
   const LadderSpec& spec = *problem.spec().ladder;
   HeightField result;
-  rung.wall_time_s = timed_run(problem, s, scene, values, spec.timing_repeats, &result);
+  const RunTimes times = timed_run(problem, s, scene, values, spec.timing_repeats, &result);
+  rung.wall_time_s = times.wall_s;
+  rung.cpu_time_s = times.cpu_s;
   rung.rmse_m = change_rmse_m(scene.ground.initial.given ? *scene.ground.initial.given : yard.initial, result, yard,
                               s.entry.rmse_region);
   return rung;
@@ -171,9 +189,15 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
   const PreparedScene& s = problem.scene_named(spec.scene);
   Ladder ladder;
   ladder.scene = s.entry.name;
-  std::vector<LiggghtsRun> runs;
-  for (const LadderReference& ref : spec.liggghts) runs.push_back(load_liggghts_rung(ref, problem.registry().sections()));
-  std::sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.rung.resolution_m < b.rung.resolution_m; });
+  std::vector<ReferenceRun> runs;
+  for (const LadderReference& ref : spec.references) runs.push_back(load_reference_rung(ref, problem.registry().sections()));
+  // LIGGGHTS first, then by engine; finest grains first
+  std::stable_sort(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
+    const bool la = a.rung.kind == "liggghts", lb = b.rung.kind == "liggghts";
+    if (la != lb) return la;
+    if (a.rung.kind != b.rung.kind) return a.rung.kind < b.rung.kind;
+    return a.rung.resolution_m < b.rung.resolution_m;
+  });
   const std::size_t seeds = std::max<std::size_t>(1, s.seed_final.size());
   const Yardstick yard{fmt::format("the scene's reference (mean of {} seed{})", seeds, seeds > 1 ? "s" : ""), s.initial,
                        s.reference_final};
@@ -181,9 +205,9 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
   if (const auto noise = noise_floor(s.seed_initial, s.seed_final, s.entry.rmse_region)) ladder.noise_floor_m = noise->rmse_m;
 
   const std::string solver = problem.solver().name();
-  const double own = s.scene.ground.grid.cell_size_m;
-  const std::vector<double> sizes = ladder_cell_sizes(spec, own);
-  std::optional<double> own_time;
+  const double own_h = s.scene.ground.grid.cell_size_m;
+  const std::vector<double> sizes = ladder_cell_sizes(spec, own_h);
+  std::optional<LadderRung> own;
   const std::size_t total = sizes.size() + (spec.multires ? 1 : 0);
   for (std::size_t k = 0; k < sizes.size(); ++k) {
     const double h = sizes[k];
@@ -191,24 +215,24 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
     Scene scene = s.scene;
     scene.ground.grid = regridded(s.scene.ground.grid, h, problem.spec().source_path);
     scene = with_initial(std::move(scene), onto(s.initial, scene.ground.grid));
-    ladder.rungs.push_back(solver_rung(problem, s, scene, values, yard, {solver + " " + millimetres(h), solver, h}));
-    if (std::abs(h - own) <= 1e-9 * own) own_time = ladder.rungs.back().wall_time_s;
+    ladder.rungs.push_back(solver_rung(problem, s, scene, values, yard, {solver + " " + millimetres(h), solver, h, 0.0, std::nullopt, 0.0}));
+    if (std::abs(h - own_h) <= 1e-9 * own_h) own = ladder.rungs.back();
   }
   if (spec.multires) {
     report(progress, static_cast<double>(sizes.size()) / total, "ladder: multi-resolution " + solver);
     const std::string label =
-        fmt::format("{} multires {} / {}", solver, millimetres(own), millimetres(own * spec.multires_coarse_factor));
+        fmt::format("{} multires {} / {}", solver, millimetres(own_h), millimetres(own_h * spec.multires_coarse_factor));
     ladder.rungs.push_back(solver_rung(problem, s, multires_scene(s.scene, spec.multires_coarse_factor), values, yard,
-                                       {label, solver + "-multires", own}));
+                                       {label, solver + "-multires", own_h, 0.0, std::nullopt, 0.0}));
   }
-  for (LiggghtsRun& run : runs) {
-    run.rung.rmse_m = liggghts_rung_rmse_m(run, s, yard);
+  for (ReferenceRun& run : runs) {
+    run.rung.rmse_m = reference_rung_rmse_m(run, s, yard);
     ladder.rungs.push_back(run.rung);
   }
-  if (!runs.empty() && own_time && *own_time > 0.0) {
-    // the finest grains: the reference's own resolution
-    ladder.liggghts_over_ground_time = runs.front().rung.wall_time_s / *own_time;
-    if (runs.front().rung.cpu_time_s) ladder.liggghts_over_ground_cpu_time = *runs.front().rung.cpu_time_s / *own_time;
+  if (!runs.empty() && runs.front().rung.kind == "liggghts" && own && own->wall_time_s > 0.0 && *own->cpu_time_s > 0.0) {
+    // LIGGGHTS' finest grains: the reference's own resolution
+    ladder.liggghts_over_ground_time = runs.front().rung.wall_time_s / own->wall_time_s;
+    if (runs.front().rung.cpu_time_s) ladder.liggghts_over_ground_cpu_time = *runs.front().rung.cpu_time_s / *own->cpu_time_s;
   }
   report(progress, 1.0, "ladder measured");
   return ladder;

@@ -23,11 +23,11 @@
 namespace repose {
 
 struct LadderRung {
-  std::string label;        // "ground 4 mm", "ground multires 4/8 mm", "LIGGGHTS d = 4 mm"
-  std::string kind;         // "ground", "ground-multires", "liggghts"
-  double resolution_m = 0.0;  // cell size, or grain diameter for LIGGGHTS
+  std::string label;        // "ground 4 mm", "ground multires 4/8 mm", "LIGGGHTS d = 4 mm", "Bullet d = 3 mm"
+  std::string kind;         // "ground", "ground-multires", or the engine: "liggghts", "bullet", "ode"
+  double resolution_m = 0.0;  // cell size, or grain diameter for a particle engine
   double wall_time_s = 0.0;
-  std::optional<double> cpu_time_s;  // LIGGGHTS: its own CPU time
+  std::optional<double> cpu_time_s;  // a particle engine's run; a heuristic's calling thread
   double rmse_m = 0.0;      // RMSE of Δh against the yardstick's (rmse region of the scene)
 };
 
@@ -38,7 +38,7 @@ struct Ladder {
   std::vector<LadderRung> rungs;
   // The finest LIGGGHTS run's wall time over the ground model's at the scene's own cell size.
   std::optional<double> liggghts_over_ground_time;
-  std::optional<double> liggghts_over_ground_cpu_time;  // its CPU time over the same
+  std::optional<double> liggghts_over_ground_cpu_time;  // their CPU times, the same way
 };
 
 // values: every parameter of the calibration (the fitted ones).

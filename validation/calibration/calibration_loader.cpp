@@ -193,7 +193,7 @@ ParameterSpec read_parameter(const YamlValue& value) {
 
 LadderSpec read_ladder(const Context& ctx, const YamlValue& value) {
   const auto fields = [](auto& v, LadderSpec& l) { ladder_fields(v, l); };
-  const YamlMap map = value.map(field_keys<LadderSpec>(fields, {"scene", "heuristic_cell_sizes_m", "liggghts"}));
+  const YamlMap map = value.map(field_keys<LadderSpec>(fields, {"scene", "heuristic_cell_sizes_m", "references"}));
   LadderSpec l;
   FieldReader reader(map);
   ladder_fields(reader, l);
@@ -201,16 +201,18 @@ LadderSpec read_ladder(const Context& ctx, const YamlValue& value) {
   for (const YamlValue& c : map.required("heuristic_cell_sizes_m", "a list of cell sizes (m)").list(1)) {
     l.heuristic_cell_sizes_m.push_back(c.number(Range::left_open(0.0, 1.0e3)));
   }
-  if (auto list = map.get("liggghts")) {
+  if (auto list = map.get("references")) {
     for (const YamlValue& item : list->list()) {
       const YamlMap m = item.map({"scene", "data"});
       LadderReference r;
       r.scene_path = existing(ctx, m.required("scene", "a scene file"), false, "a scene file");
       r.directory = existing(ctx, m.required("data", "a reference run folder"), true, "a reference run folder");
-      for (const char* file : {"height_final.npy", "liggghts_manifest.json"}) {
-        if (!fs::exists(fs::path(r.directory) / file)) m.get("data")->fail(fmt::format("a folder holding {}", file), r.directory);
+      const fs::path dir(r.directory);
+      if (!fs::exists(dir / "height_final.npy")) m.get("data")->fail("a folder holding height_final.npy", r.directory);
+      if (!fs::exists(dir / "liggghts_manifest.json") && !fs::exists(dir / "manifest.json")) {
+        m.get("data")->fail("a run folder holding its manifest (manifest.json or liggghts_manifest.json)", r.directory);
       }
-      l.liggghts.push_back(r);
+      l.references.push_back(r);
     }
   }
   return l;

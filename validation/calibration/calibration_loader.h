@@ -35,7 +35,8 @@
 //     multires: true
 //     multires_coarse_factor: 2
 //     timing_repeats: 3
-//     liggghts: [{scene: scenes/dem_indent.yaml, data: ../data/dem_indent}]
+//     references: [{scene: scenes/dem_indent.yaml, data: ../data/dem_indent}]
+//       # canonical runs of LIGGGHTS, Bullet or ODE (the run's manifest names the engine)
 
 #include <string>
 

@@ -87,10 +87,12 @@ struct CalibrationSolverSpec {
   double min_reciprocal_condition = 1.0e-3;
 };
 
-// A rung of LIGGGHTS in the ladder: a canonical run and its scene.
+// A rung of a particle reference (LIGGGHTS, Bullet or ODE) in the ladder: a
+// canonical run and its scene. The engine is the one that made the run (its
+// manifest says which).
 struct LadderReference {
   std::string scene_path;  // absolute; its dem.grain_radius_m sizes the rung
-  std::string directory;   // absolute; height_final.npy and liggghts_manifest.json
+  std::string directory;   // absolute; height_final.npy and its cost (liggghts_manifest.json or manifest.json)
 };
 
 struct LadderSpec {
@@ -98,7 +100,7 @@ struct LadderSpec {
   std::vector<double> heuristic_cell_sizes_m;  // >= 1 entries; the ground model at each
   bool multires = true;                  // also the scene's resolution with objects on the coarse grid
   int multires_coarse_factor = 2;
-  std::vector<LadderReference> liggghts;  // LIGGGHTS rungs (grain sizes); the yardstick is the scene's reference
+  std::vector<LadderReference> references;  // particle-engine rungs (engines, grain sizes); the yardstick is the scene's reference
   int timing_repeats = 3;                // heuristic runs timed per rung (the fastest counts)
 };
 

@@ -44,4 +44,14 @@ std::optional<RunCost> read_run_cost(const std::string& folder) {
   return std::nullopt;
 }
 
+std::string read_run_engine(const std::string& folder) {
+  if (fs::exists(fs::path(folder) / "liggghts_manifest.json")) return "liggghts";
+  const fs::path path = fs::path(folder) / "manifest.json";
+  const auto manifest = read_json(path);
+  if (!manifest || !manifest->contains("solver") || !manifest->at("solver").is_string()) {
+    throw InputError(path.string() + ": a run manifest naming its solver");
+  }
+  return manifest->at("solver").get<std::string>();
+}
+
 }  // namespace repose

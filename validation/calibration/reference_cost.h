@@ -18,4 +18,9 @@ struct RunCost {
 // a record that is not valid JSON of the expected shape.
 std::optional<RunCost> read_run_cost(const std::string& folder);
 
+// The engine that made the run: "liggghts" for a folder with LIGGGHTS' own
+// record, else the solver its manifest.json names. InputError when neither
+// says.
+std::string read_run_engine(const std::string& folder);
+
 }  // namespace repose

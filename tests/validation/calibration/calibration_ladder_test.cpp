@@ -63,6 +63,14 @@ void write_run(const fs::path& dir, double depth_m) {
   std::ofstream(dir / "liggghts_manifest.json") << R"({"wall_time_s": 10.0, "cpu_time_s": 8.0})";
 }
 
+// A Bullet run folder: no LIGGGHTS record, its engine and cost in manifest.json.
+void write_bullet_run(const fs::path& dir, double depth_m) {
+  write_run(dir, depth_m);
+  fs::remove(dir / "liggghts_manifest.json");
+  std::ofstream(dir / "manifest.json")
+      << R"({"solver": "bullet", "run": {"solver": "bullet", "measures": {}, "wall_s": 3.0, "cpu_s": 2.0}})";
+}
+
 // A reference of two seeds: a LIGGGHTS rung that is one of them is compared
 // with the other (not with a mean that holds it), so its error is the seeds'
 // difference; another run is compared with their mean; the ladder carries
@@ -81,7 +89,7 @@ TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
       "scenes:\n  - scene: {0}\n    reference: {{data: [{1}, {2}]}}\n    observables: [{{kind: height_field}}]\n"
       "parameters:\n  - {{name: ground.sand.alpha, initial: 0.7}}\n"
       "ladder:\n  heuristic_cell_sizes_m: [0.008]\n  multires: false\n  timing_repeats: 1\n"
-      "  liggghts:\n    - {{scene: {0}, data: {1}}}\n    - {{scene: {0}, data: {3}}}\n",
+      "  references:\n    - {{scene: {0}, data: {1}}}\n    - {{scene: {0}, data: {3}}}\n",
       scene, (root / "seed1").string(), (root / "seed2").string(), (root / "other").string());
   const CalibrationProblem problem(load_calibration_from_string(yaml, (root / "inline.yaml").string()), solver_registry());
   const Ladder ladder = measure_ladder(problem, problem.initial_values());
@@ -101,6 +109,37 @@ TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
     EXPECT_EQ(r.cpu_time_s.value_or(0.0), 8.0);
   }
   EXPECT_EQ(liggghts, 2);
+  fs::remove_all(root);
+}
+
+// Another engine's canonical run is a rung of its own, named after the
+// engine its manifest names, scored against the LIGGGHTS reference; the
+// speed ratio stays LIGGGHTS' (none here: no LIGGGHTS rung).
+TEST(CalibrationLadder, AnotherEnginesRunIsARungScoredAgainstTheReference) {
+  const fs::path root = fs::temp_directory_path() / ("repose_ladder_engine_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  write_run(root / "seed1", 0.004);
+  write_run(root / "seed2", 0.006);
+  write_bullet_run(root / "bullet", 0.007);
+  const std::string source = std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration/scenes/indent.yaml";
+  std::ifstream in(source);
+  std::ofstream(root / "indent_dem.yaml") << in.rdbuf() << "dem: {grain_radius_m: 0.002, time_step_s: 1.0e-5}\n";
+  const std::string scene = (root / "indent_dem.yaml").string();
+  const std::string yaml = fmt::format(
+      "scenes:\n  - scene: {0}\n    reference: {{data: [{1}, {2}]}}\n    observables: [{{kind: height_field}}]\n"
+      "parameters:\n  - {{name: ground.sand.alpha, initial: 0.7}}\n"
+      "ladder:\n  heuristic_cell_sizes_m: [0.008]\n  multires: false\n  timing_repeats: 1\n"
+      "  references:\n    - {{scene: {0}, data: {3}}}\n",
+      scene, (root / "seed1").string(), (root / "seed2").string(), (root / "bullet").string());
+  const CalibrationProblem problem(load_calibration_from_string(yaml, (root / "inline.yaml").string()), solver_registry());
+  const Ladder ladder = measure_ladder(problem, problem.initial_values());
+  const LadderRung& bullet = ladder.rungs.back();
+  EXPECT_EQ(bullet.kind, "bullet");
+  EXPECT_EQ(bullet.label, "Bullet d = 4 mm");
+  EXPECT_EQ(bullet.cpu_time_s.value_or(0.0), 2.0);
+  // 7 mm deep against the seeds' mean of 5 mm, on 16 of 256 cells
+  EXPECT_NEAR(bullet.rmse_m, 0.002 * 0.25, 1e-12);
+  EXPECT_FALSE(ladder.liggghts_over_ground_time.has_value());
   fs::remove_all(root);
 }
 

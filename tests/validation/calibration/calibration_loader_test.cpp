@@ -75,7 +75,7 @@ TEST(CalibrationLoader, ReadsTheDefaultCalibration) {
   const CalibrationSpec spec = load_calibration(std::string(REPOSE_SOURCE_DIR) + "/experiments/calibration_default.yaml");
   ASSERT_TRUE(spec.ladder.has_value());
   EXPECT_GE(spec.ladder->heuristic_cell_sizes_m.size(), 3u);
-  EXPECT_GE(spec.ladder->liggghts.size(), 1u);
+  EXPECT_GE(spec.ladder->references.size(), 1u);
   EXPECT_EQ(spec.scenes[0].reference.kind, ReferenceSpec::Kind::kData);
 }
 
