@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Regenerates the canonical LIGGGHTS reference runs in data/ (see
-# data/README.md): each scene below is run with
+# Regenerates the canonical reference runs in data/ (see data/README.md):
+# each scene below is run with
 #   repose run SCENE --solver liggghts --out RUNS/NAME
+# (or bullet or ode, for the names listed in `solvers`)
 # one after the other (LIGGGHTS is serial and niced by the runner), and only
 # the small files (manifests, observables as .npy/.csv, the input script and
 # the log) are copied into data/NAME/; dumps, restart files and meshes stay
@@ -51,10 +52,21 @@ done
 # the coarse-grain LIGGGHTS rung of the default calibration's ladder: one bed
 scenes[ref_indent_deep_coarse/seed1]=experiments/scenes/ref_indent_deep_coarse.yaml
 order+=(ref_indent_deep_coarse/seed1)
+# the rigid-body engines' rungs of the same ladder (issue 11): the reference's
+# scene and first bed in Bullet and ODE
+declare -A solvers=()
+for engine in bullet ode; do
+  scenes[ref_indent_deep_$engine/seed1]=experiments/scenes/ref_indent_deep.yaml
+  solvers[ref_indent_deep_$engine/seed1]=$engine
+  order+=("ref_indent_deep_$engine/seed1")
+done
 if [[ $# -gt 0 ]]; then order=("$@"); fi
 
-# the files kept in data/NAME (the rest of the run folder is large or regenerable)
-keep=(manifest.json liggghts_manifest.json bed_manifest.json run.in log.liggghts)
+# the files kept in data/NAME (the rest of the run folder is large or
+# regenerable): the records every LIGGGHTS run writes, and a rigid-body
+# engine's manifest (bullet_manifest.json or ode_manifest.json)
+keep_liggghts=(manifest.json liggghts_manifest.json bed_manifest.json run.in log.liggghts)
+shopt -s nullglob
 
 for name in "${order[@]}"; do
   scene="${scenes[$name]:-}"
@@ -66,13 +78,19 @@ for name in "${order[@]}"; do
   mkdir -p "$runs"
   set_seed=()
   if [[ "$name" == */seed* ]]; then set_seed=(--set "seed=${name##*/seed}"); fi
-  nice -n 19 "$repose" run "$repo/$scene" --solver liggghts --out "$runs/$name" --force "${set_seed[@]}"
+  solver="${solvers[$name]:-liggghts}"
+  nice -n 19 "$repose" run "$repo/$scene" --solver "$solver" --out "$runs/$name" --force "${set_seed[@]}"
   target="$repo/data/$name"
   mkdir -p "$(dirname "$target")"
   rm -rf "$target.tmp"
   mkdir -p "$target.tmp"
-  for f in "${keep[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done
+  if [[ "$solver" == liggghts ]]; then
+    for f in "${keep_liggghts[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done
+  else
+    cp "$runs/$name/manifest.json" "$runs/$name/${solver}_manifest.json" "$target.tmp/"
+  fi
   cp "$runs/$name"/*.npy "$runs/$name"/*.csv "$target.tmp/"
+  rm -f "$target.tmp"/grains_*.npy  # the grains themselves: large, and not an observable
   rm -rf "$target"
   mv "$target.tmp" "$target"
   du -sh "$target"

@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "models/core/run/repository_path.h"
+
 namespace repose {
 
 namespace {
@@ -23,7 +25,7 @@ std::string quoted(const std::string& s) {
 }  // namespace
 
 std::string calibration_figures_script() {
-  return (fs::path(REPOSE_SOURCE_DIR) / "experiments" / "plots" / "calibration_figures.py").string();
+  return (fs::path(repository_root()) / "experiments" / "plots" / "calibration_figures.py").string();
 }
 
 CalibrationFigures make_calibration_figures(const std::string& run_dir) {
