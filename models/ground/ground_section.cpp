@@ -119,6 +119,11 @@ std::string GroundModelSection::summary() const {
                                  options.sweep ? "sweep" : "no sweep", options.substeps, options.erosion_memory_steps,
                                  options.coarse_factor,
                                  options.collision == GroundModelSpec::Collision::kCpu ? "cpu" : "osmesa");
+  const BekkerBearing& b = free_bodies.bearing;
+  text += b.law == BekkerBearing::Law::kOff
+              ? std::string("; free bodies: ODE, no bearing sinkage")
+              : fmt::format("; free bodies: ODE, Bekker bearing n {}, k_c {} N/m^(n+1), k_phi {} N/m^(n+2)",
+                            b.exponent_n, b.k_c_n_per_m_n_plus_1, b.k_phi_n_per_m_n_plus_2);
   for (const auto& [name, m] : materials) {
     text += fmt::format("; {}: alpha {}, repose angle {:.6g} deg, sigma {}, {} erosion iterations", name, m.alpha,
                         m.repose_angle_rad / kRadPerDeg, m.sigma, m.erosion_iterations);

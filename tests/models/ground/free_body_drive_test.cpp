@@ -2,10 +2,12 @@
 // sinks to Bekker's sinkage for its weight (heavier deeper), the ledger
 // balances, runs repeat bit for bit, a dropped box leaves the imprint of its
 // footprint, and without bearing it rests on the field as the heuristic
-// alone leaves it. Meshes are refused naming the object.
+// alone leaves it; a rolling wheel leaves its track. Meshes are refused
+// naming the object.
 #include "models/ground/free_body_drive.h"
 
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -91,6 +93,34 @@ TEST(FreeBodyDrive, DroppedBoxLeavesTheImprintOfItsFootprint) {
   }
   for (const double x : {-0.15, 0.15}) EXPECT_GE(h.sample(x, 0.0), kBed - 1e-9) << x;
   EXPECT_GT(h.heights().maxCoeff(), kBed) << "displaced material heaps beside the imprint";
+  expect_balanced(g.ledger, g.final_volume_m3);
+}
+
+TEST(FreeBodyDrive, RollingWheelLeavesItsTrack) {
+  // a wheel (r 5 cm, 4 cm wide, 0.5 kg), axis along y, set down rolling along +x at 1 m/s
+  ObjectSpec wheel;
+  wheel.name = "wheel";
+  wheel.shape = ObjectSpec::Shape::kCylinder;
+  wheel.radius_m = 0.05;
+  wheel.half_height_m = 0.02;
+  wheel.body = make_cylinder(0.05, 0.02);
+  wheel.dynamic = DynamicBody{};
+  wheel.dynamic->mass_kg = 0.5;
+  wheel.dynamic->velocity_m_s = Eigen::Vector3d(1.0, 0.0, 0.0);
+  wheel.dynamic->angular_velocity_rad_s = Eigen::Vector3d(0.0, 1.0 / 0.05, 0.0);
+  Keyframe start = at(0.0, -0.1, 0.0, kBed + 0.05);
+  start.pose.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitX()));
+  wheel.keyframes = {start};
+  Scene scene = flat_scene(centred_grid(80, 80, kCell), kBed, sand(), {wheel}, 1);
+  scene.time = TimeSpec{1.0 / 60.0, 0.4};
+  const GroundRun g = run(scene);
+  const FreeBodyReport& b = g.free_bodies[0];
+  EXPECT_GT(b.final_position_m.x(), 0.0) << "it rolled";
+  // the track: lowered along the path on the wheel's line, untouched beside it
+  for (double x = -0.08; x < b.final_position_m.x() - 0.03; x += 0.02) {
+    EXPECT_LT(g.final_height.sample(x, 0.0), kBed - 5e-4) << x;
+    EXPECT_GE(g.final_height.sample(x, 0.1), kBed - 1e-9) << x;
+  }
   expect_balanced(g.ledger, g.final_volume_m3);
 }
 
