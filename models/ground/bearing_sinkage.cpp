@@ -70,4 +70,36 @@ double bearing_sinkage_m(const BekkerBearing& bearing, const DepthImage& undersi
   return above;
 }
 
+double bearing_load_n(const BekkerBearing& bearing, const DepthImage& underside, double sinkage_m) {
+  REPOSE_DEMAND(sinkage_m >= 0.0);
+  const double lowest = lowest_underside(underside);
+  if (bearing.law == BekkerBearing::Law::kOff || !std::isfinite(lowest) || sinkage_m == 0.0) return 0.0;
+  const ContactPatch p = patch_below(underside, lowest + sinkage_m);
+  return bekker_pressure_pa(bearing, sinkage_m, p.width_m) * p.area_m2;
+}
+
+double impact_sinkage_m(const BekkerBearing& bearing, const DepthImage& underside, double height_m, double from_m,
+                        double weight_n, double energy_j) {
+  REPOSE_DEMAND(height_m >= 0.0 && weight_n >= 0.0 && energy_j >= 0.0);
+  from_m = std::clamp(from_m, 0.0, height_m);
+  if (bearing.law == BekkerBearing::Law::kOff || energy_j == 0.0) return from_m;
+  // the weight is borne quasi-statically down to its static sinkage (the static rule's share)
+  from_m = std::max(from_m, bearing_sinkage_m(bearing, underside, height_m, weight_n));
+  // march down in steps of a 512th of the body's height, the work of the
+  // ground's load less the weight's by the trapezoid rule, until it has taken the energy
+  const double dz = height_m / 512.0;
+  double z = from_m, left = energy_j;
+  double net = bearing_load_n(bearing, underside, z) - weight_n;
+  while (z < height_m) {
+    const double step = std::min(dz, height_m - z);
+    const double next_net = bearing_load_n(bearing, underside, z + step) - weight_n;
+    const double work = 0.5 * (net + next_net) * step;
+    if (work >= left && work > 0.0) return z + step * left / work;  // linear within the step
+    left -= work;
+    z += step;
+    net = next_net;
+  }
+  return height_m;
+}
+
 }  // namespace repose

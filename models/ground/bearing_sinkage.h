@@ -35,4 +35,23 @@ ContactPatch patch_below(const DepthImage& underside, double level_m);
 // the underside covers no cell.
 double bearing_sinkage_m(const BekkerBearing& bearing, const DepthImage& underside, double height_m, double load_n);
 
+// The load (N) the ground bears under the body at sinkage_m: Bekker's
+// pressure at that depth over the patch there. 0 at 0, with the law off or
+// no covered cell.
+double bearing_load_n(const BekkerBearing& bearing, const DepthImage& underside, double sinkage_m);
+
+// Where an impact stops: the body, at from_m below the surface, carries
+// energy_j (J) of downward motion into the ground; it sinks until the
+// ground's work, the integral of bearing_load_n less weight_n, has taken
+// that energy (capped at height_m). The integral starts at the deeper of
+// from_m and the weight's static sinkage: the weight is taken as borne
+// quasi-statically (a body set down sinks to Bekker's static sinkage, not
+// to the ~(n+1)^(1/n) times deeper stop of a sudden release on a
+// rigid-plastic ground), only the impact's energy beyond. Independent of
+// how finely the impact is sampled in time, unlike a sinkage from the
+// impact's mean force over a step (which grows as the step shrinks).
+// from_m (clamped to [0, height_m]) when the energy is 0 or the law is off.
+double impact_sinkage_m(const BekkerBearing& bearing, const DepthImage& underside, double height_m, double from_m,
+                        double weight_n, double energy_j);
+
 }  // namespace repose

@@ -76,6 +76,13 @@ struct Driven {
   dGeomID geom = nullptr;
   double mass_kg = 0.0;
   double impulse_n_s = 0.0;  // vertical impulse of the field on the body over the current ground step
+  double impact_energy_j = 0.0;  // downward kinetic energy at the field contacts that began this ground step
+  bool touching = false;         // had a field contact in the last ODE step
+  bool touched = false;          // had one in this ground step
+  // had none through the whole last ground step: only such a body's new
+  // contact is an impact (a resting body's contact flickers with the
+  // solver's round-off, and each flicker's fall of one ODE step would ratchet it down)
+  bool airborne = true;
   double load_n = 0.0, max_load_n = 0.0, bearing_sinkage_m = 0.0;
 };
 
@@ -257,15 +264,30 @@ void FreeBodyDrive::Impl::collide_pair(dGeomID a, dGeomID b) {
   }
 }
 
+// One ODE step; a body that meets the field after a ground step in the air
+// brings the kinetic energy of its downward speed into it (the impact the
+// bearing rule takes up).
 void FreeBodyDrive::Impl::ode_step(double dt_s) {
   feedback_used = 0;
   dSpaceCollide(space, this, [](void* self, dGeomID a, dGeomID b) {
     static_cast<FreeBodyDrive::Impl*>(self)->collide_pair(a, b);
   });
+  std::vector<double> falling_m_s(bodies.size());
+  for (std::size_t k = 0; k < bodies.size(); ++k) falling_m_s[k] = std::max(0.0, -dBodyGetLinearVel(bodies[k].body)[2]);
   dRandSetSeed(random_seed);
   dWorldQuickStep(world, dt_s);
   random_seed = dRandGetSeed();
-  for (std::size_t k = 0; k < feedback_used; ++k) bodies[feedback_owner[k]].impulse_n_s += feedback[k].f1[2] * dt_s;
+  std::vector<char> touching(bodies.size(), 0);
+  for (std::size_t k = 0; k < feedback_used; ++k) {
+    bodies[feedback_owner[k]].impulse_n_s += feedback[k].f1[2] * dt_s;
+    touching[feedback_owner[k]] = 1;
+  }
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    Driven& d = bodies[k];
+    if (touching[k] && !d.touching && d.airborne) d.impact_energy_j += 0.5 * d.mass_kg * falling_m_s[k] * falling_m_s[k];
+    d.touching = touching[k] != 0;
+    d.touched = d.touched || d.touching;
+  }
   dJointGroupEmpty(contacts);
 }
 
@@ -284,8 +306,12 @@ double intersection_m(const DepthImage& underside, const Footprint& fp, const He
 
 }  // namespace
 
-// The bearing rule: a body shallower than its load's Bekker sinkage moves
-// down to it, in ODE and for the ground step. The ground yields only there:
+// The bearing rule: a body shallower than its load's Bekker sinkage, or
+// than where the ground's work takes up the energy of an impact this step
+// (impact_sinkage_m), moves down to it, in ODE and for the ground step. The
+// static load is the field's mean force over the step, at most the weight:
+// the impact's share of that force is its energy's, and the solver's
+// jitter about the weight must not ratchet a resting body down. The ground yields only there:
 // otherwise the ground step gets the body lifted out of whatever it
 // intersects of the ground (ODE's soft contact and jitter; ODE holds the
 // body out of the rest, as its field is rigid), since cutting that away
@@ -301,11 +327,15 @@ Pose FreeBodyDrive::Impl::press(Driven& d, const HeightField& ground) {
   if (fp.empty()) return pose;
   const DepthImage underside = depth_image_cpu({mesh}, fp.sub_grid(model.grid), ViewFrom::kBelow);
   pose.position_m.z() += intersection_m(underside, fp, ground);
-  if (d.load_n <= 0.0) return pose;
-  d.bearing_sinkage_m = bearing_sinkage_m(model.free_bodies.bearing, underside, box.max.z() - box.min.z(), d.load_n);
   const double surface = initial.sample(pose.position_m.x(), pose.position_m.y());
   const double sinkage = surface - lowest_z(d.shape, pose.position_m, pose.orientation.toRotationMatrix());
-  if (sinkage >= d.bearing_sinkage_m) return pose;
+  const double weight_n = d.mass_kg * model.free_bodies.gravity_m_s2, height_m = box.max.z() - box.min.z();
+  const BekkerBearing& bearing = model.free_bodies.bearing;
+  d.bearing_sinkage_m = std::max(
+      bearing_sinkage_m(bearing, underside, height_m, std::clamp(d.load_n, 0.0, weight_n)),
+      impact_sinkage_m(bearing, underside, height_m, std::max(sinkage, 0.0), weight_n, d.impact_energy_j));
+  // a body that did not touch the field this step is not pressed (nor pulled down to it)
+  if (!d.touched || sinkage >= d.bearing_sinkage_m) return pose;
   pose.position_m.z() -= d.bearing_sinkage_m - sinkage;
   dBodySetPosition(d.body, pose.position_m.x(), pose.position_m.y(), pose.position_m.z());
   return pose;
@@ -329,8 +359,12 @@ FreeBodyDrive::~FreeBodyDrive() = default;
 void FreeBodyDrive::advance(const GroundState& state, GroundModel* driven) {
   const double dt = impl_->model.time.step_s;
   const int ode_steps = std::max(1, static_cast<int>(std::lround(dt / impl_->model.free_bodies.ode_step_s)));
-  for (Driven& d : impl_->bodies) d.impulse_n_s = 0.0;
+  for (Driven& d : impl_->bodies) {
+    d.impulse_n_s = d.impact_energy_j = 0.0;
+    d.touched = false;
+  }
   for (int k = 0; k < ode_steps; ++k) impl_->ode_step(dt / ode_steps);
+  for (Driven& d : impl_->bodies) d.airborne = !d.touched;
   const double t0 = state.step_index * dt;
   for (Driven& d : impl_->bodies) {
     d.load_n = d.impulse_n_s / dt;

@@ -24,7 +24,10 @@ using namespace repose::testing;
 constexpr double kBed = 0.05, kCell = 0.005;
 const Eigen::Vector3d kHalf(0.05, 0.05, 0.025);  // a 10 cm x 10 cm x 5 cm box: edges on cell edges
 
-// A box of mass_kg with its bottom drop_m above a flat bed, 0.4 m square, 1/60 s steps.
+// A box of mass_kg with its bottom drop_m above a flat bed, 0.4 m square,
+// 1/60 s steps. drop_m 0: set down 1 um into the surface, so that ODE's first
+// step has contact: no step of free fall, whose energy (an impact of a
+// 14 um drop) would press it past its static sinkage.
 Scene box_scene(double mass_kg, double drop_m, double duration_s, BekkerBearing::Law law = BekkerBearing::Law::kBekker) {
   ObjectSpec box;
   box.name = "box";
@@ -33,7 +36,7 @@ Scene box_scene(double mass_kg, double drop_m, double duration_s, BekkerBearing:
   box.body = make_box(kHalf);
   box.dynamic = DynamicBody{};
   box.dynamic->mass_kg = mass_kg;
-  box.keyframes = {at(0.0, 0.0, 0.0, kBed + drop_m + kHalf.z())};
+  box.keyframes = {at(0.0, 0.0, 0.0, kBed + (drop_m > 0.0 ? drop_m : -1e-6) + kHalf.z())};
   Scene scene = flat_scene(centred_grid(80, 80, kCell), kBed, sand(), {box}, 1);
   scene.time = TimeSpec{1.0 / 60.0, duration_s};
   auto section = std::make_shared<GroundModelSection>(ground_model_section(scene));
@@ -80,14 +83,22 @@ TEST(FreeBodyDrive, DroppedBoxLeavesTheImprintOfItsFootprint) {
   const GroundRun g = run(box_scene(2.0, 0.02, 1.0));
   const FreeBodyReport& b = g.free_bodies[0];
   EXPECT_GT(b.max_load_n, 2.0 * b.weight_n) << "the impact loads more than the weight";
-  EXPECT_GE(b.resting_depth_m, 0.97 * bekker_box_sinkage_m(2.0)) << "the impact presses at least as deep";
+  // beyond the static sinkage z_s the ground's work takes up the impact's energy:
+  // int_{z_s}^z (W_bekker - m g) = m g drop, W_bekker = p(z) * footprint
+  const double zs = bekker_box_sinkage_m(2.0);
+  auto bekker_work = [](double z) { return 0.01 * 1538330.0 * std::pow(z, 2.1) / 2.1; };
+  auto work = [&](double z) { return bekker_work(z) - bekker_work(zs) - 19.62 * (z - zs) - 19.62 * 0.02; };
+  double lo = zs, hi = 0.05;
+  for (int k = 0; k < 100; ++k) (work(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
+  EXPECT_NEAR(b.resting_depth_m / lo, 1.0, 0.05) << "energy balance " << lo;
+  EXPECT_GT(b.resting_depth_m, 2.0 * bekker_box_sinkage_m(2.0)) << "the impact presses deeper than the weight";
   // lowered over the footprint (inside its edge by a cell) to the box's bottom, within its tilt
   const HeightField& h = g.final_height;
   const double floor_m = kBed - b.resting_depth_m;
   for (const double x : {-0.045, -0.02, 0.0, 0.02, 0.045}) {
     for (const double y : {-0.045, 0.0, 0.045}) {
       const double z = h.sample(b.final_position_m.x() + x, b.final_position_m.y() + y);
-      EXPECT_GE(z, floor_m - 1e-4) << x << " " << y;
+      EXPECT_GE(z, floor_m - 2e-4) << x << " " << y;
       EXPECT_LE(z, floor_m + 5e-4) << x << " " << y;
     }
   }
