@@ -1,7 +1,8 @@
 """Resting depth against load of experiments/ground_sinkage.yaml
 (ground_sinkage.png): the free box in the ground model beside Bekker's plate
-sinkage of its weight, and the free sphere in the ground model and in
-LIGGGHTS beside Bekker's static sinkage of a sphere under its weight.
+sinkage of its weight, and the dropped sphere in the ground model and in
+LIGGGHTS beside Bekker's static sinkage of a sphere under its weight (the
+dropped sphere sinks deeper: the ground also takes up its impact energy).
 Usage: python3 ground_sinkage.py RUN_FOLDER (MPLBACKEND=Agg).
 
 Bekker's law p = (k_c / b + k_phi) z^n with the ground model's defaults

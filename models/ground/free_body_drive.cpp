@@ -331,12 +331,13 @@ Pose FreeBodyDrive::Impl::press(Driven& d, const HeightField& ground) {
   const double sinkage = surface - lowest_z(d.shape, pose.position_m, pose.orientation.toRotationMatrix());
   const double weight_n = d.mass_kg * model.free_bodies.gravity_m_s2, height_m = box.max.z() - box.min.z();
   const BekkerBearing& bearing = model.free_bodies.bearing;
-  d.bearing_sinkage_m = std::max(
-      bearing_sinkage_m(bearing, underside, height_m, std::clamp(d.load_n, 0.0, weight_n)),
-      impact_sinkage_m(bearing, underside, height_m, std::max(sinkage, 0.0), weight_n, d.impact_energy_j));
+  d.bearing_sinkage_m = bearing_sinkage_m(bearing, underside, height_m, std::clamp(d.load_n, 0.0, weight_n));
+  const double target = std::max(d.bearing_sinkage_m, impact_sinkage_m(bearing, underside, height_m,
+                                                                       std::max(sinkage, 0.0), weight_n,
+                                                                       d.impact_energy_j));
   // a body that did not touch the field this step is not pressed (nor pulled down to it)
-  if (!d.touched || sinkage >= d.bearing_sinkage_m) return pose;
-  pose.position_m.z() -= d.bearing_sinkage_m - sinkage;
+  if (!d.touched || sinkage >= target) return pose;
+  pose.position_m.z() -= target - sinkage;
   dBodySetPosition(d.body, pose.position_m.x(), pose.position_m.y(), pose.position_m.z());
   return pose;
 }

@@ -52,7 +52,7 @@ struct FreeBodyReport {
   double final_speed_m_s = 0.0;
   double final_load_n = 0.0;       // mean vertical force of the field on the body over the last step
   double max_load_n = 0.0;         // largest step-mean force (the impact's)
-  double bearing_sinkage_m = 0.0;  // the bearing rule's sinkage for the last step's load
+  double bearing_sinkage_m = 0.0;  // Bekker's static sinkage for the last step's load (at most the weight)
   Eigen::Vector3d final_position_m = Eigen::Vector3d::Zero();
 };
 
