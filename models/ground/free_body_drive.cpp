@@ -284,7 +284,9 @@ void FreeBodyDrive::Impl::ode_step(double dt_s) {
   }
   for (std::size_t k = 0; k < bodies.size(); ++k) {
     Driven& d = bodies[k];
-    if (touching[k] && !d.touching && d.airborne) d.impact_energy_j += 0.5 * d.mass_kg * falling_m_s[k] * falling_m_s[k];
+    if (touching[k] && !d.touching && d.airborne) {
+      d.impact_energy_j += 0.5 * d.mass_kg * falling_m_s[k] * falling_m_s[k];
+    }
     d.touching = touching[k] != 0;
     d.touched = d.touched || d.touching;
   }
@@ -310,13 +312,14 @@ double intersection_m(const DepthImage& underside, const Footprint& fp, const He
 // than where the ground's work takes up the energy of an impact this step
 // (impact_sinkage_m), moves down to it, in ODE and for the ground step. The
 // static load is the field's mean force over the step, at most the weight:
-// the impact's share of that force is its energy's, and the solver's
-// jitter about the weight must not ratchet a resting body down. The ground yields only there:
-// otherwise the ground step gets the body lifted out of whatever it
-// intersects of the ground (ODE's soft contact and jitter; ODE holds the
-// body out of the rest, as its field is rigid), since cutting that away
-// every step let a resting body creep down (measured: an 8 kg box 1.4 mm
-// below its bearing depth after 1 s). The body's pose for the ground step.
+// an impact's share of that force is counted by its energy, and the
+// solver's jitter about the weight must not ratchet a resting body down.
+// The ground yields only there: otherwise the ground step gets the body
+// lifted out of whatever it intersects of the ground (ODE's soft contact and
+// jitter; ODE holds the body out of the rest, its field being rigid), as
+// cutting that away every step let a resting body creep down (measured: an
+// 8 kg box 1.4 mm below its bearing depth after 1 s). Returns the body's
+// pose for the ground step.
 Pose FreeBodyDrive::Impl::press(Driven& d, const HeightField& ground) {
   const ObjectSpec& o = model.objects[static_cast<std::size_t>(d.object)];
   Pose pose = pose_of(d.body);

@@ -28,7 +28,8 @@ const Eigen::Vector3d kHalf(0.05, 0.05, 0.025);  // a 10 cm x 10 cm x 5 cm box: 
 // 1/60 s steps. drop_m 0: set down 1 um into the surface, so that ODE's first
 // step has contact: no step of free fall, whose energy (an impact of a
 // 14 um drop) would press it past its static sinkage.
-Scene box_scene(double mass_kg, double drop_m, double duration_s, BekkerBearing::Law law = BekkerBearing::Law::kBekker) {
+Scene box_scene(double mass_kg, double drop_m, double duration_s,
+                BekkerBearing::Law law = BekkerBearing::Law::kBekker) {
   ObjectSpec box;
   box.name = "box";
   box.shape = ObjectSpec::Shape::kBox;
@@ -153,7 +154,9 @@ TEST(FreeBodyDrive, StagesSayODEDrivesAndBekkerBears) {
   EXPECT_NE(std::find(stages.begin(), stages.end(), "bearing:bekker"), stages.end());
   const GroundModel keyframed = build_ground_model(flat_scene(centred_grid(8, 8, 0.01), 0.02, sand(),
                                                               {sphere(0.02, {at(0, 0, 0, 0.05)})}, 1));
-  for (const std::string& s : ground_stages(keyframed, default_params(keyframed))) EXPECT_EQ(s.find("ode"), std::string::npos);
+  for (const std::string& s : ground_stages(keyframed, default_params(keyframed))) {
+    EXPECT_EQ(s.find("ode"), std::string::npos);
+  }
 }
 
 TEST(FreeBodyDrive, RefusesAMeshNamingIt) {
