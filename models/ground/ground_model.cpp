@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/ground/free_body_drive.h"
 #include "models/ground/ground_section.h"
 
 namespace repose {
@@ -35,7 +36,8 @@ bool keyframed_objects_only(const Scene& scene, std::string* why) {
     if (!scene.objects[k].dynamic) continue;
     if (why != nullptr) {
       *why = fmt::format("objects[{}] ('{}'): a free body (dynamic:) moves only in the particle engines (liggghts, "
-                         "bullet, ode); the ground model moves objects along keyframes (motion:)",
+                         "bullet, ode) and the ground model (ground); this model moves objects along keyframes "
+                         "(motion:)",
                          k, scene.objects[k].name);
     }
     return false;
@@ -60,11 +62,13 @@ GroundModel build_ground_model(const Scene& scene) {
       for (int i = i0; i <= i1; ++i) model.material_index[static_cast<std::size_t>(model.cell(i, j))] = r + 1;
     }
   }
-  if (std::string why; !keyframed_objects_only(scene, &why)) throw InputError(fmt::format("{}: {}", scene.source_path, why));
+  model.free_bodies = section.free_bodies;
+  validate(model.free_bodies);
   model.objects = scene.objects;
   for (const ObjectSpec& object : model.objects) model.swept_bodies.push_back(make_swept_body(object.body));
   model.time = scene.time;
   model.camera = scene.camera;
+  check_free_bodies(model, scene.source_path);
   return model;
 }
 

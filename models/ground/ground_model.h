@@ -27,6 +27,7 @@ struct GroundModel {
   // mesh costs a copy per step, not a hash map (swept_mesh.h).
   std::vector<SweptBody> swept_bodies;
   GroundModelSpec options;
+  FreeBodySpec free_bodies;  // how ODE drives objects with dynamic: (free_body_drive.h)
   TimeSpec time;
   std::optional<CameraSpec> camera;
 
@@ -36,13 +37,13 @@ struct GroundModel {
 
 // The scene's ground-model section gives the options and the materials
 // (ground_section.h; its reader has checked them). Throws FieldError for
-// options changed in code that break validate(GroundModelSpec).
-// Throws InputError naming the object when the scene has a free body
-// (dynamic:): only the particle engines move one.
+// options changed in code that break validate(GroundModelSpec) or
+// validate(FreeBodySpec). Free bodies (dynamic:) are kept: ODE drives them
+// (free_body_drive.h); InputError naming one ODE cannot drive here.
 GroundModel build_ground_model(const Scene& scene);
 
 // False, with why (the object and what to do), when the scene has a free
-// body: the ground model and the models built on it cannot move one.
+// body: for the models built on the ground model that cannot move one.
 bool keyframed_objects_only(const Scene& scene, std::string* why);
 
 // A model of a grid alone (no objects), all cells of one material: for

@@ -13,6 +13,20 @@ namespace {
 
 const auto kGroundModelFields = [](auto& v, GroundModelSpec& x) { ground_model_fields(v, x); };
 const auto kMaterialFields = [](auto& v, Material& x) { material_fields(v, x); };
+
+// free_bodies: and bearing: (each optional; absent: the defaults).
+void read_free_bodies(const YamlMap& map, FreeBodySpec& spec) {
+  if (auto value = map.get("free_bodies"); value && !value->node().IsNull()) {
+    const YamlMap sub = value->map(field_keys<FreeBodySpec>(kFreeBodyFields));
+    read_fields_into(sub, kFreeBodyFields, spec);
+    validate_at(sub, [&] { validate(spec); });
+  }
+  if (auto value = map.get("bearing"); value && !value->node().IsNull()) {
+    const YamlMap sub = value->map(field_keys<BekkerBearing>(kBekkerBearingFields));
+    read_fields_into(sub, kBekkerBearingFields, spec.bearing);
+    validate_at(sub, [&] { validate(spec.bearing); });
+  }
+}
 const char* const kPresets = "sand, mud, snow";
 
 Material read_material(const std::string& name, const YamlValue& value) {
@@ -91,7 +105,12 @@ void GroundModelSection::write_yaml(YAML::Emitter& out) const {
     out << YAML::Key << name << YAML::Value;
     write_fields_map(out, material, kMaterialFields);
   }
-  out << YAML::EndMap << YAML::EndMap;
+  out << YAML::EndMap;
+  out << YAML::Key << "free_bodies" << YAML::Value;
+  write_fields_map(out, free_bodies, kFreeBodyFields);
+  out << YAML::Key << "bearing" << YAML::Value;
+  write_fields_map(out, free_bodies.bearing, kBekkerBearingFields);
+  out << YAML::EndMap;
 }
 
 std::string GroundModelSection::summary() const {
@@ -100,6 +119,11 @@ std::string GroundModelSection::summary() const {
                                  options.sweep ? "sweep" : "no sweep", options.substeps, options.erosion_memory_steps,
                                  options.coarse_factor,
                                  options.collision == GroundModelSpec::Collision::kCpu ? "cpu" : "osmesa");
+  const BekkerBearing& b = free_bodies.bearing;
+  text += b.law == BekkerBearing::Law::kOff
+              ? std::string("; free bodies: ODE, no bearing sinkage")
+              : fmt::format("; free bodies: ODE, Bekker bearing n {}, k_c {} N/m^(n+1), k_phi {} N/m^(n+2)",
+                            b.exponent_n, b.k_c_n_per_m_n_plus_1, b.k_phi_n_per_m_n_plus_2);
   for (const auto& [name, m] : materials) {
     text += fmt::format("; {}: alpha {}, repose angle {:.6g} deg, sigma {}, {} erosion iterations", name, m.alpha,
                         m.repose_angle_rad / kRadPerDeg, m.sigma, m.erosion_iterations);
@@ -133,9 +157,11 @@ Scene with_material(Scene scene, const Material& material) {
 std::shared_ptr<const SceneSection> read_ground_model_section(const YamlValue& value, const Scene& common) {
   auto section = std::make_shared<GroundModelSection>();
   if (value.node().IsDefined() && !value.node().IsNull()) {
-    const YamlMap map = value.map(field_keys<GroundModelSpec>(kGroundModelFields, {"materials"}));
+    const YamlMap map =
+        value.map(field_keys<GroundModelSpec>(kGroundModelFields, {"materials", "free_bodies", "bearing"}));
     read_fields_into(map, kGroundModelFields, section->options);
     validate_at(map, [&] { validate(section->options); });
+    read_free_bodies(map, section->free_bodies);
     if (auto materials = map.get("materials")) {
       if (!materials->is_map()) materials->fail("a map from material names to {preset, alpha, repose_angle_deg, ...}");
       for (const auto& entry : materials->node()) {

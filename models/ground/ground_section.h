@@ -16,6 +16,8 @@
 //       sand: {alpha: 0.9}         # a preset's name: its values, overridden
 //       clay: {preset: mud, sigma: 0.1}
 //       rock: {alpha: 0.1, repose_angle_deg: 80, sigma: 0.2}   # no preset: alpha, angle and sigma all given
+//     free_bodies: {ode_step_s: 0.0016667, friction: 0.5}     # how ODE drives dynamic: objects (free_body_spec.h)
+//     bearing: {law: bekker, exponent_n: 1.1}                # the ground's bearing rule for them (bekker_bearing.h)
 //
 // The section is read for every scene, present or not (its defaults), so that
 // every material a scene names is checked when it is loaded.
@@ -26,6 +28,7 @@
 #include "models/core/config/scene.h"
 #include "models/core/config/scene_section.h"
 #include "models/core/config/yaml_reader.h"
+#include "models/ground/free_body_spec.h"
 #include "models/ground/material.h"
 
 namespace repose {
@@ -64,6 +67,7 @@ class GroundModelSection final : public SceneSection {
 
   GroundModelSpec options;
   std::map<std::string, Material> materials;  // defined in the section (presets need no entry)
+  FreeBodySpec free_bodies;                   // free_bodies: and bearing: (only used with dynamic: objects)
 
   // The material of that name: defined here, else the preset. InputError
   // when it is neither.

@@ -41,6 +41,17 @@ void add_measures(Run& run, const GroundRun& g, const Scene& scene) {
   run.set("volume.left_grid_m3", g.ledger.left_grid_m3, "m^3");
   run.set("volume.bedrock_m3", g.ledger.bedrock_m3, "m^3");
   run.set("volume.imbalance_m3", g.ledger.imbalance_m3(g.final_volume_m3), "m^3");
+  // free bodies, under the particle engines' keys (free_bodies.NAME.*)
+  for (const FreeBodyReport& b : g.free_bodies) {
+    const std::string key = "free_bodies." + b.name + ".";
+    run.set(key + "resting_depth_m", b.resting_depth_m, "m");
+    run.set(key + "final_speed_m_s", b.final_speed_m_s, "m/s");
+    run.set(key + "max_force_n", b.max_load_n, "N");
+    run.set(key + "final_force_n", b.final_load_n, "N");
+    run.set(key + "weight_n", b.weight_n, "N");
+    run.set(key + "mass_kg", b.mass_kg, "kg");
+    run.set(key + "bearing_sinkage_m", b.bearing_sinkage_m, "m");
+  }
   // streaks along each moving object's path; ridges count above 5 % of a cell
   for (const ObjectSpec& object : scene.objects) {
     const StreakStats s =
@@ -91,7 +102,7 @@ class CompiledGround final : public CompiledSolver {
 std::vector<SectionType> GroundSolver::sections() const { return {ground_model_section_type()}; }
 
 bool GroundSolver::can_run(const Scene& scene, std::string* why) const {
-  return Solver::can_run(scene, why) && keyframed_objects_only(scene, why);
+  return Solver::can_run(scene, why);
 }
 
 std::unique_ptr<CompiledSolver> GroundSolver::compile(const Scene& scene) const {

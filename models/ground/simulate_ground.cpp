@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -60,6 +61,10 @@ std::vector<std::string> ground_stages(const GroundModel& model, const GroundPar
   for (const Material& m : params.materials) erodes = erodes || m.repose_angle_rad < std::numbers::pi / 2;
   if (erodes && !model.objects.empty()) stages.push_back("erosion");
   if (coarse) stages.push_back("multires");
+  if (has_free_bodies(model)) {
+    stages.push_back("free-bodies:ode");
+    if (model.free_bodies.bearing.law == BekkerBearing::Law::kBekker) stages.push_back("bearing:bekker");
+  }
   return stages;
 }
 
@@ -74,14 +79,24 @@ GroundRun simulate_ground(const GroundModel& model, const GroundParams& params, 
   GroundState state = make_ground_state(model, initial);
   const int steps = model.time.step_count();
   run.step_wall_s.reserve(static_cast<std::size_t>(steps));
+  // free bodies: ODE's world, and a copy of the model whose free objects' keyframes each step sets
+  std::unique_ptr<FreeBodyDrive> drive;
+  std::optional<GroundModel> driven;
+  if (has_free_bodies(model)) {
+    drive = std::make_unique<FreeBodyDrive>(model, initial);
+    driven.emplace(model);
+  }
   for (int s = 0; s < steps; ++s) {
     const auto start = std::chrono::steady_clock::now();
-    const StepReport r = step(model, params, *renderer, &state);
+    if (drive) drive->advance(state, &*driven);
+    const StepReport r = step(driven ? *driven : model, params, *renderer, &state);
+    if (drive) drive->refresh_field(state.height);
     run.step_wall_s.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     run.contact_cells += r.contact_cells;
     report(progress, static_cast<double>(s + 1) / steps, "ground steps");
   }
   run.steps = steps;
+  if (drive) run.free_bodies = drive->reports();
   run.ledger = state.ledger;
   run.final_height = std::move(state.height);
   run.final_volume_m3 = run.final_height.volume_m3();

@@ -9,6 +9,7 @@
 #include "models/core/geometry/height_field.h"
 #include "models/core/base/progress.h"
 #include "models/core/config/scene.h"
+#include "models/ground/free_body_drive.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/volume_ledger.h"
 
@@ -23,13 +24,16 @@ struct GroundRun {
   VolumeLedger ledger;
   double final_volume_m3 = 0.0;
   // The stages the scene built, e.g. "collision:cpu", "sweep", "substeps:10",
-  // "rotation-substeps", "erosion", "multires".
+  // "rotation-substeps", "erosion", "multires", "free-bodies:ode", "bearing:bekker".
   std::vector<std::string> stages;
   int steps = 0;
   long long contact_cells = 0;  // summed over steps
+  std::vector<FreeBodyReport> free_bodies;  // objects with dynamic:, driven by ODE (free_body_drive.h)
 };
 
-// The scene's initial ground (make_initial_height), then every step.
+// The scene's initial ground (make_initial_height), then every step. Free
+// bodies (dynamic:) are driven by ODE over the field, which is built only
+// when the model has one (free_body_drive.h).
 // Throws InputError when params are invalid for the scene.
 GroundRun simulate_ground(const Scene& scene, const GroundParams& params, const ProgressFn& progress = {});
 

@@ -40,6 +40,8 @@ Grid HeightSpanModel::map_grid(const HeldObject& h, const Pose& pose) const {
 }
 
 HeightSpanModel build_heightspan_model(const Scene& scene) {
+  // the height-span model moves objects along keyframes only (the ground model alone drives free bodies)
+  if (std::string why; !keyframed_objects_only(scene, &why)) throw InputError(fmt::format("{}: {}", scene.source_path, why));
   HeightSpanModel model;
   model.ground = build_ground_model(scene);
   model.options = heightspan_section(scene).options;

@@ -55,5 +55,21 @@ TEST(HeightSpanModel, AnOpenMeshThatHoldsMaterialIsRefused) {
   }
 }
 
+TEST(HeightSpanModel, AFreeBodyIsRefusedNamingIt) {
+  ObjectSpec ball = mesh_object("dropped", make_sphere(0.02), {key(0, 0.05, 0.05, 0.1)});
+  ball.dynamic = DynamicBody{};
+  ball.dynamic->mass_kg = 0.1;
+  Scene s = bed_scene(20, 20, 0.005, 0.01, {ball}, 1);
+  try {
+    build_heightspan_model(s);
+    FAIL() << "held a free body still";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("objects[0] ('dropped')"), std::string::npos) << m;
+    EXPECT_NE(m.find("dynamic"), std::string::npos) << m;
+    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+  }
+}
+
 }  // namespace
 }  // namespace repose

@@ -1,0 +1,43 @@
+"""experiments/plots/ground_sinkage.py: Bekker's plate and sphere sinkage."""
+import math
+import os
+import sys
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "experiments", "plots"))
+from ground_sinkage import bekker_pressure, plate_sinkage, series, sphere_load, sphere_sinkage  # noqa: E402
+
+
+class BekkerTest(unittest.TestCase):
+    def test_plate_sinkage_inverts_the_pressure(self):
+        for z in (1e-4, 3e-3, 0.02):
+            p = bekker_pressure(z, 0.1)
+            self.assertAlmostEqual(plate_sinkage(p * 0.01, 0.01, 0.1) / z, 1.0, places=12)
+
+    def test_plate_sinkage_of_two_kilograms_by_hand(self):
+        # (19.62 N / 0.01 m^2 / (990 / 0.1 + 1528430))^(1 / 1.1)
+        self.assertAlmostEqual(plate_sinkage(19.62, 0.01, 0.1), (1962.0 / 1538330.0) ** (1 / 1.1), places=15)
+
+    def test_sphere_bears_its_load_at_its_sinkage_and_spreads_it(self):
+        r = 0.006
+        for load in (0.01, 0.05, 0.2):  # below 0.66 N, which buries a 6 mm sphere
+            z = sphere_sinkage(load, r)
+            self.assertAlmostEqual(sphere_load(z, r) / load, 1.0, places=9)
+        # the patch widens with depth: ten times the load sinks a sphere less than ten^(1/n) times deeper
+        self.assertLess(sphere_sinkage(0.2, r) / sphere_sinkage(0.02, r), 10 ** (1 / 1.1))
+
+    def test_a_load_no_sphere_bears_buries_it_to_its_radius(self):
+        self.assertEqual(sphere_sinkage(1e9, 0.006), 0.006)
+
+    def test_series_takes_the_named_runs_sorted_by_weight(self):
+        rows = [
+            {"name": "ground_box_2", "free_bodies.box.weight_n": "19.6", "free_bodies.box.resting_depth_m": "0.002"},
+            {"name": "ground_box_0.5", "free_bodies.box.weight_n": "4.9", "free_bodies.box.resting_depth_m": "0.001"},
+            {"name": "ground_sphere_1000", "free_bodies.box.weight_n": "", "free_bodies.box.resting_depth_m": ""},
+        ]
+        self.assertEqual(series(rows, "ground_box", "box"), [(4.9, 0.001), (19.6, 0.002)])
+        self.assertEqual(series(rows, "ground_sphere", "box"), [])
+
+
+if __name__ == "__main__":
+    unittest.main()
