@@ -194,8 +194,8 @@ TEST(SimulateGround, RegionsLaterWin) {
   Material mud, snow;
   material_preset("mud", &mud);
   material_preset("snow", &snow);
-  scene.ground.regions.push_back({mud.name, -0.5, 0.0, -0.5, 0.5});
-  scene.ground.regions.push_back({snow.name, -0.25, 0.25, -0.5, 0.5});
+  scene.ground.regions.push_back({mud.name, -0.5, 0.0, -0.5, 0.5, ""});
+  scene.ground.regions.push_back({snow.name, -0.25, 0.25, -0.5, 0.5, ""});
   const GroundModel model = build_ground_model(scene);
   ASSERT_EQ(model.materials.size(), 3u);
   EXPECT_EQ(model.material_at(model.cell(0, 5)), 1);  // x = -0.45: mud

@@ -133,7 +133,7 @@ void settle(const std::string& body, int memory_steps, int erosion_iterations) {
   m.erosion_iterations = erosion_iterations;
   Scene scene = flat_scene(centred_grid(kCells, kCells, kCell), kBed, m, {o}, 300);
   scene.time.step_s = kStep;
-  scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.erosion_memory_steps = memory_steps; });
+  scene = with_ground_options_changed(std::move(scene), [&](GroundModelSpec& spec) { spec.erosion_memory_steps = memory_steps; });
   const GroundModel model = build_ground_model(scene);
   const GroundParams params = default_params(model);
   GroundState state = make_ground_state(model, HeightField(model.grid, kBed));
