@@ -25,8 +25,21 @@
 // looser tolerance would help but not enough, and changes the yardstick:
 // relative residual 1e-9 takes 116 iterations (2.0 steps/s), 1e-6 71
 // (2.8 steps/s). 20 steps/s needs ~10 iterations a step: a multigrid or
-// a preconditioner kept over many steps, not Jacobi CG. Run:
-//   build/bin/tearing_benchmark --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+// a preconditioner kept over many steps, not Jacobi CG.
+// Measured 2026-11-23 (same machine, load ~6.5; median of 3, CPU time, both
+// at 5 s a repetition): with the conjugate gradients preconditioned by a
+// multigrid V-cycle kept over up to 50 steps (models/tearing/
+// sheet_multigrid.h) and their tolerance 1e-8 instead of 1e-12 (the 1e-12
+// Jacobi solve's trajectory kept to 6e-10, implicit_integrator_test.cpp),
+// the implicit step at 200 x 200 went from 746 ms (1.3 steps/s, 163
+// iterations) to 430 ms (2.3 steps/s, 8.8 iterations, the hierarchy's
+// build included); 20 steps/s is still missed ~9x. At 50 x 50 43 -> 37 ms
+// (28 iterations: the hierarchy degrades as the twist rotates the sheet,
+// it is rebuilt ~8 times in 135 steps). A sparse Cholesky factor kept as
+// the preconditioner was measured first and rejected: 3.2e7 non-zeros,
+// 2.5 s (CHOLMOD) to 17 s (Eigen) to factorise, 55-100 ms per application.
+// Run:
+//   build/bin/tearing_benchmark --benchmark_filter=Implicit --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 
 #include <benchmark/benchmark.h>
 

@@ -255,6 +255,7 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
       if (row < 0) continue;
       for (int q = 0; q < 3; ++q) {
         const double kpq = block(p, q);  // of -K
+        if (kpq == 0.0) continue;        // six of a bending block's nine
         // dt K v_n on the right; -dt^2 K dv on the left, held dv moved right
         rhs[row] -= dt2 * kpq * v0[3 * vb + q];
         if (free_index_[3 * vb + q] >= 0) {

@@ -14,9 +14,13 @@
 // matrix-vector products and cuts the iterations to ~10.
 //
 // Coarse levels: every second vertex of every second grid line (and the
-// last line), bilinear interpolation P between them, each axis on its own;
-// held axes have no row of P, coarse unknowns no fine row reaches are
-// dropped. Coarse operators are Galerkin, A_c = P^T A P, so tears (zeros in
+// last line); interpolation P between them each axis on its own, weighted
+// by the fine matrix's coupling between neighbours (bilinear on a uniform
+// intact sheet; nothing across a tear: a plain bilinear P left the V-cycle
+// a contraction of only 0.6-0.85 on the modes of the notch's flaps, and
+// took 17 iterations at 200 x 200 where this takes 13, relative residual
+// 1e-12); held axes have no row of P, coarse unknowns no fine row reaches
+// are dropped. Coarse operators are Galerkin, A_c = P^T A P, so tears (zeros in
 // A) reach the coarse levels without geometry. Smoothing: a forward
 // Gauss-Seidel sweep before the coarse correction and a backward one after,
 // so the cycle is a symmetric positive definite operator (required by CG);
