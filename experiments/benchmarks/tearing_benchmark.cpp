@@ -32,10 +32,11 @@
 // sheet_multigrid.h) and their tolerance 1e-8 instead of 1e-12 (the 1e-12
 // Jacobi solve's trajectory kept to 6e-10, implicit_integrator_test.cpp),
 // the implicit step at 200 x 200 went from 746 ms (1.3 steps/s, 163
-// iterations) to 430 ms (2.3 steps/s, 8.8 iterations, the hierarchy's
-// build included); 20 steps/s is still missed ~9x. At 50 x 50 43 -> 37 ms
-// (28 iterations: the hierarchy degrades as the twist rotates the sheet,
-// it is rebuilt ~8 times in 135 steps). A sparse Cholesky factor kept as
+// iterations) to 370 ms (2.7 steps/s, 8.8 iterations, the hierarchy's
+// build included; 430 ms before the first smoothing sweep read only half
+// the matrix); 20 steps/s is still missed ~7x. At 50 x 50 43 -> 37 ms
+// (28-31 iterations: the hierarchy degrades as the twist rotates the sheet,
+// it is rebuilt 8-9 times in ~135 steps). A sparse Cholesky factor kept as
 // the preconditioner was measured first and rejected: 3.2e7 non-zeros,
 // 2.5 s (CHOLMOD) to 17 s (Eigen) to factorise, 55-100 ms per application.
 // Run:

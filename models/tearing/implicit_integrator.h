@@ -16,10 +16,10 @@
 //
 // Speed (tearing_benchmark BM_ImplicitStep/200, 10x the explicit step, the
 // seed's twist, median of 3 runs of 5 s, CPU time, shared 2-core machine at
-// load ~6, 2026-11-23): 430 ms a step (2.3 steps/s, 8.8 CG iterations, the
+// load ~6, 2026-11-23): 370 ms a step (2.7 steps/s, 8.8 CG iterations, the
 // hierarchy's ~0.3 s build included) against 746 ms (1.3 steps/s, 163
 // iterations) for Jacobi CG at 1e-12; the 20 steps/s is missed
-// ~9x. A V-cycle costs ~8 matrix-vector products (two Gauss-Seidel sweeps
+// ~7x. A V-cycle costs ~8 matrix-vector products (two Gauss-Seidel sweeps
 // and a residual on the fine level, the coarse levels half as much again),
 // so the solve (~70 % of a step, perf) and the assembly (~17 %) are of a size: more
 // speed needs both cheaper (block 3 x 3 storage, single-precision cycle).
