@@ -145,6 +145,31 @@ double coupling(const Eigen::SparseMatrix<double>& a, const Grid& grid, int u, i
   return any ? std::max(0.0, sum) : -1.0;
 }
 
+// The neighbours' stencils (neighbour vertex, its stencil) mixed by the
+// coupling of `vertex` to each; a held neighbour pulls as hard as the
+// others on average; empty when nothing couples (a vertex left alone by
+// tears: its mass only, which the smoother handles).
+Stencil mixed_stencil(const Eigen::SparseMatrix<double>& a, const Grid& fine, int vertex,
+                      const std::vector<std::pair<int, Stencil>>& neighbours) {
+  double known = 0.0;
+  int known_count = 0;
+  std::vector<double> strength;
+  for (const auto& neighbour : neighbours) {
+    strength.push_back(coupling(a, fine, vertex, neighbour.first));
+    if (strength.back() >= 0.0) known += strength.back(), ++known_count;
+  }
+  double total = 0.0;
+  Stencil mixed;
+  for (std::size_t n = 0; n < neighbours.size(); ++n) {
+    const double w = strength[n] >= 0.0 ? strength[n] : (known_count > 0 ? known / known_count : 1.0);
+    total += w;
+    for (const auto& [col, weight] : neighbours[n].second) mixed.emplace_back(col, w * weight);
+  }
+  if (!(total > 0.0)) return {};
+  for (auto& entry : mixed) entry.second /= total;
+  return mixed;
+}
+
 // Per fine unknown, its interpolation from the coarse grid of `fine` (with
 // coarse_vertices_x vertices a line), candidates not yet compacted. A fine node on a coarse line
 // takes its two coarse neighbours weighted by its coupling to each; a node
@@ -156,35 +181,7 @@ std::vector<Stencil> coarse_stencils(const Grid& fine, const Eigen::SparseMatrix
   const int nx = fine.vertices_x, ny = fine.vertices_y;
   const auto row_of = [&](int i, int j, int axis) { return fine.index[static_cast<std::size_t>(3 * (j * nx + i) + axis)]; };
   std::vector<Stencil> stencils(static_cast<std::size_t>(3 * nx * ny));
-  // mix the stencils of neighbours (ni, nj) by coupling; pass 0 fills nodes
-  // with a coarse line in some direction, pass 1 the cell middles
-  const auto mix = [&](int i, int j, int axis, const std::vector<std::pair<int, int>>& neighbours,
-                       const auto& stencil_of) {
-    double total = 0.0, known = 0.0;
-    int known_count = 0;
-    std::vector<double> strength;
-    for (const auto& [ni, nj] : neighbours) {
-      strength.push_back(coupling(a, fine, j * nx + i, nj * nx + ni));
-      if (strength.back() >= 0.0) known += strength.back(), ++known_count;
-    }
-    // a held neighbour pulls as hard as the others on average
-    for (double& w : strength) {
-      if (w < 0.0) w = known_count > 0 ? known / known_count : 1.0;
-    }
-    Stencil mixed;
-    for (std::size_t n = 0; n < neighbours.size(); ++n) {
-      const auto [ni, nj] = neighbours[n];
-      const double w = strength[n];
-      total += w;
-      for (const auto& [col, weight] : stencil_of(ni, nj)) mixed.emplace_back(col, w * weight);
-    }
-    if (total > 0.0) {
-      for (auto& entry : mixed) entry.second /= total;
-    } else {
-      mixed.clear();  // a vertex left alone: its mass only, the smoother's
-    }
-    return mixed;
-  };
+  // pass 0 fills the nodes on a coarse line, pass 1 the cell middles
   for (int pass = 0; pass < 2; ++pass) {
     for (int j = 0; j < ny; ++j) {
       const LineWeights wy = line_weights(ny, j);
@@ -194,22 +191,23 @@ std::vector<Stencil> coarse_stencils(const Grid& fine, const Eigen::SparseMatrix
         if ((between_x && between_y) != (pass == 1)) continue;
         for (int axis = 0; axis < 3; ++axis) {
           if (row_of(i, j, axis) < 0) continue;
-          Stencil& stencil = stencils[static_cast<std::size_t>(3 * (j * nx + i) + axis)];
+          const int v = j * nx + i;
+          Stencil& stencil = stencils[static_cast<std::size_t>(3 * v + axis)];
           const auto coarse_node = [&](int ci, int cj) {
             return Stencil{{3 * (cj * coarse_vertices_x + ci) + axis, 1.0}};
           };
           if (!between_x && !between_y) {
             stencil = coarse_node(wx.first, wy.first);
           } else if (between_x && !between_y) {
-            stencil = mix(i, j, axis, {{i - 1, j}, {i + 1, j}},
-                          [&](int ni, int) { return coarse_node(line_weights(nx, ni).first, wy.first); });
+            stencil = mixed_stencil(a, fine, v, {{v - 1, coarse_node(wx.first, wy.first)},
+                                                 {v + 1, coarse_node(wx.second, wy.first)}});
           } else if (!between_x) {
-            stencil = mix(i, j, axis, {{i, j - 1}, {i, j + 1}},
-                          [&](int, int nj) { return coarse_node(wx.first, line_weights(ny, nj).first); });
+            stencil = mixed_stencil(a, fine, v, {{v - nx, coarse_node(wx.first, wy.first)},
+                                                 {v + nx, coarse_node(wx.first, wy.second)}});
           } else {
-            stencil = mix(i, j, axis, {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}}, [&](int ni, int nj) {
-              return stencils[static_cast<std::size_t>(3 * (nj * nx + ni) + axis)];
-            });
+            const auto edge = [&](int u) { return stencils[static_cast<std::size_t>(3 * u + axis)]; };
+            stencil = mixed_stencil(a, fine, v, {{v - 1, edge(v - 1)}, {v + 1, edge(v + 1)},
+                                                 {v - nx, edge(v - nx)}, {v + nx, edge(v + nx)}});
           }
         }
       }
