@@ -14,15 +14,16 @@
 // added at places found once. Tearing is the explicit integrator's rule,
 // judged at x_n.
 //
-// Speed (tearing_benchmark BM_ImplicitStep/200, 10x the explicit step, the
-// seed's twist, median of 3 runs of 5 s, CPU time, shared 2-core machine at
-// load ~6, 2026-11-23): 370 ms a step (2.7 steps/s, 8.8 CG iterations, the
-// hierarchy's ~0.3 s build included) against 746 ms (1.3 steps/s, 163
-// iterations) for Jacobi CG at 1e-12; the 20 steps/s is missed
-// ~7x. A V-cycle costs ~8 matrix-vector products (two Gauss-Seidel sweeps
-// and a residual on the fine level, the coarse levels half as much again),
-// so the solve (~70 % of a step, perf) and the assembly (~17 %) are of a size: more
-// speed needs both cheaper (block 3 x 3 storage, single-precision cycle).
+// Speed (tearing_benchmark BM_ImplicitStep*/200, 10x the explicit step,
+// the seed's twist from rest, median of 3 runs of 5 s, CPU time, shared
+// 2-core machine at load ~5-6, 2026-11-23): multigrid 370 ms a step
+// (2.7 steps/s, 8.8 CG iterations, the hierarchy's ~0.3 s build included),
+// Jacobi at 1e-8 and at 1e-12 (before) in tearing_benchmark.cpp's header;
+// the 20 steps/s is missed ~7x even by multigrid. A V-cycle costs
+// ~8 matrix-vector products (two Gauss-Seidel sweeps and a residual on the
+// fine level, the coarse levels half as much again), so the solve (~70 %
+// of a step, perf) and the assembly (~17 %) are of a size: more speed
+// needs both cheaper (block 3 x 3 storage, single-precision cycle).
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
@@ -48,16 +49,25 @@ namespace repose {
 
 struct ImplicitSolverOptions {
   enum class Preconditioner { kMultigrid, kJacobi };
-  // kMultigrid, the fast path; kJacobi, the diagonal: many more iterations,
-  // no state kept between steps, the reference the fast path is tested on.
-  Preconditioner preconditioner = Preconditioner::kMultigrid;
+  // kJacobi, the diagonal: ~100-190 iterations at 1e-8, no state kept
+  // between steps; kMultigrid: ~9 iterations on the seed's twist at
+  // 200 x 200 over its first steps, twice as fast a step there, but its
+  // iterations grow as the twist turns the flaps (13 -> 43 in 140 steps at
+  // 20 x 20, Jacobi's 107 -> 138), so that over whole tears (the ladder's
+  // implicit rungs, scenes/tearing_convergence.yaml, 10x) it was slower:
+  // 50 cells 76 s against 65 s of CPU, 100 cells 713 s against ~565 s
+  // (2026-11-23, same work per tear length and peak force). Hence Jacobi
+  // stays the default; multigrid waits for a coarse space that follows the
+  // turned sheet (rigid-body modes, smoothed aggregation).
+  Preconditioner preconditioner = Preconditioner::kJacobi;
   // CG stops once |b - A dv| <= relative_tolerance |b|. In (0, 1). Why
   // 1e-8 and not 1e-12: over a 150-step tear of the seed's twist at 10x the
   // explicit step the sheet then stays within 6e-10 of its motion and the
   // grips' work within 2e-11 of the 1e-12 solve's, the same cells tear at
   // the same steps (implicit_integrator_test.cpp), while the differences
-  // the convergence experiment resolves are percents; it saves ~30 % of
-  // the iterations (10 against 14 at 200 x 200).
+  // the convergence experiment resolves are percents; it saves a third of
+  // the iterations (Jacobi ~106 against ~165, multigrid 10 against 14 at
+  // 200 x 200).
   double relative_tolerance = 1e-8;
   // kMultigrid: the hierarchy is rebuilt (~1 step's cost) from the step's
   // system at the first step, after rebuild_every_steps steps, and when a
