@@ -26,19 +26,24 @@
 // relative residual 1e-9 takes 116 iterations (2.0 steps/s), 1e-6 71
 // (2.8 steps/s). 20 steps/s needs ~10 iterations a step: a multigrid or
 // a preconditioner kept over many steps, not Jacobi CG.
-// Measured 2026-11-23 (same machine, load ~6.5; median of 3, CPU time, both
-// at 5 s a repetition): with the conjugate gradients preconditioned by a
-// multigrid V-cycle kept over up to 50 steps (models/tearing/
-// sheet_multigrid.h) and their tolerance 1e-8 instead of 1e-12 (the 1e-12
-// Jacobi solve's trajectory kept to 6e-10, implicit_integrator_test.cpp),
-// the implicit step at 200 x 200 went from 746 ms (1.3 steps/s, 163
-// iterations) to 370 ms (2.7 steps/s, 8.8 iterations, the hierarchy's
-// build included; 430 ms before the first smoothing sweep read only half
-// the matrix); 20 steps/s is still missed ~7x. At 50 x 50 43 -> 37 ms
-// (28-31 iterations: the hierarchy degrades as the twist rotates the sheet,
-// it is rebuilt 8-9 times in ~135 steps). A sparse Cholesky factor kept as
-// the preconditioner was measured first and rejected: 3.2e7 non-zeros,
-// 2.5 s (CHOLMOD) to 17 s (Eigen) to factorise, 55-100 ms per application.
+// Measured 2026-11-23 05:55 (same machine, load ~2-3; median of 3 runs of
+// 5 s each, CPU time per step at 200 x 200 / 50 x 50; "before" is main's
+// binary with --benchmark_min_time=5):
+//   before: Jacobi CG at 1e-12, warm start    658 ms (1.5 steps/s, 163 it.) / 38.3 ms
+//   BM_ImplicitStep: Jacobi CG at 1e-8        474 ms (2.1 steps/s, 109 it.) / 25.9 ms
+//   BM_ImplicitStepMultigrid: V-cycle, 1e-8   389 ms (2.6 steps/s, 8.9 it.) / 34.1 ms
+// The 20 steps/s at 200 x 200 is missed ~8x. The tolerance 1e-8
+// keeps the 1e-12 trajectory to 6e-10 of the motion, the same cells
+// tearing at the same steps (implicit_integrator_test.cpp). The multigrid
+// preconditioner (models/tearing/sheet_multigrid.h) wins only over these
+// first steps from rest: its iterations grow as the twist turns the flaps
+// and over whole tears it lost (implicit_integrator.h), so Jacobi stays the
+// default. Whole tear of scenes/tearing_convergence.yaml at 50 cells, 10x,
+// energy rule: 62.7 -> 44.8 s of CPU, work per tear length 0.5624 J/m and
+// peak force 25.72 N unchanged. A sparse Cholesky factor kept as the
+// preconditioner was measured first and rejected: 3.2e7 non-zeros in L at
+// 200 x 200, 2.5 s (CHOLMOD) to 17 s (Eigen) to factorise, 55-100 ms per
+// application, 7-14 CG iterations a step.
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=Implicit --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 

@@ -16,10 +16,10 @@
 //
 // Speed (tearing_benchmark BM_ImplicitStep*/200, 10x the explicit step,
 // the seed's twist from rest, median of 3 runs of 5 s, CPU time, shared
-// 2-core machine at load ~5-6, 2026-11-23): multigrid 370 ms a step
-// (2.7 steps/s, 8.8 CG iterations, the hierarchy's ~0.3 s build included),
-// Jacobi at 1e-8 and at 1e-12 (before) in tearing_benchmark.cpp's header;
-// the 20 steps/s is missed ~7x even by multigrid. A V-cycle costs
+// 2-core machine at load ~2-3, 2026-11-23): Jacobi at 1e-12 (before)
+// 658 ms a step, Jacobi at 1e-8 (the default) 474 ms (2.1 steps/s),
+// multigrid 389 ms (2.6 steps/s, 8.9 CG iterations, the hierarchy's
+// ~0.3 s build included); the 20 steps/s is missed ~8x. A V-cycle costs
 // ~8 matrix-vector products (two Gauss-Seidel sweeps and a residual on the
 // fine level, the coarse levels half as much again), so the solve (~70 %
 // of a step, perf) and the assembly (~17 %) are of a size: more speed
@@ -51,7 +51,7 @@ struct ImplicitSolverOptions {
   enum class Preconditioner { kMultigrid, kJacobi };
   // kJacobi, the diagonal: ~100-190 iterations at 1e-8, no state kept
   // between steps; kMultigrid: ~9 iterations on the seed's twist at
-  // 200 x 200 over its first steps, twice as fast a step there, but its
+  // 200 x 200 over its first steps, a step ~20 % faster there, but its
   // iterations grow as the twist turns the flaps (13 -> 43 in 140 steps at
   // 20 x 20, Jacobi's 107 -> 138), so that over whole tears (the ladder's
   // implicit rungs, scenes/tearing_convergence.yaml, 10x) it was slower:
