@@ -4,13 +4,26 @@
 //   (M (1 + c dt) - dt^2 K) dv = dt (f(x_n) + dt K v_n + M g - c M v_n),
 //   v_{n+1} = v_n + dv,   x_{n+1} = x_n + dt v_{n+1},
 // K = df/dx at x_n from the intact springs and acting bending terms, solved
-// by Eigen's conjugate gradients (relative residual 1e-12, Jacobi
-// preconditioner, warm-started from the last step's dv) over the free
-// degrees of freedom (held axes of gripped vertices move with their grip and
-// enter the right-hand side). The matrix is refilled each step into the
-// sparsity pattern of the whole sheet, built once (torn springs leave zeros),
-// each spring's and bending term's blocks added at places found once.
-// Tearing is the explicit integrator's rule, judged at x_n.
+// by Eigen's conjugate gradients over the free degrees of freedom (held axes
+// of gripped vertices move with their grip and enter the right-hand side),
+// preconditioned by a multigrid V-cycle over the vertex grid
+// (sheet_multigrid.h) kept over several steps, or by the diagonal (Jacobi),
+// the reference it is tested against (ImplicitSolverOptions). The matrix is
+// refilled each step into the sparsity pattern of the whole sheet, built
+// once (torn springs leave zeros), each spring's and bending term's blocks
+// added at places found once. Tearing is the explicit integrator's rule,
+// judged at x_n.
+//
+// Speed (tearing_benchmark BM_ImplicitStep*/200, 10x the explicit step,
+// the seed's twist from rest, median of 3 runs of 5 s, CPU time, shared
+// 2-core machine at load ~2-3, 2026-11-23): Jacobi at 1e-12 (before)
+// 658 ms a step, Jacobi at 1e-8 (the default) 474 ms (2.1 steps/s),
+// multigrid 389 ms (2.6 steps/s, 8.9 CG iterations, the hierarchy's
+// ~0.3 s build included); the 20 steps/s is missed ~8x. A V-cycle costs
+// ~8 matrix-vector products (two Gauss-Seidel sweeps and a residual on the
+// fine level, the coarse levels half as much again), so the solve (~70 %
+// of a step, perf) and the assembly (~17 %) are of a size: more speed
+// needs both cheaper (block 3 x 3 storage, single-precision cycle).
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
@@ -21,22 +34,61 @@
 // The grip force recorded is the one at x_n.
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 #include "models/tearing/sheet_model.h"
+#include "models/tearing/sheet_multigrid.h"
 #include "models/tearing/sheet_params.h"
 #include "models/tearing/sheet_state.h"
 
 namespace repose {
 
+struct ImplicitSolverOptions {
+  enum class Preconditioner { kMultigrid, kJacobi };
+  // kJacobi, the diagonal: ~100-190 iterations at 1e-8, no state kept
+  // between steps; kMultigrid: ~9 iterations on the seed's twist at
+  // 200 x 200 over its first steps, a step ~20 % faster there, but its
+  // iterations grow as the twist turns the flaps (13 -> 43 in 140 steps at
+  // 20 x 20, Jacobi's 107 -> 138), so that over whole tears (the ladder's
+  // implicit rungs, scenes/tearing_convergence.yaml, 10x) it was slower:
+  // 50 cells 76 s against 65 s of CPU, 100 cells 713 s against ~565 s
+  // (2026-11-23, same work per tear length and peak force). Hence Jacobi
+  // stays the default; multigrid waits for a coarse space that follows the
+  // turned sheet (rigid-body modes, smoothed aggregation).
+  Preconditioner preconditioner = Preconditioner::kJacobi;
+  // CG stops once |b - A dv| <= relative_tolerance |b|. In (0, 1). Why
+  // 1e-8 and not 1e-12: over a 150-step tear of the seed's twist at 10x the
+  // explicit step the sheet then stays within 6e-10 of its motion and the
+  // grips' work within 2e-11 of the 1e-12 solve's, the same cells tear at
+  // the same steps (implicit_integrator_test.cpp), while the differences
+  // the convergence experiment resolves are percents; it saves a third of
+  // the iterations (Jacobi ~106 against ~165, multigrid 10 against 14 at
+  // 200 x 200).
+  double relative_tolerance = 1e-8;
+  // kMultigrid: the hierarchy is rebuilt (~1 step's cost) from the step's
+  // system at the first step, after rebuild_every_steps steps, and when a
+  // solve took more than rebuild_iteration_growth times the iterations of
+  // the first solve after the last rebuild (tears and large rotations make
+  // a kept hierarchy a slower preconditioner, never a wrong one).
+  // rebuild_every_steps >= 1, rebuild_iteration_growth >= 1.
+  int rebuild_every_steps = 50;
+  double rebuild_iteration_growth = 1.5;
+  SheetMultigridOptions multigrid;
+
+  // Throws FieldError naming the field broken.
+  void validate() const;
+};
+
 class ImplicitIntegrator {
  public:
   // Refuses (InputError naming time_step_s) a step that is not positive or
   // finite. model and params must outlive the integrator.
-  ImplicitIntegrator(const SheetModel& model, const SheetParams& params, double time_step_s);
+  ImplicitIntegrator(const SheetModel& model, const SheetParams& params, double time_step_s,
+                     const ImplicitSolverOptions& solver = {});
 
   double time_step_s() const { return dt_; }
 
@@ -44,11 +96,15 @@ class ImplicitIntegrator {
   int step(SheetState* state);
   // Conjugate-gradient iterations of the last step.
   int last_iterations() const { return last_iterations_; }
+  // Times the multigrid hierarchy was built.
+  int multigrid_rebuilds() const { return rebuilds_; }
 
  private:
   // The system (into system_) over the free degrees of freedom; dv_all
   // holds the held ones.
   void assemble(const SheetState& state, const Eigen::VectorXd& dv_all, Eigen::VectorXd* rhs);
+  // dv over the free degrees of freedom: system_ dv = rhs.
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
 
   const SheetModel& model_;
   const SheetParams& params_;
@@ -56,7 +112,9 @@ class ImplicitIntegrator {
   std::vector<int> free_index_;  // per degree of freedom 3 v + a: its row, or -1 when held
   int free_count_ = 0;
   Eigen::Matrix3Xd forces_;
-  Eigen::VectorXd last_dv_;  // the last step's solution: the next solve's first guess
+  ImplicitSolverOptions solver_;
+  std::unique_ptr<SheetMultigrid> multigrid_;  // kMultigrid only
+  int steps_since_rebuild_ = 0, iterations_after_rebuild_ = 0, rebuilds_ = 0;
   // every entry the system can have (torn springs leave zeros), refilled each step
   Eigen::SparseMatrix<double> system_;
   std::vector<int> first_row_;  // per vertex: the row of its first free axis, or -1

@@ -1,0 +1,318 @@
+#include "models/tearing/sheet_multigrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "models/core/base/error.h"
+#include "models/core/config/fields.h"
+
+namespace repose {
+
+namespace {
+
+// A fine node's coarse neighbours along one grid line of n nodes: the
+// coarse nodes are the even ones and the last; a fine node between two
+// takes half of each.
+struct LineWeights {
+  int first = 0, second = -1;  // coarse node indices, second -1 when none
+  double first_weight = 1.0;
+};
+
+// the even nodes and, when it is odd, the last
+int coarse_line_count(int n) { return n <= 2 ? n : (n + 1) / 2 + (n % 2 == 0 ? 1 : 0); }
+
+LineWeights line_weights(int n, int i) {
+  if (n <= 2) return {i, -1, 1.0};  // too short to halve: every node stays
+  const int last = coarse_line_count(n) - 1;
+  if (i == n - 1) return {last, -1, 1.0};
+  if (i % 2 == 0) return {i / 2, -1, 1.0};
+  return {(i - 1) / 2, (i + 1) / 2, 0.5};
+}
+
+// One level's grid: vertices_x x vertices_y vertices, per (vertex, axis)
+// its unknown or -1.
+struct Grid {
+  int vertices_x = 0, vertices_y = 0;
+  std::vector<int> index;
+  int count = 0;
+};
+
+// Where each column's diagonal entry lies in the matrix's values.
+std::vector<int> diagonal_places(const Eigen::SparseMatrix<double>& a) {
+  std::vector<int> places(static_cast<std::size_t>(a.cols()), -1);
+  for (int i = 0; i < a.cols(); ++i) {
+    for (int k = a.outerIndexPtr()[i]; k < a.outerIndexPtr()[i + 1]; ++k) {
+      if (a.innerIndexPtr()[k] == i) places[static_cast<std::size_t>(i)] = k;
+    }
+    REPOSE_DEMAND(places[static_cast<std::size_t>(i)] >= 0);
+  }
+  return places;
+}
+
+// Forward (or backward) Gauss-Seidel sweep for a x = b; a symmetric, both
+// triangles stored column by column (rows ascending), so column i is row i;
+// diagonal from diagonal_places. from_zero: a forward sweep from x = 0,
+// which reads only the entries left of the diagonal (the rest meet zeros).
+void gauss_seidel_sweep(const Eigen::SparseMatrix<double>& a, const std::vector<int>& diagonal,
+                        const Eigen::VectorXd& b, bool forward, bool from_zero, Eigen::VectorXd* x_out) {
+  double* x = x_out->data();
+  const int n = static_cast<int>(a.cols());
+  const int* outer = a.outerIndexPtr();
+  const int* rows = a.innerIndexPtr();
+  const double* values = a.valuePtr();
+  for (int step = 0; step < n; ++step) {
+    const int i = forward ? step : n - 1 - step;
+    // row i of a x, the diagonal included, in four partial sums: one sum
+    // chains every add on the last (measured ~1.5x slower)
+    double sum[4] = {0.0, 0.0, 0.0, 0.0};
+    const int end = from_zero ? diagonal[static_cast<std::size_t>(i)] : outer[i + 1];
+    int k = outer[i];
+    for (; k + 4 <= end; k += 4) {
+      for (int u = 0; u < 4; ++u) sum[u] += values[k + u] * x[rows[k + u]];
+    }
+    for (; k < end; ++k) sum[0] += values[k] * x[rows[k]];
+    const double ax = (sum[0] + sum[1]) + (sum[2] + sum[3]);
+    x[i] += (b[i] - ax) / values[diagonal[static_cast<std::size_t>(i)]];
+  }
+}
+
+// 1 / sum_j |a_ij| per row: the l1-Jacobi smoother's diagonal, which
+// is at least a in the SPD sense, so its sweeps converge without a weight.
+Eigen::VectorXd inverse_l1_rows(const Eigen::SparseMatrix<double>& a) {
+  Eigen::VectorXd inverse(a.cols());
+  for (int i = 0; i < a.cols(); ++i) {
+    double sum = 0.0;
+    for (int k = a.outerIndexPtr()[i]; k < a.outerIndexPtr()[i + 1]; ++k) sum += std::abs(a.valuePtr()[k]);
+    REPOSE_DEMAND(sum > 0.0);
+    inverse[i] = 1.0 / sum;
+  }
+  return inverse;
+}
+
+}  // namespace
+
+struct SheetMultigrid::Level {
+  Eigen::SparseMatrix<double> interpolation;  // finer x this level's unknowns
+  Eigen::SparseMatrix<double> restriction;    // its transpose
+  Eigen::SparseMatrix<double> matrix;         // P^T A_finer P
+  std::vector<int> diagonal;                  // diagonal_places(matrix)
+  Eigen::VectorXd inverse_l1;                 // inverse_l1_rows(matrix)
+  Grid grid;
+};
+
+void SheetMultigridOptions::validate() const {
+  if (coarsest_unknowns < 1) {
+    throw FieldError("coarsest_unknowns", "a count >= 1", fmt::format("{}", coarsest_unknowns));
+  }
+  if (smoothing_sweeps < 1) {
+    throw FieldError("smoothing_sweeps", "a count >= 1", fmt::format("{}", smoothing_sweeps));
+  }
+}
+
+SheetMultigrid::SheetMultigrid(int vertices_x, int vertices_y, std::vector<int> free_index, int free_count,
+                               const SheetMultigridOptions& options)
+    : options_(options), vertices_x_(vertices_x), vertices_y_(vertices_y), free_count_(free_count),
+      free_index_(std::move(free_index)) {
+  options_.validate();
+  REPOSE_DEMAND(vertices_x >= 1 && vertices_y >= 1);
+  REPOSE_DEMAND(static_cast<int>(free_index_.size()) == 3 * vertices_x * vertices_y);
+}
+
+SheetMultigrid::~SheetMultigrid() = default;
+
+namespace {
+
+// A fine unknown's interpolation: coarse candidates (3 (J X + I) + axis)
+// and weights.
+using Stencil = std::vector<std::pair<int, double>>;
+
+// How strongly vertex u pulls on vertex v: minus the trace of their block
+// over the axes both have free (springs and bending couple neighbours
+// negatively), 0 across torn springs; -1 when no axis is free in both.
+double coupling(const Eigen::SparseMatrix<double>& a, const Grid& grid, int u, int v) {
+  double sum = 0.0;
+  bool any = false;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int row = grid.index[static_cast<std::size_t>(3 * u + axis)];
+    const int col = grid.index[static_cast<std::size_t>(3 * v + axis)];
+    if (row < 0 || col < 0) continue;
+    any = true;
+    sum -= a.coeff(row, col);
+  }
+  return any ? std::max(0.0, sum) : -1.0;
+}
+
+// The neighbours' stencils (neighbour vertex, its stencil) mixed by the
+// coupling of `vertex` to each; a held neighbour pulls as hard as the
+// others on average; empty when nothing couples (a vertex left alone by
+// tears: its mass only, which the smoother handles).
+Stencil mixed_stencil(const Eigen::SparseMatrix<double>& a, const Grid& fine, int vertex,
+                      const std::vector<std::pair<int, Stencil>>& neighbours) {
+  double known = 0.0;
+  int known_count = 0;
+  std::vector<double> strength;
+  for (const auto& neighbour : neighbours) {
+    strength.push_back(coupling(a, fine, vertex, neighbour.first));
+    if (strength.back() >= 0.0) known += strength.back(), ++known_count;
+  }
+  double total = 0.0;
+  Stencil mixed;
+  for (std::size_t n = 0; n < neighbours.size(); ++n) {
+    const double w = strength[n] >= 0.0 ? strength[n] : (known_count > 0 ? known / known_count : 1.0);
+    total += w;
+    for (const auto& [col, weight] : neighbours[n].second) mixed.emplace_back(col, w * weight);
+  }
+  if (!(total > 0.0)) return {};
+  for (auto& entry : mixed) entry.second /= total;
+  return mixed;
+}
+
+// Per fine unknown, its interpolation from the coarse grid of `fine` (with
+// coarse_vertices_x vertices a line), candidates not yet compacted. A fine node on a coarse line
+// takes its two coarse neighbours weighted by its coupling to each; a node
+// in the middle of a coarse cell takes its four edge neighbours' stencils so
+// weighted. Held neighbours count in the weights' sum (they pull towards
+// zero correction), torn springs couple nothing, so a tear does not smear
+// the coarse correction across it; on an intact uniform sheet it is bilinear.
+std::vector<Stencil> coarse_stencils(const Grid& fine, const Eigen::SparseMatrix<double>& a, int coarse_vertices_x) {
+  const int nx = fine.vertices_x, ny = fine.vertices_y;
+  const auto row_of = [&](int i, int j, int axis) { return fine.index[static_cast<std::size_t>(3 * (j * nx + i) + axis)]; };
+  std::vector<Stencil> stencils(static_cast<std::size_t>(3 * nx * ny));
+  // pass 0 fills the nodes on a coarse line, pass 1 the cell middles
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int j = 0; j < ny; ++j) {
+      const LineWeights wy = line_weights(ny, j);
+      for (int i = 0; i < nx; ++i) {
+        const LineWeights wx = line_weights(nx, i);
+        const bool between_x = wx.second >= 0, between_y = wy.second >= 0;
+        if ((between_x && between_y) != (pass == 1)) continue;
+        for (int axis = 0; axis < 3; ++axis) {
+          if (row_of(i, j, axis) < 0) continue;
+          const int v = j * nx + i;
+          Stencil& stencil = stencils[static_cast<std::size_t>(3 * v + axis)];
+          const auto coarse_node = [&](int ci, int cj) {
+            return Stencil{{3 * (cj * coarse_vertices_x + ci) + axis, 1.0}};
+          };
+          if (!between_x && !between_y) {
+            stencil = coarse_node(wx.first, wy.first);
+          } else if (between_x && !between_y) {
+            stencil = mixed_stencil(a, fine, v, {{v - 1, coarse_node(wx.first, wy.first)},
+                                                 {v + 1, coarse_node(wx.second, wy.first)}});
+          } else if (!between_x) {
+            stencil = mixed_stencil(a, fine, v, {{v - nx, coarse_node(wx.first, wy.first)},
+                                                 {v + nx, coarse_node(wx.first, wy.second)}});
+          } else {
+            const auto edge = [&](int u) { return stencils[static_cast<std::size_t>(3 * u + axis)]; };
+            stencil = mixed_stencil(a, fine, v, {{v - 1, edge(v - 1)}, {v + 1, edge(v + 1)},
+                                                 {v - nx, edge(v - nx)}, {v + nx, edge(v + nx)}});
+          }
+        }
+      }
+    }
+  }
+  return stencils;
+}
+
+// The interpolation from the coarse grid of `fine` into it, and that coarse
+// grid (unknowns no fine row reaches dropped).
+std::pair<Eigen::SparseMatrix<double>, Grid> interpolation_from_coarse(const Grid& fine,
+                                                                       const Eigen::SparseMatrix<double>& a) {
+  Grid coarse;
+  coarse.vertices_x = coarse_line_count(fine.vertices_x);
+  coarse.vertices_y = coarse_line_count(fine.vertices_y);
+  const std::vector<Stencil> stencils = coarse_stencils(fine, a, coarse.vertices_x);
+  // compact the coarse unknowns some fine row reaches
+  const int candidates = 3 * coarse.vertices_x * coarse.vertices_y;
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<char> reached(static_cast<std::size_t>(candidates), 0);
+  for (std::size_t k = 0; k < stencils.size(); ++k) {
+    for (const auto& [col, weight] : stencils[k]) {
+      if (weight == 0.0) continue;
+      triplets.emplace_back(fine.index[k], col, weight);
+      reached[static_cast<std::size_t>(col)] = 1;
+    }
+  }
+  coarse.index.assign(static_cast<std::size_t>(candidates), -1);
+  for (int k = 0; k < candidates; ++k) {
+    if (reached[static_cast<std::size_t>(k)]) coarse.index[static_cast<std::size_t>(k)] = coarse.count++;
+  }
+  for (Eigen::Triplet<double>& t : triplets) {
+    t = Eigen::Triplet<double>(t.row(), coarse.index[static_cast<std::size_t>(t.col())], t.value());
+  }
+  Eigen::SparseMatrix<double> p(fine.count, coarse.count);
+  p.setFromTriplets(triplets.begin(), triplets.end());
+  p.makeCompressed();
+  return {std::move(p), std::move(coarse)};
+}
+
+}  // namespace
+
+void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
+  REPOSE_DEMAND(system.rows() == free_count_ && system.cols() == free_count_);
+  levels_.clear();
+  fine_diagonal_ = diagonal_places(system);
+  fine_inverse_l1_ = inverse_l1_rows(system);
+  Grid grid{vertices_x_, vertices_y_, free_index_, free_count_};
+  const Eigen::SparseMatrix<double>* matrix = &system;
+  while (grid.count > options_.coarsest_unknowns && (grid.vertices_x > 2 || grid.vertices_y > 2)) {
+    auto level = std::make_unique<Level>();
+    std::tie(level->interpolation, level->grid) = interpolation_from_coarse(grid, *matrix);
+    level->restriction = level->interpolation.transpose();
+    const Eigen::SparseMatrix<double> product = *matrix * level->interpolation;
+    level->matrix = level->restriction * product;
+    level->matrix.makeCompressed();
+    level->diagonal = diagonal_places(level->matrix);
+    level->inverse_l1 = inverse_l1_rows(level->matrix);
+    grid = level->grid;
+    levels_.push_back(std::move(level));
+    matrix = &levels_.back()->matrix;
+  }
+  coarsest_ = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>(*matrix);
+  REPOSE_DEMAND(coarsest_->info() == Eigen::Success);
+}
+
+bool SheetMultigrid::built() const { return coarsest_ != nullptr; }
+
+int SheetMultigrid::level_count() const { return 1 + static_cast<int>(levels_.size()); }
+
+Eigen::VectorXd SheetMultigrid::apply(const Eigen::SparseMatrix<double>& system, const Eigen::VectorXd& r) const {
+  REPOSE_DEMAND(built() && system.rows() == free_count_ && r.size() == free_count_);
+  return cycle(0, system, r);
+}
+
+void SheetMultigrid::update_fine(const Eigen::SparseMatrix<double>& system) {
+  REPOSE_DEMAND(built() && system.rows() == free_count_);
+  fine_inverse_l1_ = inverse_l1_rows(system);
+}
+
+Eigen::VectorXd SheetMultigrid::cycle(std::size_t level, const Eigen::SparseMatrix<double>& matrix,
+                                      const Eigen::VectorXd& r) const {
+  if (level == levels_.size()) return coarsest_->solve(r);
+  const Level& coarse = *levels_[level];
+  Eigen::VectorXd x;
+  if (options_.smoother == SheetMultigridOptions::Smoother::kGaussSeidel) {
+    const std::vector<int>& diagonal = level == 0 ? fine_diagonal_ : levels_[level - 1]->diagonal;
+    x = Eigen::VectorXd::Zero(r.size());
+    for (int s = 0; s < options_.smoothing_sweeps; ++s) gauss_seidel_sweep(matrix, diagonal, r, true, s == 0, &x);
+    // a^T x = a x (symmetric), which Eigen runs as a dot product per column
+    const Eigen::VectorXd residual = r - matrix.transpose() * x;
+    x += coarse.interpolation * cycle(level + 1, coarse.matrix, coarse.restriction * residual);
+    for (int s = 0; s < options_.smoothing_sweeps; ++s) gauss_seidel_sweep(matrix, diagonal, r, false, false, &x);
+    return x;
+  }
+  const Eigen::VectorXd& inverse_l1 = level == 0 ? fine_inverse_l1_ : levels_[level - 1]->inverse_l1;
+  x = inverse_l1.cwiseProduct(r);  // the first sweep from x = 0
+  Eigen::VectorXd residual = r - matrix * x;
+  for (int s = 1; s < options_.smoothing_sweeps; ++s) {
+    x += inverse_l1.cwiseProduct(residual);
+    residual = r - matrix * x;
+  }
+  x += coarse.interpolation * cycle(level + 1, coarse.matrix, coarse.restriction * residual);
+  for (int s = 0; s < options_.smoothing_sweeps; ++s) x += inverse_l1.cwiseProduct(r - matrix * x);
+  return x;
+}
+
+}  // namespace repose
