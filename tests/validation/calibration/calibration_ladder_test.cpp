@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -71,6 +72,24 @@ void write_bullet_run(const fs::path& dir, double depth_m) {
       << R"({"solver": "bullet", "run": {"solver": "bullet", "measures": {}, "wall_s": 3.0, "cpu_s": 2.0}})";
 }
 
+// The ladder of a calibration whose reference is seeds seed1 and seed2 under
+// `root` (written by the caller) on the indentation scene with a dem section,
+// and whose ladder lists the run folders `rungs` under `root`.
+Ladder ladder_over(const fs::path& root, const std::vector<std::string>& rungs) {
+  const std::string source = std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration/scenes/indent.yaml";
+  std::ifstream in(source);
+  std::ofstream(root / "indent_dem.yaml") << in.rdbuf() << "dem: {grain_radius_m: 0.002, time_step_s: 1.0e-5}\n";
+  const std::string scene = (root / "indent_dem.yaml").string();
+  std::string yaml = fmt::format(
+      "scenes:\n  - scene: {0}\n    reference: {{data: [{1}, {2}]}}\n    observables: [{{kind: height_field}}]\n"
+      "parameters:\n  - {{name: ground.sand.alpha, initial: 0.7}}\n"
+      "ladder:\n  heuristic_cell_sizes_m: [0.008]\n  multires: false\n  timing_repeats: 1\n  references:\n",
+      scene, (root / "seed1").string(), (root / "seed2").string());
+  for (const std::string& rung : rungs) yaml += fmt::format("    - {{scene: {}, data: {}}}\n", scene, (root / rung).string());
+  const CalibrationProblem problem(load_calibration_from_string(yaml, (root / "inline.yaml").string()), solver_registry());
+  return measure_ladder(problem, problem.initial_values());
+}
+
 // A reference of two seeds: a LIGGGHTS rung that is one of them is compared
 // with the other (not with a mean that holds it), so its error is the seeds'
 // difference; another run is compared with their mean; the ladder carries
@@ -81,18 +100,7 @@ TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
   write_run(root / "seed1", 0.004);
   write_run(root / "seed2", 0.006);
   write_run(root / "other", 0.005);
-  const std::string source = std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration/scenes/indent.yaml";
-  std::ifstream in(source);
-  std::ofstream(root / "indent_dem.yaml") << in.rdbuf() << "dem: {grain_radius_m: 0.002, time_step_s: 1.0e-5}\n";
-  const std::string scene = (root / "indent_dem.yaml").string();
-  const std::string yaml = fmt::format(
-      "scenes:\n  - scene: {0}\n    reference: {{data: [{1}, {2}]}}\n    observables: [{{kind: height_field}}]\n"
-      "parameters:\n  - {{name: ground.sand.alpha, initial: 0.7}}\n"
-      "ladder:\n  heuristic_cell_sizes_m: [0.008]\n  multires: false\n  timing_repeats: 1\n"
-      "  references:\n    - {{scene: {0}, data: {1}}}\n    - {{scene: {0}, data: {3}}}\n",
-      scene, (root / "seed1").string(), (root / "seed2").string(), (root / "other").string());
-  const CalibrationProblem problem(load_calibration_from_string(yaml, (root / "inline.yaml").string()), solver_registry());
-  const Ladder ladder = measure_ladder(problem, problem.initial_values());
+  const Ladder ladder = ladder_over(root, {"seed1", "other"});
   // Δh of the seeds differ by 2 mm on 16 of 256 cells; "other" differs from their mean by 0 mm
   const double seeds_apart = 0.002 * 0.25;
   ASSERT_TRUE(ladder.noise_floor_m.has_value());
@@ -121,18 +129,7 @@ TEST(CalibrationLadder, AnotherEnginesRunIsARungScoredAgainstTheReference) {
   write_run(root / "seed1", 0.004);
   write_run(root / "seed2", 0.006);
   write_bullet_run(root / "bullet", 0.007);
-  const std::string source = std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration/scenes/indent.yaml";
-  std::ifstream in(source);
-  std::ofstream(root / "indent_dem.yaml") << in.rdbuf() << "dem: {grain_radius_m: 0.002, time_step_s: 1.0e-5}\n";
-  const std::string scene = (root / "indent_dem.yaml").string();
-  const std::string yaml = fmt::format(
-      "scenes:\n  - scene: {0}\n    reference: {{data: [{1}, {2}]}}\n    observables: [{{kind: height_field}}]\n"
-      "parameters:\n  - {{name: ground.sand.alpha, initial: 0.7}}\n"
-      "ladder:\n  heuristic_cell_sizes_m: [0.008]\n  multires: false\n  timing_repeats: 1\n"
-      "  references:\n    - {{scene: {0}, data: {3}}}\n",
-      scene, (root / "seed1").string(), (root / "seed2").string(), (root / "bullet").string());
-  const CalibrationProblem problem(load_calibration_from_string(yaml, (root / "inline.yaml").string()), solver_registry());
-  const Ladder ladder = measure_ladder(problem, problem.initial_values());
+  const Ladder ladder = ladder_over(root, {"bullet"});
   const LadderRung& bullet = ladder.rungs.back();
   EXPECT_EQ(bullet.kind, "bullet");
   EXPECT_EQ(bullet.label, "Bullet d = 4 mm");
