@@ -75,6 +75,7 @@ struct Driven {
   dBodyID body = nullptr;
   dGeomID geom = nullptr;
   double mass_kg = 0.0;
+  Eigen::Vector3d torque_n_m = Eigen::Vector3d::Zero();  // dynamic.torque_n_m, added before every ODE step
   double impulse_n_s = 0.0;  // vertical impulse of the field on the body over the current ground step
   double impact_energy_j = 0.0;  // downward kinetic energy at the field contacts that began this ground step
   bool touching = false;         // had a field contact in the last ODE step
@@ -205,6 +206,7 @@ void FreeBodyDrive::Impl::add_body(int object) {
   d.object = object;
   REPOSE_DEMAND(body_shape(o, &d.shape) && "check_free_bodies refuses other shapes");
   d.mass_kg = o.mass_kg();
+  d.torque_n_m = o.dynamic->torque_n_m;
   d.body = dBodyCreate(world);
   dMass mass;
   const BodyShape& s = d.shape;
@@ -274,6 +276,8 @@ void FreeBodyDrive::Impl::ode_step(double dt_s) {
   });
   std::vector<double> falling_m_s(bodies.size());
   for (std::size_t k = 0; k < bodies.size(); ++k) falling_m_s[k] = std::max(0.0, -dBodyGetLinearVel(bodies[k].body)[2]);
+  // ODE zeroes the accumulators after each step
+  for (const Driven& d : bodies) dBodyAddTorque(d.body, d.torque_n_m.x(), d.torque_n_m.y(), d.torque_n_m.z());
   dRandSetSeed(random_seed);
   dWorldQuickStep(world, dt_s);
   random_seed = dRandGetSeed();
@@ -386,13 +390,15 @@ std::vector<FreeBodyReport> FreeBodyDrive::reports() const {
   for (const Driven& d : impl_->bodies) {
     const Pose pose = pose_of(d.body);
     const dReal* v = dBodyGetLinearVel(d.body);
+    const ObjectSpec& object = impl_->model.objects[static_cast<std::size_t>(d.object)];
     FreeBodyReport r;
-    r.name = impl_->model.objects[static_cast<std::size_t>(d.object)].name;
+    r.name = object.name;
     r.mass_kg = d.mass_kg;
     r.weight_n = d.mass_kg * impl_->model.free_bodies.gravity_m_s2;
     r.resting_depth_m = impl_->initial.sample(pose.position_m.x(), pose.position_m.y()) -
                         lowest_z(d.shape, pose.position_m, pose.orientation.toRotationMatrix());
     r.final_speed_m_s = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    r.travel_m = (pose.position_m - object.keyframes.front().pose.position_m).head<2>().norm();
     r.final_load_n = d.load_n;
     r.max_load_n = d.max_load_n;
     r.bearing_sinkage_m = d.bearing_sinkage_m;

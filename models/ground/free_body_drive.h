@@ -24,6 +24,11 @@
 // so without bearing (law: off) a body rests on the field and leaves no
 // imprint; the ground yields only where the bearing rule presses.
 //
+// A body's dynamic.torque_n_m is added in ODE before every ODE step: a wheel
+// (a cylinder, axis horizontal) under a torque drives itself over the field
+// on the contacts' Coulomb friction, sinking to its load's bearing depth
+// under way and leaving its rut.
+//
 // Shapes: ODE's sphere, box, cylinder (axis z) and capsule, with the
 // scene's scale where the primitive stays one (as validation/rigid does);
 // meshes are refused (ODE's triangle mesh against a height field is not
@@ -50,6 +55,7 @@ struct FreeBodyReport {
   double weight_n = 0.0;
   double resting_depth_m = 0.0;    // lowest point below the initial surface at the body's centre (>0: sunk)
   double final_speed_m_s = 0.0;
+  double travel_m = 0.0;           // horizontal distance from the initial position to the final one
   double final_load_n = 0.0;       // mean vertical force of the field on the body over the last step
   double max_load_n = 0.0;         // largest step-mean force (the impact's)
   double bearing_sinkage_m = 0.0;  // Bekker's static sinkage for the last step's load (at most the weight)

@@ -46,6 +46,7 @@ void add_measures(Run& run, const GroundRun& g, const Scene& scene) {
     const std::string key = "free_bodies." + b.name + ".";
     run.set(key + "resting_depth_m", b.resting_depth_m, "m");
     run.set(key + "final_speed_m_s", b.final_speed_m_s, "m/s");
+    run.set(key + "travel_m", b.travel_m, "m");
     run.set(key + "max_force_n", b.max_load_n, "N");
     run.set(key + "final_force_n", b.final_load_n, "N");
     run.set(key + "weight_n", b.weight_n, "N");

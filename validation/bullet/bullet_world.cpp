@@ -88,6 +88,7 @@ class BulletWorld final : public RigidWorld {
   std::vector<btRigidBody*> grains_;
   std::vector<btRigidBody*> objects_;
   std::vector<btRigidBody*> free_;
+  std::vector<btVector3> free_torque_n_m_;  // per free body, applied before every step
 };
 
 BulletWorld::BulletWorld(const RigidWorldSpec& spec, const BulletOptions& options)
@@ -153,6 +154,7 @@ void BulletWorld::add_free_body(const ObjectSpec& object, const RigidContactLaw&
   body->setLinearVelocity(bt(d.velocity_m_s));
   body->setAngularVelocity(bt(d.angular_velocity_rad_s));
   free_.push_back(body);
+  free_torque_n_m_.push_back(bt(d.torque_n_m));
 }
 
 btCollisionShape* BulletWorld::free_body_shape(const ObjectSpec& object) {
@@ -226,6 +228,8 @@ void BulletWorld::set_object_poses(const std::vector<Pose>& end_of_step) {
 
 void BulletWorld::step() {
   set_globals();
+  // Bullet clears applied forces and torques at the end of stepSimulation
+  for (std::size_t k = 0; k < free_.size(); ++k) free_[k]->applyTorque(free_torque_n_m_[k]);
   // maxSubSteps 0: exactly one step of this size, no time accumulator
   world_.stepSimulation(options_.rigid.time_step_s, 0, options_.rigid.time_step_s);
 }

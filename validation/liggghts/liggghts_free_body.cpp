@@ -38,6 +38,12 @@ void check_liggghts_free_bodies(const Scene& scene) {
           "kinematically only; a multisphere clump would stand in); run it with --solver bullet or ode",
           k, o.name, shape_name(o.shape), uniform ? "" : " scaled unevenly"));
     }
+    if (!o.dynamic->torque_n_m.isZero()) {
+      throw InputError(fmt::format(
+          "LIGGGHTS: objects[{}] '{}': dynamic.torque_n_m is not applied in LIGGGHTS here (its free sphere is one "
+          "grain, and LIGGGHTS has no per-atom torque fix); run it with --solver bullet, ode or ground",
+          k, o.name));
+    }
   }
 }
 

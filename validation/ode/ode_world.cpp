@@ -68,6 +68,7 @@ class OdeWorld final : public RigidWorld {
   std::vector<dBodyID> objects_;
   std::vector<Pose> object_targets_;
   std::vector<dBodyID> free_;
+  std::vector<Eigen::Vector3d> free_torque_n_m_;  // per free body, added before every step
   double grain_mass_kg_ = 0.0;  // of the largest grain: sizes a free body's contact softness
   std::vector<dTriMeshDataID> mesh_data_;
   std::vector<std::vector<double>> mesh_vertices_;
@@ -180,6 +181,7 @@ void OdeWorld::add_free_body(const ObjectSpec& object, const RigidContactLaw& la
   dBodySetLinearVel(body, d.velocity_m_s.x(), d.velocity_m_s.y(), d.velocity_m_s.z());
   dBodySetAngularVel(body, d.angular_velocity_rad_s.x(), d.angular_velocity_rad_s.y(), d.angular_velocity_rad_s.z());
   free_.push_back(body);
+  free_torque_n_m_.push_back(d.torque_n_m);
 }
 
 OdeWorld::~OdeWorld() {
@@ -261,6 +263,11 @@ void OdeWorld::set_object_poses(const std::vector<Pose>& end_of_step) {
 
 void OdeWorld::step() {
   dRandSetSeed(random_seed_);
+  // ODE zeroes each body's force and torque accumulators after a step
+  for (std::size_t k = 0; k < free_.size(); ++k) {
+    const Eigen::Vector3d& t = free_torque_n_m_[k];
+    dBodyAddTorque(free_[k], t.x(), t.y(), t.z());
+  }
   dSpaceCollide(space_, this, &OdeWorld::near_callback);
   dWorldQuickStep(world_, options_.rigid.time_step_s);
   dJointGroupEmpty(contacts_);

@@ -17,7 +17,8 @@ void validate(const DynamicBody& d) {
   const std::pair<const char*, const Eigen::Vector3d*> vectors[] = {{"position_m", &d.position_m},
                                                                     {"orientation_deg", &d.orientation_deg},
                                                                     {"velocity_m_s", &d.velocity_m_s},
-                                                                    {"angular_velocity_rad_s", &d.angular_velocity_rad_s}};
+                                                                    {"angular_velocity_rad_s", &d.angular_velocity_rad_s},
+                                                                    {"torque_n_m", &d.torque_n_m}};
   for (const auto& [key, v] : vectors) {
     if (!v->allFinite()) throw FieldError(key, "three finite numbers", fmt::format("[{}, {}, {}]", v->x(), v->y(), v->z()));
   }

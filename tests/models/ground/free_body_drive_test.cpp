@@ -2,7 +2,7 @@
 // sinks to Bekker's sinkage for its weight (heavier deeper), the ledger
 // balances, runs repeat bit for bit, a dropped box leaves the imprint of its
 // footprint, and without bearing it rests on the field as the heuristic
-// alone leaves it; a rolling wheel leaves its track. Meshes are refused
+// alone leaves it; a rolling wheel leaves its track, and a torque drives it. Meshes are refused
 // naming the object.
 #include "models/ground/free_body_drive.h"
 
@@ -108,8 +108,10 @@ TEST(FreeBodyDrive, DroppedBoxLeavesTheImprintOfItsFootprint) {
   expect_balanced(g.ledger, g.final_volume_m3);
 }
 
-TEST(FreeBodyDrive, RollingWheelLeavesItsTrack) {
-  // a wheel (r 5 cm, 4 cm wide, 0.5 kg), axis along y, set down rolling along +x at 1 m/s
+// A wheel (r 5 cm, 4 cm wide, mass_kg), axis along y, its lowest point 1 um
+// into the bed at x = x0_m, with a torque about y (N m) and an initial
+// rolling speed along +x; steps of 1/60 s.
+Scene wheel_scene(double mass_kg, double x0_m, double torque_n_m, double speed_m_s, double duration_s) {
   ObjectSpec wheel;
   wheel.name = "wheel";
   wheel.shape = ObjectSpec::Shape::kCylinder;
@@ -117,23 +119,56 @@ TEST(FreeBodyDrive, RollingWheelLeavesItsTrack) {
   wheel.half_height_m = 0.02;
   wheel.body = make_cylinder(0.05, 0.02);
   wheel.dynamic = DynamicBody{};
-  wheel.dynamic->mass_kg = 0.5;
-  wheel.dynamic->velocity_m_s = Eigen::Vector3d(1.0, 0.0, 0.0);
-  wheel.dynamic->angular_velocity_rad_s = Eigen::Vector3d(0.0, 1.0 / 0.05, 0.0);
-  Keyframe start = at(0.0, -0.1, 0.0, kBed + 0.05);
+  wheel.dynamic->mass_kg = mass_kg;
+  wheel.dynamic->velocity_m_s = Eigen::Vector3d(speed_m_s, 0.0, 0.0);
+  wheel.dynamic->angular_velocity_rad_s = Eigen::Vector3d(0.0, speed_m_s / 0.05, 0.0);
+  wheel.dynamic->torque_n_m = Eigen::Vector3d(0.0, torque_n_m, 0.0);
+  Keyframe start = at(0.0, x0_m, 0.0, kBed + 0.05 - 1e-6);
   start.pose.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitX()));
   wheel.keyframes = {start};
   Scene scene = flat_scene(centred_grid(80, 80, kCell), kBed, sand(), {wheel}, 1);
-  scene.time = TimeSpec{1.0 / 60.0, 0.4};
-  const GroundRun g = run(scene);
-  const FreeBodyReport& b = g.free_bodies[0];
-  EXPECT_GT(b.final_position_m.x(), 0.0) << "it rolled";
-  // the track: lowered along the path on the wheel's line, untouched beside it
-  for (double x = -0.08; x < b.final_position_m.x() - 0.03; x += 0.02) {
+  scene.time = TimeSpec{1.0 / 60.0, duration_s};
+  return scene;
+}
+
+// The track: lowered along the path on the wheel's line, untouched beside it.
+void expect_track(const GroundRun& g, double from_x_m, double to_x_m) {
+  for (double x = from_x_m; x < to_x_m; x += 0.02) {
     EXPECT_LT(g.final_height.sample(x, 0.0), kBed - 5e-4) << x;
     EXPECT_GE(g.final_height.sample(x, 0.1), kBed - 1e-9) << x;
   }
+}
+
+TEST(FreeBodyDrive, RollingWheelLeavesItsTrack) {
+  const GroundRun g = run(wheel_scene(0.5, -0.1, 0.0, 1.0, 0.4));
+  const FreeBodyReport& b = g.free_bodies[0];
+  EXPECT_GT(b.final_position_m.x(), 0.0) << "it rolled";
+  expect_track(g, -0.08, b.final_position_m.x() - 0.03);
   expect_balanced(g.ledger, g.final_volume_m3);
+}
+
+// A 2 kg wheel set down at rest under 0.3 N m: rolling without slip needs a
+// friction force of (tau / r) / 1.5 = 4 N, within the contact's limit
+// (0.5 m g = 9.8 N), so it rolls, and on
+// a rigid floor would reach a = (tau / r) / (m + I / r^2) = 2 m/s^2, 0.16 m in
+// 0.4 s; climbing out of its own rut costs most of that (measured: 4 cm).
+// It sinks under way to the bearing depth of its load and leaves that rut
+// behind it; the opposite torque drives it the opposite way as far (the
+// scene's mirror symmetry about x = 0, up to ODE's height-field triangles,
+// which split each cell along one diagonal: measured 5 %).
+TEST(FreeBodyDrive, AWheelUnderATorqueDrivesItselfAlongAndLeavesItsRut) {
+  const GroundRun forward = run(wheel_scene(2.0, 0.0, 0.3, 0.0, 0.4));
+  const GroundRun backward = run(wheel_scene(2.0, 0.0, -0.3, 0.0, 0.4));
+  const FreeBodyReport &f = forward.free_bodies[0], &b = backward.free_bodies[0];
+  EXPECT_GT(f.final_position_m.x(), 0.02) << "the torque drove it along +x";
+  EXPECT_LT(f.final_position_m.x(), 0.16 + 1e-3) << "no faster than on a rigid floor";
+  EXPECT_NEAR(b.final_position_m.x(), -f.final_position_m.x(), 0.1 * f.final_position_m.x());
+  EXPECT_NEAR(f.final_position_m.y(), 0.0, 1e-3) << "straight on";
+  EXPECT_NEAR(f.travel_m, f.final_position_m.head<2>().norm(), 1e-12);
+  EXPECT_GT(f.bearing_sinkage_m, 1e-3);
+  EXPECT_NEAR(f.resting_depth_m / f.bearing_sinkage_m, 1.0, 0.1) << "under way at its load's bearing depth";
+  expect_track(forward, 0.02, f.final_position_m.x() - 0.03);
+  expect_balanced(forward.ledger, forward.final_volume_m3);
 }
 
 TEST(FreeBodyDrive, RepeatsBitForBit) {

@@ -66,5 +66,7 @@ TEST(BulletWorld, AFreeMeshDroppedOnTheFloorLandsOnItAsItsConvexHull) {
   expect_free_mesh_lands_on_the_floor(bullet_engine({}), false);
 }
 
+TEST(BulletWorld, ATorqueSpinsUpAFreeBodyAsTorqueOverInertia) { expect_torque_spins_up_a_free_body(bullet_engine({})); }
+
 }  // namespace
 }  // namespace repose

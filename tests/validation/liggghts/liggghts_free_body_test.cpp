@@ -68,6 +68,19 @@ TEST(LiggghtsFreeBody, AFreeBoxIsRefusedInOneLineNamingTheObject) {
   }
 }
 
+TEST(LiggghtsFreeBody, ATorqueIsRefusedInOneLineNamingTheKey) {
+  Scene scene = scene_with_free_sphere(ObjectSpec::Shape::kSphere);
+  scene.objects[0].dynamic->torque_n_m = Eigen::Vector3d(0.0, 1.0, 0.0);
+  try {
+    run_script(scene);
+    FAIL() << "a torque was accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.find('\n'), std::string::npos);
+    EXPECT_NE(m.find("objects[0] 'ball': dynamic.torque_n_m"), std::string::npos) << m;
+  }
+}
+
 class LiggghtsFreeBodyRun : public test_support::LiggghtsTest {};
 
 TEST_F(LiggghtsFreeBodyRun, ADroppedSphereComesToRestInTheBedHeldByTheGrains) {

@@ -65,5 +65,7 @@ TEST(OdeWorld, AFreeMeshDroppedOnTheFloorComesToRestFlatOnIt) {
   expect_free_mesh_lands_on_the_floor(ode_engine({}), true);
 }
 
+TEST(OdeWorld, ATorqueSpinsUpAFreeBodyAsTorqueOverInertia) { expect_torque_spins_up_a_free_body(ode_engine({})); }
+
 }  // namespace
 }  // namespace repose

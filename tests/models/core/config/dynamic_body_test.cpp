@@ -42,6 +42,19 @@ TEST(DynamicBody, ValidateNamesTheFieldThatBreaksARule) {
   d.density_kg_m3 = 0.0;
   d.velocity_m_s.x() = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(field_of(d), "velocity_m_s");
+  d.velocity_m_s.x() = 0.0;
+  d.torque_n_m.y() = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(field_of(d), "torque_n_m");
+}
+
+TEST(DynamicBody, AWheelsTorqueIsReadInWorldAxes) {
+  const Scene s = load(R"(  - {name: wheel, shape: cylinder, radius_m: 0.1, half_height_m: 0.05,
+       dynamic: {mass_kg: 5, position_m: [0, 0, 0.2], orientation_deg: [90, 0, 0], torque_n_m: [0, 2, 0]}})");
+  EXPECT_EQ(s.objects.at(0).dynamic->torque_n_m, Eigen::Vector3d(0, 2, 0));
+  EXPECT_EQ(load("  - {shape: sphere, radius_m: 0.1, dynamic: {mass_kg: 1, position_m: [0, 0, 1]}}\n")
+                .objects.at(0)
+                .dynamic->torque_n_m,
+            Eigen::Vector3d::Zero());
 }
 
 TEST(DynamicBody, AFreeBodyStartsAtItsInitialPoseAndWeighsItsDensityTimesVolume) {

@@ -330,6 +330,7 @@ void expect_same_scene(const Scene& a, const Scene& b) {
       EXPECT_EQ(x.mass_kg(), y.mass_kg());
       EXPECT_EQ(x.dynamic->velocity_m_s, y.dynamic->velocity_m_s);
       EXPECT_EQ(x.dynamic->angular_velocity_rad_s, y.dynamic->angular_velocity_rad_s);
+      EXPECT_EQ(x.dynamic->torque_n_m, y.dynamic->torque_n_m);
     }
   }
   EXPECT_EQ(a.camera.has_value(), b.camera.has_value());
