@@ -42,7 +42,7 @@ class CpuUndersideRenderer : public UndersideRenderer {
  public:
   std::string name() const override { return "cpu"; }
   DepthImage render_below(const TriangleMesh& mesh, const Grid& sub, double, double) override {
-    return depth_image_cpu({mesh}, sub, ViewFrom::kBelow);
+    return depth_image_cpu(mesh, sub, ViewFrom::kBelow);
   }
 };
 

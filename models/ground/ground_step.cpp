@@ -129,7 +129,11 @@ void substep(const GroundModel& model, const GroundParams& params, const std::ve
     motion[o] = to[o].position_m - from[o].position_m;
     if (model.options.sweep && moved(from[o], to[o], model.grid.cell_size_m)) {
       REPOSE_DEMAND(model.swept_bodies.size() == n_objects);
-      meshes[o] = swept_mesh(object.body, model.swept_bodies[o], from[o], to[o]);
+      // the meshes are only seen from below, where a vertical press or lift
+      // needs no silhouette quads (swept_mesh.h)
+      const SweptBody& swept = model.swept_bodies[o];
+      meshes[o] = is_vertical(motion[o]) ? swept_faces_for_vertical_motion(object.body, swept, from[o], to[o])
+                                         : swept_mesh(object.body, swept, from[o], to[o]);
       ++report->swept_objects;
     } else {
       meshes[o] = transformed(object.body, to[o]);

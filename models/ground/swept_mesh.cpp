@@ -37,18 +37,44 @@ SweptBody make_swept_body(const TriangleMesh& body) {
   return swept;
 }
 
+namespace {
+
+// Front faces (normal . d > 0) go to the later pose; the test is made in
+// body coordinates, where the normals are fixed.
+std::vector<char> front_faces(const SweptBody& swept, const Pose& to, const Eigen::Vector3d& d) {
+  const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
+  std::vector<char> front(swept.face_normal.size());
+  for (std::size_t f = 0; f < front.size(); ++f) front[f] = swept.face_normal[f].dot(d_body) > 0.0;
+  return front;
+}
+
+// The body at both poses (rows [0, nv): earlier, [nv, 2 nv): later) and its
+// faces, each at the pose `front` sends it to, in rows [0, nf) of F; F has
+// `extra_faces` more rows, left for the caller to fill.
+TriangleMesh faces_at_their_poses(const TriangleMesh& body, const std::vector<char>& front, const Pose& to,
+                                  const Eigen::Vector3d& d, Eigen::Index extra_faces) {
+  const Eigen::Index nv = body.V.rows(), nf = body.F.rows();
+  TriangleMesh out;
+  out.V.resize(2 * nv, 3);
+  out.V.bottomRows(nv) = transformed(body, to).V;
+  out.V.topRows(nv) = out.V.bottomRows(nv).rowwise() - d.transpose();
+  out.F.resize(nf + extra_faces, 3);
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    const int offset = front[static_cast<std::size_t>(f)] ? static_cast<int>(nv) : 0;
+    for (int k = 0; k < 3; ++k) out.F(f, k) = body.F(f, k) + offset;
+  }
+  return out;
+}
+
+}  // namespace
+
 TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const Pose& from, const Pose& to) {
   const int nv = static_cast<int>(body.V.rows());
   const int nf = static_cast<int>(body.F.rows());
   REPOSE_DEMAND(swept.face_normal.size() == static_cast<std::size_t>(nf));
   const Eigen::Vector3d d = to.position_m - from.position_m;
   if (d.squaredNorm() == 0.0) return transformed(body, to);
-
-  // front faces (normal . d > 0) go to the later pose; the test is made in
-  // body coordinates, where the normals are fixed
-  const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
-  std::vector<char> front(static_cast<std::size_t>(nf));
-  for (int f = 0; f < nf; ++f) front[f] = swept.face_normal[f].dot(d_body) > 0.0;
+  const std::vector<char> front = front_faces(swept, to, d);
 
   // faces, then per silhouette or open edge a quad: at most 2 * 3 per face,
   // counted first so the face array is filled once
@@ -59,17 +85,9 @@ TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const 
       quads += twin < 0 || (front[f] && !front[twin]);
     }
   }
-  TriangleMesh out;
-  out.V.resize(2 * nv, 3);
-  out.V.bottomRows(nv) = transformed(body, to).V;
-  out.V.topRows(nv) = out.V.bottomRows(nv).rowwise() - d.transpose();
-  out.F.resize(nf + 2 * quads, 3);
-  Eigen::Index row = 0;
+  TriangleMesh out = faces_at_their_poses(body, front, to, d, 2 * quads);
+  Eigen::Index row = nf;
   auto add = [&](int a, int b, int c) { out.F.row(row++) << a, b, c; };
-  for (int f = 0; f < nf; ++f) {
-    const int offset = front[f] ? nv : 0;
-    add(body.F(f, 0) + offset, body.F(f, 1) + offset, body.F(f, 2) + offset);
-  }
   // silhouette and open edges: a quad joining the edge at both poses, wound
   // so that it uses each of its edges opposite to its neighbours
   for (int f = 0; f < nf; ++f) {
@@ -91,6 +109,17 @@ TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const 
   }
   REPOSE_DEMAND(row == out.F.rows());
   return out;
+}
+
+bool is_vertical(const Eigen::Vector3d& d) { return d.x() == 0.0 && d.y() == 0.0; }
+
+TriangleMesh swept_faces_for_vertical_motion(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                             const Pose& to) {
+  REPOSE_DEMAND(swept.face_normal.size() == static_cast<std::size_t>(body.F.rows()));
+  const Eigen::Vector3d d = to.position_m - from.position_m;
+  REPOSE_DEMAND(is_vertical(d));
+  if (d.squaredNorm() == 0.0) return transformed(body, to);
+  return faces_at_their_poses(body, front_faces(swept, to, d), to, d, 0);
 }
 
 TriangleMesh swept_mesh(const TriangleMesh& body, const Pose& from, const Pose& to) {

@@ -38,4 +38,18 @@ TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const 
 // The same, computing make_swept_body(body) first.
 TriangleMesh swept_mesh(const TriangleMesh& body, const Pose& from, const Pose& to);
 
+// True when a motion d has no horizontal part (exactly: x and y are zero).
+bool is_vertical(const Eigen::Vector3d& d);
+
+// For a vertical motion (is_vertical(to - from)): swept_mesh without its
+// silhouette and open-edge quads, the same vertices and the same faces in the
+// same order otherwise. The quads then join each edge to itself shifted
+// along z, so their x and y are exactly those of the edge: seen along z they
+// have no area and cover no cell centre. So every view from below or above
+// (faces_turned, a depth image, the bounding box) is exactly, bit for bit,
+// that of swept_mesh, at a fraction of the cost: a vertical press or lift
+// needs no silhouette. Not a closed mesh.
+TriangleMesh swept_faces_for_vertical_motion(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                             const Pose& to);
+
 }  // namespace repose

@@ -12,12 +12,16 @@ namespace repose {
 
 Aabb bounding_box(const TriangleMesh& mesh) {
   Aabb box;
-  for (Eigen::Index r = 0; r < mesh.V.rows(); ++r) box.extend(mesh.V.row(r).transpose());
+  if (mesh.V.rows() == 0) return box;
+  box.min = mesh.V.colwise().minCoeff().transpose();
+  box.max = mesh.V.colwise().maxCoeff().transpose();
   return box;
 }
 
 TriangleMesh transformed(const TriangleMesh& mesh, const Pose& pose) {
-  TriangleMesh out = mesh;
+  TriangleMesh out;
+  out.F = mesh.F;
+  out.V.resize(mesh.V.rows(), 3);  // every row is written below: no copy of the body's vertices first
   const Eigen::Matrix3d R = pose.orientation.normalized().toRotationMatrix();
   for (Eigen::Index r = 0; r < out.V.rows(); ++r) {
     out.V.row(r) = (R * mesh.V.row(r).transpose() + pose.position_m).transpose();
