@@ -41,15 +41,15 @@ TriangleMesh swept_mesh(const TriangleMesh& body, const Pose& from, const Pose& 
 // True when a motion d has no horizontal part (exactly: x and y are zero).
 bool is_vertical(const Eigen::Vector3d& d);
 
-// For a vertical motion (is_vertical(to - from)): swept_mesh without its
-// silhouette and open-edge quads, the same vertices and the same faces in the
-// same order otherwise. The quads then join each edge to itself shifted
-// along z, so their x and y are exactly those of the edge: seen along z they
-// have no area and cover no cell centre. So every view from below or above
-// (faces_turned, a depth image, the bounding box) is exactly, bit for bit,
-// that of swept_mesh, at a fraction of the cost: a vertical press or lift
-// needs no silhouette. Not a closed mesh.
-TriangleMesh swept_faces_for_vertical_motion(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
-                                             const Pose& to);
+// For a vertical motion (is_vertical(to - from)): what a view from below
+// sees of the swept mesh, faces_turned(swept_mesh(body, swept, from, to),
+// true), bit for bit (the same vertices, the same faces in the same order),
+// at a fraction of the cost. The silhouette and open-edge quads then join
+// each edge to itself shifted along z, so their x and y are exactly those of
+// the edge: they have no area seen along z, and faces_turned drops them; so
+// they are not made, and a face is turned alike at both poses. A vertical
+// press or lift needs no silhouette.
+TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                            const Pose& to);
 
 }  // namespace repose

@@ -18,14 +18,17 @@ Aabb bounding_box(const TriangleMesh& mesh) {
   return box;
 }
 
+MatrixX3dR transformed_vertices(const MatrixX3dR& V, const Pose& pose) {
+  MatrixX3dR out(V.rows(), 3);
+  const Eigen::Matrix3d R = pose.orientation.normalized().toRotationMatrix();
+  for (Eigen::Index r = 0; r < V.rows(); ++r) out.row(r) = (R * V.row(r).transpose() + pose.position_m).transpose();
+  return out;
+}
+
 TriangleMesh transformed(const TriangleMesh& mesh, const Pose& pose) {
   TriangleMesh out;
   out.F = mesh.F;
-  out.V.resize(mesh.V.rows(), 3);  // every row is written below: no copy of the body's vertices first
-  const Eigen::Matrix3d R = pose.orientation.normalized().toRotationMatrix();
-  for (Eigen::Index r = 0; r < out.V.rows(); ++r) {
-    out.V.row(r) = (R * mesh.V.row(r).transpose() + pose.position_m).transpose();
-  }
+  out.V = transformed_vertices(mesh.V, pose);
   return out;
 }
 
