@@ -4,9 +4,10 @@
 // and multi-resolution levels. Run:
 //   build/bin/ground_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //
-// Every case drags a sphere across a flat sand ground (cell 1 cm, 5 cm deep)
-// at a steady depth, so every step collides, displaces and erodes; when the
-// sphere reaches the far side the state is rebuilt outside the timing.
+// The step cases drag a sphere across a flat sand ground (cell 1 cm, 5 cm
+// deep) at a steady depth, so every step collides, displaces and erodes; when
+// the sphere reaches the far side the state is rebuilt outside the timing.
+// BM_RunIndentDeep times a whole run of the calibration ladder's press scene.
 
 #include <benchmark/benchmark.h>
 
