@@ -4,9 +4,10 @@
 // and multi-resolution levels. Run:
 //   build/bin/ground_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //
-// Every case drags a sphere across a flat sand ground (cell 1 cm, 5 cm deep)
-// at a steady depth, so every step collides, displaces and erodes; when the
-// sphere reaches the far side the state is rebuilt outside the timing.
+// The step cases drag a sphere across a flat sand ground (cell 1 cm, 5 cm
+// deep) at a steady depth, so every step collides, displaces and erodes; when
+// the sphere reaches the far side the state is rebuilt outside the timing.
+// BM_RunIndentDeep times a whole run of the calibration ladder's press scene.
 
 #include <benchmark/benchmark.h>
 
@@ -18,6 +19,7 @@
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"
 #include "models/ground/ground_step.h"
+#include "models/ground/simulate_ground.h"
 
 namespace repose {
 namespace {
@@ -173,6 +175,38 @@ void BM_ErosionLocalVsWholeGrid(benchmark::State& bench) {
   }
 }
 BENCHMARK(BM_ErosionLocalVsWholeGrid)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// A whole run of the calibration ladder's timed scene (issue 10;
+// experiments/scenes/ref_indent_deep.yaml): a sphere of 3 cm pressed
+// vertically 10 mm into flat sand on 5 mm cells and lifted out again, 40
+// steps, as the ladder times it (simulate_ground, renderer and state included).
+void BM_RunIndentDeep(benchmark::State& bench) {
+  Scene scene;
+  scene.ground.grid = Grid{27, 27, 0.005, 0.0, 0.0};
+  scene.ground.material = "sand";
+  ObjectSpec ball;
+  ball.name = "ball";
+  ball.radius_m = 0.03;
+  ball.body = make_sphere(ball.radius_m, 32);
+  Keyframe a, b, c;
+  a.pose.position_m = Eigen::Vector3d(0.0675, 0.0675, 0.060);
+  b.time_s = 0.2;
+  b.pose.position_m = Eigen::Vector3d(0.0675, 0.0675, 0.045);
+  c.time_s = 0.4;
+  c.pose.position_m = a.pose.position_m;
+  ball.keyframes = {a, b, c};
+  scene.objects = {ball};
+  scene.time.step_s = 0.01;
+  scene.time.duration_s = 0.4;
+  const GroundModel model = build_ground_model(scene);
+  const GroundParams params = default_params(model);
+  const HeightField initial(model.grid, 0.025);
+  for (auto _ : bench) {
+    const GroundRun run = simulate_ground(model, params, initial);
+    benchmark::DoNotOptimize(run.final_volume_m3);
+  }
+}
+BENCHMARK(BM_RunIndentDeep)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace repose

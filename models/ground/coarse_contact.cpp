@@ -36,12 +36,12 @@ void keep_above_base(int i0, int j0, int f, HeightField* fine) {
 
 }  // namespace
 
-CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& params, const TriangleMesh& mesh,
+CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& params, const TriangleMesh& faces_down,
                                   const Eigen::Vector3d& motion_m, UndersideRenderer& renderer, GroundState* state) {
   CoarseContactResult result;
   const Grid& g = model.grid;
   const int f = model.options.coarse_factor;
-  const Footprint fp = footprint_of(bounding_box(mesh), g);
+  const Footprint fp = footprint_of(bounding_box(faces_down), g);
   if (fp.empty()) return result;
   const std::int64_t margin = std::max(fp.ni, fp.nj) / 2 + 2 * static_cast<std::int64_t>(f);
   int ci0, ci1, cj0, cj1;
@@ -75,7 +75,7 @@ CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& 
   patch_state.height = std::move(coarse);
   patch_state.erosion = ErosionMemory(patch_grid.cell_count(), 0);
   Ceiling ceiling;
-  ceiling.undersides.push_back(find_underside(mesh, patch_state.height, renderer));
+  ceiling.undersides.push_back(find_underside_of_faces_down(faces_down, patch_state.height, renderer));
   const DisplacementResult d = displace(patch, params, ceiling.undersides[0], ceiling, motion_m, &patch_state);
   result.contact_cells = d.contact_cells;
   if (d.contact_cells == 0) return result;

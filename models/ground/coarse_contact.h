@@ -39,8 +39,9 @@ struct CoarseContactResult {
   int changed_fine_cells = 0;
 };
 
-// mesh: the object's collision mesh (world); motion_m as for displace().
-CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& params, const TriangleMesh& mesh,
+// faces_down: the faces turned down of the object's collision mesh (world),
+// on all its vertices (faces_turned(mesh, true)); motion_m as for displace().
+CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& params, const TriangleMesh& faces_down,
                                   const Eigen::Vector3d& motion_m, UndersideRenderer& renderer, GroundState* state);
 
 }  // namespace repose

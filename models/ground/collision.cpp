@@ -42,7 +42,7 @@ class CpuUndersideRenderer : public UndersideRenderer {
  public:
   std::string name() const override { return "cpu"; }
   DepthImage render_below(const TriangleMesh& mesh, const Grid& sub, double, double) override {
-    return depth_image_cpu({mesh}, sub, ViewFrom::kBelow);
+    return depth_image_cpu(mesh, sub, ViewFrom::kBelow);
   }
 };
 
@@ -52,7 +52,15 @@ std::unique_ptr<UndersideRenderer> make_cpu_underside_renderer() { return std::m
 
 Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, UndersideRenderer& renderer,
                          int reach_cells) {
-  const Aabb box = bounding_box(mesh);
+  // Seen from below, the lowest point of a closed, outward-oriented mesh over a
+  // cell lies on a face turned downwards (where a vertical line enters the
+  // body), so only those faces need rendering: about half of them.
+  return find_underside_of_faces_down(faces_turned(mesh, true), ground, renderer, reach_cells);
+}
+
+Underside find_underside_of_faces_down(const TriangleMesh& faces_down, const HeightField& ground,
+                                       UndersideRenderer& renderer, int reach_cells) {
+  const Aabb box = bounding_box(faces_down);
   const Footprint fp = footprint_of(box, ground.grid());
   if (fp.empty()) return {};
   // bounding boxes first: the object is above the ground under its footprint (and within reach)
@@ -63,11 +71,7 @@ Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, Un
   // as displacement's contact test (displacement.h): an object resting on
   // ground it left at its underside touches it to round-off, and is no contact
   if (box.min.z() >= top - kContactToleranceFraction * g.cell_size_m) return {};
-  // Seen from below, the lowest point of a closed, outward-oriented mesh over a
-  // cell lies on a face turned downwards (where a vertical line enters the
-  // body), so only those faces need rendering: about half of them.
-  const DepthImage img =
-      renderer.render_below(faces_turned(mesh, true), fp.sub_grid(ground.grid()), box.min.z(), box.max.z());
+  const DepthImage img = renderer.render_below(faces_down, fp.sub_grid(ground.grid()), box.min.z(), box.max.z());
   Underside u;
   u.footprint = fp;
   u.top_m = box.max.z();

@@ -67,6 +67,12 @@ struct Underside {
 // ground could rise under, e.g. by erosion, which moves material one cell per pass).
 Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, UndersideRenderer& renderer,
                          int reach_cells = 0);
+// The same for a mesh of which only the faces turned down are left
+// (faces_turned(mesh, true), which keeps every vertex, so the bounding box
+// is the whole mesh's): a step makes that once per object and looks from
+// below with it up to three times (fine, coarse, hovering).
+Underside find_underside_of_faces_down(const TriangleMesh& faces_down, const HeightField& ground,
+                                       UndersideRenderer& renderer, int reach_cells = 0);
 
 // The undersides of all objects in a step. The lowest one over a cell is
 // how high the ground there may rise (displacement and erosion never push

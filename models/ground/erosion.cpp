@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "models/ground/ground_model.h"
@@ -28,6 +27,35 @@ struct PairRule {
   double sigma;
   int passes;
 };
+
+// Never above an object: scales the inflow of each capped cell (one under
+// an object) down to its room. The fluxes into capped cells are grouped by
+// cell, in flux order within a cell, so each inflow sums in flux order; a
+// sorted list of indices, not a hash map, so that a pass allocates nothing
+// (`capped` is scratch, kept between passes).
+void cap_inflow(const Ceiling& ceiling, const Grid& g, const double* h, std::vector<Flux>* fluxes,
+                std::vector<std::size_t>* capped) {
+  std::vector<Flux>& fx = *fluxes;
+  capped->clear();
+  for (std::size_t k = 0; k < fx.size(); ++k) {
+    const int i = static_cast<int>(fx[k].to % g.nx), j = static_cast<int>(fx[k].to / g.nx);
+    if (std::isfinite(ceiling.at(i, j))) capped->push_back(k);
+  }
+  std::sort(capped->begin(), capped->end(),
+            [&](std::size_t a, std::size_t b) { return fx[a].to != fx[b].to ? fx[a].to < fx[b].to : a < b; });
+  for (std::size_t first = 0, last = 0; first < capped->size(); first = last) {
+    const std::int64_t cell = fx[(*capped)[first]].to;
+    double inflow = 0.0;
+    for (last = first; last < capped->size() && fx[(*capped)[last]].to == cell; ++last) {
+      inflow += fx[(*capped)[last]].amount;
+    }
+    const int i = static_cast<int>(cell % g.nx), j = static_cast<int>(cell / g.nx);
+    const double room = std::max(0.0, ceiling.at(i, j) - h[cell]);
+    if (!(inflow > room)) continue;
+    const double scale = room / inflow;
+    for (std::size_t k = first; k < last; ++k) fx[(*capped)[k]].amount *= scale;
+  }
+}
 
 }  // namespace
 
@@ -70,7 +98,7 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
   ErosionMemory& memory = state->erosion;
 
   std::vector<Flux> fluxes;
-  std::unordered_map<std::int64_t, double> capped_inflow;
+  std::vector<std::size_t> capped;
   for (int p = 0; p < passes && !memory.empty(); ++p) {
     fluxes.clear();
     const std::vector<std::int64_t>& cells = memory.cells();
@@ -94,21 +122,7 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
     if (fluxes.empty()) break;
     result.passes = p + 1;
 
-    // never above an object: scale the inflow of capped cells to their room
-    capped_inflow.clear();
-    for (const Flux& f : fluxes) {
-      const int i = static_cast<int>(f.to % g.nx), j = static_cast<int>(f.to / g.nx);
-      if (std::isfinite(ceiling.at(i, j))) capped_inflow[f.to] += f.amount;
-    }
-    for (auto& [cell, inflow] : capped_inflow) {
-      const int i = static_cast<int>(cell % g.nx), j = static_cast<int>(cell / g.nx);
-      const double room = std::max(0.0, ceiling.at(i, j) - h[cell]);
-      inflow = inflow > room ? room / inflow : 1.0;  // now the scale factor
-    }
-    for (Flux& f : fluxes) {
-      const auto it = capped_inflow.find(f.to);
-      if (it != capped_inflow.end()) f.amount *= it->second;
-    }
+    cap_inflow(ceiling, g, h, &fluxes, &capped);
 
     for (const Flux& f : fluxes) {
       if (!(f.amount > 0.0)) continue;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "models/core/base/error.h"
+#include "models/core/geometry/faces_turned.h"
 #include "models/ground/coarse_contact.h"
 #include "models/ground/displacement.h"
 #include "models/ground/ground_model.h"
@@ -91,7 +92,7 @@ Underside merged_underside(const std::vector<Underside>& undersides, const std::
 // contact (e.g. one lifted out of its own imprint), and material deposited
 // above its underside is displaced as by any contact.
 int add_hovering_undersides(const GroundModel& model, const GroundParams& params,
-                            const std::vector<TriangleMesh>& meshes, const std::vector<double>& tops,
+                            const std::vector<TriangleMesh>& faces_down, const std::vector<double>& tops,
                             const std::vector<char>& coarse,
                             const std::vector<Eigen::Vector3d>& motion, UndersideRenderer& renderer,
                             GroundState* state, Ceiling* ceiling) {
@@ -100,11 +101,11 @@ int add_hovering_undersides(const GroundModel& model, const GroundParams& params
   reach_cells = std::min(reach_cells, std::max(model.grid.nx, model.grid.ny));
   int contact_cells = 0;
   std::size_t fine = 0;  // ceiling->undersides holds the fine objects in order
-  for (std::size_t o = 0; o < meshes.size(); ++o) {
+  for (std::size_t o = 0; o < faces_down.size(); ++o) {
     if (coarse[o]) continue;
     const std::size_t k = fine++;
     if (!ceiling->undersides[k].empty()) continue;
-    ceiling->undersides[k] = find_underside(meshes[o], state->height, renderer, reach_cells);
+    ceiling->undersides[k] = find_underside_of_faces_down(faces_down[o], state->height, renderer, reach_cells);
     if (ceiling->undersides[k].empty()) continue;
     ceiling->undersides[k].top_m = tops[o];
     const Underside u = ceiling->undersides[k];  // displace reads the ceiling too
@@ -120,31 +121,35 @@ void substep(const GroundModel& model, const GroundParams& params, const std::ve
              const std::vector<Pose>& to, UndersideRenderer& renderer, GroundState* state, StepReport* report) {
   const std::size_t n_objects = model.objects.size();
   Ceiling ceiling;
-  std::vector<TriangleMesh> meshes(n_objects);
+  std::vector<TriangleMesh> faces_down(n_objects);
   std::vector<Eigen::Vector3d> motion(n_objects), fine_motion;
   std::vector<char> coarse(n_objects);
   std::vector<double> tops(n_objects);
   for (std::size_t o = 0; o < n_objects; ++o) {
     const ObjectSpec& object = model.objects[o];
     motion[o] = to[o].position_m - from[o].position_m;
+    // the faces_down are only ever seen from below: their faces turned down,
+    // made once; a vertical press or lift needs no silhouette (swept_mesh.h)
     if (model.options.sweep && moved(from[o], to[o], model.grid.cell_size_m)) {
       REPOSE_DEMAND(model.swept_bodies.size() == n_objects);
-      meshes[o] = swept_mesh(object.body, model.swept_bodies[o], from[o], to[o]);
+      const SweptBody& swept = model.swept_bodies[o];
+      faces_down[o] = is_vertical(motion[o]) ? vertical_sweep_seen_from_below(object.body, swept, from[o], to[o])
+                                         : faces_turned(swept_mesh(object.body, swept, from[o], to[o]), true);
       ++report->swept_objects;
     } else {
-      meshes[o] = transformed(object.body, to[o]);
+      faces_down[o] = faces_turned(transformed(object.body, to[o]), true);
     }
     coarse[o] = uses_coarse_grid(model, static_cast<int>(o), to[o]);
     tops[o] = top_at(object, to[o]);
     if (!coarse[o]) {
-      ceiling.undersides.push_back(find_underside(meshes[o], state->height, renderer));
+      ceiling.undersides.push_back(find_underside_of_faces_down(faces_down[o], state->height, renderer));
       ceiling.undersides.back().top_m = tops[o];
       fine_motion.push_back(motion[o]);
     }
   }
   for (std::size_t o = 0; o < n_objects; ++o) {
     if (!coarse[o]) continue;
-    report->contact_cells += deform_coarse(model, params, meshes[o], motion[o], renderer, state).contact_cells;
+    report->contact_cells += deform_coarse(model, params, faces_down[o], motion[o], renderer, state).contact_cells;
     ++report->coarse_objects;
   }
   // a cluster of touching objects is displaced as one region, moving with their mean motion
@@ -156,7 +161,7 @@ void substep(const GroundModel& model, const GroundParams& params, const std::ve
     report->contact_cells += displace(model, params, u, ceiling, mean_motion, state).contact_cells;
   }
   report->contact_cells +=
-      add_hovering_undersides(model, params, meshes, tops, coarse, motion, renderer, state, &ceiling);
+      add_hovering_undersides(model, params, faces_down, tops, coarse, motion, renderer, state, &ceiling);
   const ErosionResult e = erode(model, params, ceiling, state);
   report->erosion.passes += e.passes;
   report->erosion.pair_visits += e.pair_visits;

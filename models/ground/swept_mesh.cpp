@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "models/core/base/error.h"
+#include "models/core/geometry/faces_turned.h"
 
 namespace repose {
 
@@ -37,18 +38,39 @@ SweptBody make_swept_body(const TriangleMesh& body) {
   return swept;
 }
 
+namespace {
+
+// A front face (normal . d > 0) goes to the later pose; the test is made in
+// body coordinates, where the normals are fixed.
+bool is_front(const SweptBody& swept, std::size_t face, const Eigen::Vector3d& d_body) {
+  return swept.face_normal[face].dot(d_body) > 0.0;
+}
+
+std::vector<char> front_faces(const SweptBody& swept, const Pose& to, const Eigen::Vector3d& d) {
+  const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
+  std::vector<char> front(swept.face_normal.size());
+  for (std::size_t f = 0; f < front.size(); ++f) front[f] = is_front(swept, f, d_body);
+  return front;
+}
+
+// The body at both poses: rows [0, nv) at the earlier, [nv, 2 nv) at the later.
+MatrixX3dR vertices_at_both_poses(const TriangleMesh& body, const Pose& to, const Eigen::Vector3d& d) {
+  const Eigen::Index nv = body.V.rows();
+  MatrixX3dR V(2 * nv, 3);
+  V.bottomRows(nv) = transformed_vertices(body.V, to);
+  V.topRows(nv) = V.bottomRows(nv).rowwise() - d.transpose();
+  return V;
+}
+
+}  // namespace
+
 TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const Pose& from, const Pose& to) {
   const int nv = static_cast<int>(body.V.rows());
   const int nf = static_cast<int>(body.F.rows());
   REPOSE_DEMAND(swept.face_normal.size() == static_cast<std::size_t>(nf));
   const Eigen::Vector3d d = to.position_m - from.position_m;
   if (d.squaredNorm() == 0.0) return transformed(body, to);
-
-  // front faces (normal . d > 0) go to the later pose; the test is made in
-  // body coordinates, where the normals are fixed
-  const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
-  std::vector<char> front(static_cast<std::size_t>(nf));
-  for (int f = 0; f < nf; ++f) front[f] = swept.face_normal[f].dot(d_body) > 0.0;
+  const std::vector<char> front = front_faces(swept, to, d);
 
   // faces, then per silhouette or open edge a quad: at most 2 * 3 per face,
   // counted first so the face array is filled once
@@ -60,9 +82,7 @@ TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const 
     }
   }
   TriangleMesh out;
-  out.V.resize(2 * nv, 3);
-  out.V.bottomRows(nv) = transformed(body, to).V;
-  out.V.topRows(nv) = out.V.bottomRows(nv).rowwise() - d.transpose();
+  out.V = vertices_at_both_poses(body, to, d);
   out.F.resize(nf + 2 * quads, 3);
   Eigen::Index row = 0;
   auto add = [&](int a, int b, int c) { out.F.row(row++) << a, b, c; };
@@ -90,6 +110,33 @@ TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const 
     }
   }
   REPOSE_DEMAND(row == out.F.rows());
+  return out;
+}
+
+bool is_vertical(const Eigen::Vector3d& d) { return d.x() == 0.0 && d.y() == 0.0; }
+
+TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                            const Pose& to) {
+  const Eigen::Index nv = body.V.rows(), nf = body.F.rows();
+  REPOSE_DEMAND(swept.face_normal.size() == static_cast<std::size_t>(nf));
+  const Eigen::Vector3d d = to.position_m - from.position_m;
+  REPOSE_DEMAND(is_vertical(d));
+  if (d.squaredNorm() == 0.0) return faces_turned(transformed(body, to), true);
+  // swept_mesh's vertices and its faces in their order, each at its pose,
+  // keeping those faces_turned keeps; the quads it would drop are never made
+  TriangleMesh out;
+  out.V = vertices_at_both_poses(body, to, d);
+  out.F.resize(nf, 3);
+  const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
+  Eigen::Index n = 0;
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    const int a = body.F(f, 0), b = body.F(f, 1), c = body.F(f, 2);
+    // turned as at either pose: the poses differ in z alone
+    if (!is_turned(out.V.row(nv + a), out.V.row(nv + b), out.V.row(nv + c), true)) continue;
+    const int offset = is_front(swept, static_cast<std::size_t>(f), d_body) ? static_cast<int>(nv) : 0;
+    out.F.row(n++) << a + offset, b + offset, c + offset;
+  }
+  out.F.conservativeResize(n, 3);
   return out;
 }
 

@@ -38,4 +38,18 @@ TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const 
 // The same, computing make_swept_body(body) first.
 TriangleMesh swept_mesh(const TriangleMesh& body, const Pose& from, const Pose& to);
 
+// True when a motion d has no horizontal part (exactly: x and y are zero).
+bool is_vertical(const Eigen::Vector3d& d);
+
+// For a vertical motion (is_vertical(to - from)): what a view from below
+// sees of the swept mesh, faces_turned(swept_mesh(body, swept, from, to),
+// true), bit for bit (the same vertices, the same faces in the same order),
+// at a fraction of the cost. The silhouette and open-edge quads then join
+// each edge to itself shifted along z, so their x and y are exactly those of
+// the edge: they have no area seen along z, and faces_turned drops them; so
+// they are not made, and a face is turned alike at both poses. A vertical
+// press or lift needs no silhouette.
+TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                            const Pose& to);
+
 }  // namespace repose

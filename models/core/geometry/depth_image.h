@@ -44,5 +44,8 @@ struct DepthRange {
 };
 
 DepthImage depth_image_cpu(const std::vector<TriangleMesh>& meshes, const Grid& grid, ViewFrom view);
+// One mesh, without copying it into a vector first (the ground's collision
+// renders a placed body every step).
+DepthImage depth_image_cpu(const TriangleMesh& mesh, const Grid& grid, ViewFrom view);
 
 }  // namespace repose

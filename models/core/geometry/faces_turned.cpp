@@ -9,8 +9,7 @@ TriangleMesh faces_turned(const TriangleMesh& mesh, bool turned_down) {
   Eigen::Index n = 0;
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
     const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
-    const double nz = (b - a).cross(c - a).z();
-    if (turned_down ? nz < 0.0 : nz > 0.0) out.F.row(n++) = mesh.F.row(f);
+    if (is_turned(a, b, c, turned_down)) out.F.row(n++) = mesh.F.row(f);
   }
   out.F.conservativeResize(n, 3);
   return out;

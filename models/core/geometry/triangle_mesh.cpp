@@ -12,16 +12,23 @@ namespace repose {
 
 Aabb bounding_box(const TriangleMesh& mesh) {
   Aabb box;
-  for (Eigen::Index r = 0; r < mesh.V.rows(); ++r) box.extend(mesh.V.row(r).transpose());
+  if (mesh.V.rows() == 0) return box;
+  box.min = mesh.V.colwise().minCoeff().transpose();
+  box.max = mesh.V.colwise().maxCoeff().transpose();
   return box;
 }
 
-TriangleMesh transformed(const TriangleMesh& mesh, const Pose& pose) {
-  TriangleMesh out = mesh;
+MatrixX3dR transformed_vertices(const MatrixX3dR& V, const Pose& pose) {
+  MatrixX3dR out(V.rows(), 3);
   const Eigen::Matrix3d R = pose.orientation.normalized().toRotationMatrix();
-  for (Eigen::Index r = 0; r < out.V.rows(); ++r) {
-    out.V.row(r) = (R * mesh.V.row(r).transpose() + pose.position_m).transpose();
-  }
+  for (Eigen::Index r = 0; r < V.rows(); ++r) out.row(r) = (R * V.row(r).transpose() + pose.position_m).transpose();
+  return out;
+}
+
+TriangleMesh transformed(const TriangleMesh& mesh, const Pose& pose) {
+  TriangleMesh out;
+  out.F = mesh.F;
+  out.V = transformed_vertices(mesh.V, pose);
   return out;
 }
 

@@ -38,6 +38,8 @@ struct Aabb {
 
 Aabb bounding_box(const TriangleMesh& mesh);
 TriangleMesh transformed(const TriangleMesh& mesh, const Pose& pose);
+// The vertices alone (#V by 3), as transformed() places them.
+MatrixX3dR transformed_vertices(const MatrixX3dR& V, const Pose& pose);
 TriangleMesh scaled(const TriangleMesh& mesh, const Eigen::Vector3d& scale);
 // Concatenate meshes (indices of b offset by a's vertex count).
 TriangleMesh merged(const TriangleMesh& a, const TriangleMesh& b);

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "models/core/base/error.h"
 #include "tests/models/ground/ground_fixtures.h"
 
@@ -104,6 +106,38 @@ TEST(Erosion, NeverRisesAboveTheCeiling) {
     for (int i = 10; i < 16; ++i) EXPECT_LE(state.height.at(i, j), 0.01 + 1e-15);
   }
   EXPECT_NEAR(state.height.volume_m3(), state.ledger.initial_m3, 1e-15);
+}
+
+// A cell under an object fed from both sides, with room for less than both
+// bring: it fills exactly to the ceiling, and both sources give in
+// proportion to what they would have given (each flux scaled alike).
+TEST(Erosion, ACappedCellSharesItsRoomAmongItsInflows) {
+  Material m = sand();
+  m.erosion_iterations = 1;  // one pass: the fluxes of the starting heights
+  const GroundModel model = make_plain_ground_model(centred_grid(5, 1, 0.01), m);
+  GroundState state = make_ground_state(model, HeightField(model.grid, 0.0));
+  const double start[5] = {0.05, 0.05, 0.0, 0.03, 0.03};
+  for (int i = 0; i < 5; ++i) {
+    state.height.at(i, 0) = start[i];
+    state.erosion.touch(model.cell(i, 0));
+  }
+  const double ceiling_m = 0.004;
+  Underside plate;
+  plate.footprint = Footprint{2, 0, 1, 1};
+  plate.z_m = ArrayXXdR::Constant(1, 1, ceiling_m);
+  Ceiling ceiling;
+  ceiling.undersides.push_back(plate);
+  erode(model, GroundParams{{m}}, ceiling, &state);
+
+  const double max_dh = 0.01 * std::tan(m.repose_angle_rad);
+  const double left = m.sigma * (start[1] - max_dh), right = m.sigma * (start[3] - max_dh);
+  ASSERT_GT(left + right, ceiling_m);  // the room is what limits
+  EXPECT_NEAR(state.height.at(2, 0), ceiling_m, 1e-15);
+  const double given_left = start[1] - state.height.at(1, 0), given_right = start[3] - state.height.at(3, 0);
+  EXPECT_NEAR(given_left, ceiling_m * left / (left + right), 1e-15);
+  EXPECT_NEAR(given_right, ceiling_m * right / (left + right), 1e-15);
+  EXPECT_EQ(state.height.at(0, 0), start[0]);
+  EXPECT_EQ(state.height.at(4, 0), start[4]);
 }
 
 TEST(Erosion, MemoryForgetsSettledCells) {

@@ -2,7 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "models/core/geometry/depth_image.h"
+#include "models/core/geometry/faces_turned.h"
+#include "models/ground/collision.h"
 #include "tests/models/ground/ground_fixtures.h"
 
 namespace repose {
@@ -78,6 +85,77 @@ TEST(SweptBody, EdgeTwinsOfClosedAndOpenBodies) {
   open.F.conservativeResize(open.F.rows() - 1, 3);
   const SweptBody open_swept = make_swept_body(open);
   EXPECT_EQ(std::count(open_swept.twin_face.begin(), open_swept.twin_face.end(), -1), 3);
+}
+
+
+// The fast path of a vertical press or lift must be seen from below
+// exactly as the swept mesh is: the very mesh faces_turned makes of it, and
+// so the same bounding box and depth image, bit for bit, for bodies with
+// vertical faces (box, cylinder), curved ones, tilted ones, and motions
+// down, up and tiny.
+TEST(VerticalSweepSeenFromBelow, IsTheSweptMeshsFacesTurnedDown) {
+  const std::vector<std::pair<std::string, TriangleMesh>> bodies = {
+      {"sphere", make_sphere(0.03, 32)},
+      {"box", make_box(Eigen::Vector3d(0.02, 0.03, 0.01))},
+      {"cylinder", make_cylinder(0.025, 0.02, 24)},
+      {"capsule", make_capsule(0.015, 0.02, 16)}};
+  const std::vector<Eigen::Quaterniond> turns = {
+      Eigen::Quaterniond::Identity(), Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ())),
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 0.5).normalized()))};
+  const Grid g = centred_grid(40, 40, 0.0025);
+  for (const auto& [name, body] : bodies) {
+    const SweptBody swept = make_swept_body(body);
+    for (std::size_t t = 0; t < turns.size(); ++t) {
+      for (const double dz : {-0.004, 0.0035, -1e-7, 0.0}) {
+        Pose from = at_position(0.0013, -0.0021, 0.05), to = from;
+        from.orientation = to.orientation = turns[t];
+        to.position_m.z() += dz;
+        const std::string what = name + " turn " + std::to_string(t) + " dz " + std::to_string(dz);
+        const TriangleMesh fast = vertical_sweep_seen_from_below(body, swept, from, to);
+        const TriangleMesh full = faces_turned(swept_mesh(body, swept, from, to), true);
+        ASSERT_EQ(fast.V.rows(), full.V.rows()) << what;
+        EXPECT_TRUE(fast.V == full.V) << what;
+        ASSERT_EQ(fast.F.rows(), full.F.rows()) << what;
+        EXPECT_TRUE(fast.F == full.F) << what;
+        const DepthImage x = depth_image_cpu(fast, g, ViewFrom::kBelow), y = depth_image_cpu(full, g, ViewFrom::kBelow);
+        EXPECT_TRUE((x.covered == y.covered).all()) << what;
+        EXPECT_TRUE((x.covered == 0 || x.z_m == y.z_m).all()) << what;
+      }
+    }
+  }
+}
+
+// As the ground step uses it: a sphere pressed into and lifted out of a
+// dented ground has the same underside through either path.
+TEST(VerticalSweepSeenFromBelow, PressAndLiftFindTheSameUndersideAsTheSweptMesh) {
+  const TriangleMesh ball = make_sphere(0.03, 32);
+  const SweptBody swept = make_swept_body(ball);
+  const Grid g = centred_grid(27, 27, 0.005);
+  HeightField ground(g, 0.0);
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) ground.at(i, j) = 0.002 * std::sin(0.7 * i) * std::cos(0.45 * j);
+  }
+  const auto renderer = make_cpu_underside_renderer();
+  for (const double dz : {-0.00375, 0.00375}) {
+    const Pose from = at_position(0.001, 0.0, 0.025), to = at_position(0.001, 0.0, 0.025 + dz);
+    const Underside fast =
+        find_underside_of_faces_down(vertical_sweep_seen_from_below(ball, swept, from, to), ground, *renderer);
+    const Underside full = find_underside(swept_mesh(ball, swept, from, to), ground, *renderer);
+    ASSERT_FALSE(full.empty());
+    EXPECT_EQ(fast.footprint.i0, full.footprint.i0);
+    EXPECT_EQ(fast.footprint.j0, full.footprint.j0);
+    EXPECT_EQ(fast.footprint.ni, full.footprint.ni);
+    EXPECT_EQ(fast.footprint.nj, full.footprint.nj);
+    EXPECT_EQ(fast.top_m, full.top_m);
+    EXPECT_TRUE((fast.z_m == full.z_m).all()) << "dz " << dz;
+  }
+}
+
+TEST(VerticalSweepSeenFromBelow, IsVerticalMeansNoHorizontalPartAtAll) {
+  EXPECT_TRUE(is_vertical(Eigen::Vector3d(0, 0, -0.01)));
+  EXPECT_TRUE(is_vertical(Eigen::Vector3d(-0.0, 0, 0.01)));
+  EXPECT_FALSE(is_vertical(Eigen::Vector3d(1e-300, 0, -0.01)));
+  EXPECT_FALSE(is_vertical(Eigen::Vector3d(0, -1e-18, -0.01)));
 }
 
 }  // namespace
