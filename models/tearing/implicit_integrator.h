@@ -118,7 +118,8 @@ class ImplicitIntegrator {
   // every entry the system can have (torn springs leave zeros), refilled each step
   Eigen::SparseMatrix<double> system_;
   std::vector<int> first_row_;  // per vertex: the row of its first free axis, or -1
-  // per stiffness block (for_each_stiffness_block's index), per column of
+  std::vector<char> all_free_;  // per vertex: no axis held (its rows first_row_ + 0..2)
+  // per stiffness block (for_each_stiffness_term's index), per column of
   // the block: where its first free row lies in system_'s values, or -1
   std::vector<std::array<int, 3>> block_place_;
   int last_iterations_ = 0;
