@@ -129,11 +129,11 @@ void whole_tear(benchmark::State& bench, ImplicitSolverOptions::Preconditioner p
   bench.counters["work_mj"] = 1e3 * run.grip_work_j;
 }
 void BM_ImplicitWholeTear(benchmark::State& bench) { whole_tear(bench, ImplicitSolverOptions::Preconditioner::kJacobi); }
-BENCHMARK(BM_ImplicitWholeTear)->Arg(50)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_ImplicitWholeTear)->Arg(50)->Arg(100)->Unit(benchmark::kSecond)->Iterations(1);
 void BM_ImplicitWholeTearMultigrid(benchmark::State& bench) {
   whole_tear(bench, ImplicitSolverOptions::Preconditioner::kMultigrid);
 }
-BENCHMARK(BM_ImplicitWholeTearMultigrid)->Arg(50)->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK(BM_ImplicitWholeTearMultigrid)->Arg(50)->Arg(100)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace
 }  // namespace repose
