@@ -62,7 +62,7 @@ struct ImplicitSolverOptions {
   // twist (Speed above), hence the default (a point-Gauss-Seidel smoother
   // had let its iterations grow 11 -> 29 as the flaps turned, and it lost
   // to Jacobi over whole tears).
-  Preconditioner preconditioner = Preconditioner::kJacobi;
+  Preconditioner preconditioner = Preconditioner::kMultigrid;
   // CG stops once |b - A dv| <= relative_tolerance |b|. In (0, 1). Why
   // 1e-8 and not 1e-12: over a 150-step tear of the seed's twist at 10x the
   // explicit step the sheet then stays within 6e-10 of its motion and the
