@@ -44,15 +44,15 @@
 // preconditioner was measured first and rejected: 3.2e7 non-zeros in L at
 // 200 x 200, 2.5 s (CHOLMOD) to 17 s (Eigen) to factorise, 55-100 ms per
 // application, 7-14 CG iterations a step.
-// Measured 2026-11-23 09:00 (load ~3.5; CPU time; before = main at 1ab1748,
-// the binaries run in turn, median of 3 runs of BM_ImplicitStep*/200):
-//   BM_ImplicitStep/200 (Jacobi)       541 -> 541 ms (109 iterations)
-//   BM_ImplicitStepMultigrid/200       385 -> 228 ms (4.4 steps/s, 8.8 it.)
-//   BM_ImplicitWholeTear/50            40.1 -> 31.4 s (1,189 steps)
-//   BM_ImplicitWholeTearMultigrid/50   57.4 -> 13.3 s (same tear and work)
+// Measured 2026-11-23 09:00-09:15 (load ~3.5-6; CPU time; before = main at
+// 1ab1748, the binaries run in turn, median of 6 runs of BM_ImplicitStep*/200):
+//   BM_ImplicitStep/200 (Jacobi)       529 -> 530 ms (109 iterations)
+//   BM_ImplicitStepMultigrid/200       375 -> 234 ms (4.3 steps/s, 8.8 it.)
+//   BM_ImplicitWholeTear/50            40.1 -> 31.4, 41.6 s (noise; 1,189 steps)
+//   BM_ImplicitWholeTearMultigrid/50   57.4 -> 13.3, 13.8 s (same tear and work)
 //   BM_ImplicitWholeTear*/100 (after)  Jacobi 306 s, multigrid 119 s (2,161 steps)
-// by the multigrid's 3 x 3 block smoother (sheet_multigrid.h) and block
-// assembly (implicit_integrator.h); 20 steps/s at 200 x 200 is missed ~4.5x.
+// by the multigrid's 3 x 3 block smoother (sheet_multigrid.h); multigrid is
+// now the default; 20 steps/s at 200 x 200 is missed ~4.7x.
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter=WholeTear/50   (minutes: one tear each)

@@ -15,21 +15,22 @@
 // judged at x_n.
 //
 // Speed (tearing_benchmark, 10x the explicit step, CPU time, shared 2-core
-// machine at load ~3.5, 2026-11-23; before = main at 1ab1748, the two
-// binaries run in turn, median of 3): one step of the seed's twist from
-// rest at 200 x 200, Jacobi 541 -> 541 ms (109 CG iterations), multigrid
-// 385 -> 228 ms (4.4 steps/s, 8.8 iterations; the 20 steps/s is
-// missed ~4.5x). Whole tears of the seed's twist to 5 cm (BM_ImplicitWholeTear*):
-// 50 cells, 1,189 steps, Jacobi 40.1 -> 31.4 s, multigrid 57.4 -> 13.3 s,
+// machine at load ~3.5-6, 2026-11-23; before = main at 1ab1748, the two
+// binaries run in turn, median of 6): one step of the seed's twist from
+// rest at 200 x 200, Jacobi 529 -> 530 ms (109 CG iterations; no change
+// out of the noise), multigrid 375 -> 234 ms (4.3 steps/s, 8.8 iterations;
+// the 20 steps/s is missed ~4.7x). Whole tears of the seed's twist
+// to 5 cm (BM_ImplicitWholeTear*): 50 cells, 1,189 steps, Jacobi 40.1 s
+// before, 31.4 and 41.6 s after (noise), multigrid 57.4 -> 13.3 and 13.8 s,
 // the same tear, force and work to the digits printed; 100 cells, 2,161
-// steps, multigrid 119 s against Jacobi 306 s (same outcomes). What made the difference:
-// the multigrid smoother by 3 x 3 vertex blocks (sheet_multigrid.h), whose
-// iterations no longer grow as the flaps turn (20 x 20 twist of
-// implicit_integrator_test, steps 1-140: 8 -> 11, where the point smoother
-// went 11 -> 29), a backward sweep that reads memory in one direction
-// (it had cost 5x a forward one), and springs between free vertices
-// assembled a block at a time. Left at 228 ms (perf): the smoother and
-// residual ~30 %, CG's own products ~15 %, assembly ~11 %.
+// steps, multigrid 119 s against Jacobi 306 s (same outcomes). What made the
+// difference: the multigrid smoother by 3 x 3 vertex blocks
+// (sheet_multigrid.h), whose iterations no longer grow as the flaps turn
+// (20 x 20 twist of implicit_integrator_test, steps 1-140: 8 -> 11, where
+// the point smoother went 11 -> 29), and a backward sweep that reads memory
+// in one direction (it had cost 5x a forward one); springs between free
+// vertices are also assembled a block at a time. Left at ~230 ms (perf):
+// the smoother and residual ~30 %, CG's own products ~15 %, assembly ~11 %.
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
