@@ -44,8 +44,18 @@
 // preconditioner was measured first and rejected: 3.2e7 non-zeros in L at
 // 200 x 200, 2.5 s (CHOLMOD) to 17 s (Eigen) to factorise, 55-100 ms per
 // application, 7-14 CG iterations a step.
+// Measured 2026-11-23 09:00-09:15 (load ~3.5-6; CPU time; before = main at
+// 1ab1748, the binaries run in turn, median of 6 runs of BM_ImplicitStep*/200):
+//   BM_ImplicitStep/200 (Jacobi)       529 -> 530 ms (109 iterations)
+//   BM_ImplicitStepMultigrid/200       375 -> 234 ms (4.3 steps/s, 8.8 it.)
+//   BM_ImplicitWholeTear/50            40.1 -> 31.4, 41.6 s (noise; 1,189 steps)
+//   BM_ImplicitWholeTearMultigrid/50   57.4 -> 13.3, 13.8 s (same tear and work)
+//   BM_ImplicitWholeTear*/100 (after)  Jacobi 306 s, multigrid 119 s (2,161 steps)
+// by the multigrid's 3 x 3 block smoother (sheet_multigrid.h); multigrid is
+// now the default; 20 steps/s at 200 x 200 is missed ~4.7x.
 // Run:
-//   build/bin/tearing_benchmark --benchmark_filter=Implicit --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+//   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+//   build/bin/tearing_benchmark --benchmark_filter=WholeTear/50   (minutes: one tear each)
 
 #include <benchmark/benchmark.h>
 
@@ -56,6 +66,7 @@
 #include "models/tearing/implicit_integrator.h"
 #include "models/tearing/sheet_model.h"
 #include "models/tearing/stable_time_step.h"
+#include "models/tearing/tear_run.h"
 
 namespace repose {
 namespace {
@@ -94,8 +105,12 @@ void implicit_steps(benchmark::State& bench, const ImplicitSolverOptions& solver
   bench.counters["cg_iterations"] = iterations / static_cast<double>(bench.iterations());
   bench.counters["multigrid_rebuilds"] = integrator.multigrid_rebuilds();
 }
-// the defaults: Jacobi-preconditioned CG at 1e-8
-void BM_ImplicitStep(benchmark::State& bench) { implicit_steps(bench, {}); }
+// Jacobi-preconditioned CG at 1e-8
+void BM_ImplicitStep(benchmark::State& bench) {
+  ImplicitSolverOptions solver;
+  solver.preconditioner = ImplicitSolverOptions::Preconditioner::kJacobi;
+  implicit_steps(bench, solver);
+}
 // 5 s a repetition, so that the multigrid hierarchy built at the first step
 // (and rebuilt every 50) is amortised over ~20 steps, not 2
 BENCHMARK(BM_ImplicitStep)->Arg(50)->Arg(200)->Unit(benchmark::kMillisecond)->MinTime(5.0);
@@ -106,6 +121,33 @@ void BM_ImplicitStepMultigrid(benchmark::State& bench) {
   implicit_steps(bench, solver);
 }
 BENCHMARK(BM_ImplicitStepMultigrid)->Arg(50)->Arg(200)->Unit(benchmark::kMillisecond)->MinTime(5.0);
+
+// A whole tear, not one step: the seed's twist at 10x the explicit step
+// until the tear is 5 cm deep (half the sheet), once; what a preconditioner
+// costs as the flaps turn and the tear grows. Counters: steps and the
+// outcomes, to check that both solvers tore alike.
+void whole_tear(benchmark::State& bench, ImplicitSolverOptions::Preconditioner preconditioner) {
+  const SheetModel model = seed_sheet(static_cast<int>(bench.range(0)));
+  const SheetParams params;
+  TearRunOptions options;
+  options.integrator = TearRunOptions::Integrator::kImplicit;
+  options.time_step_fraction = 10.0;
+  options.duration_s = 0.05;
+  options.stop_at_depth_m = 0.05;
+  options.implicit_solver.preconditioner = preconditioner;
+  TearRun run;
+  for (auto _ : bench) run = run_tear(model, params, options);
+  bench.counters["steps"] = static_cast<double>(run.steps);
+  bench.counters["tear_length_mm"] = 1e3 * run.tear_length_m;
+  bench.counters["peak_force_n"] = run.peak_grip_force_n;
+  bench.counters["work_mj"] = 1e3 * run.grip_work_j;
+}
+void BM_ImplicitWholeTear(benchmark::State& bench) { whole_tear(bench, ImplicitSolverOptions::Preconditioner::kJacobi); }
+BENCHMARK(BM_ImplicitWholeTear)->Arg(50)->Arg(100)->Unit(benchmark::kSecond)->Iterations(1);
+void BM_ImplicitWholeTearMultigrid(benchmark::State& bench) {
+  whole_tear(bench, ImplicitSolverOptions::Preconditioner::kMultigrid);
+}
+BENCHMARK(BM_ImplicitWholeTearMultigrid)->Arg(50)->Arg(100)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace
 }  // namespace repose

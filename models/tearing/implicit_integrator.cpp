@@ -35,13 +35,19 @@ class MultigridPreconditioner {
   const Eigen::SparseMatrix<double>* system_ = nullptr;
 };
 
-// Calls add(index, a, b, block) for every 3 x 3 block (a, b) of -K (the
-// stiffness, positive) of the intact springs and acting bending terms; a
-// pair may come several times, its blocks add up. index numbers the blocks
+// The bending terms' stencil: term t couples a, b, c by kb w_t c_p c_q I.
+constexpr double kBendingCoefficient[3] = {1.0, -2.0, 1.0};
+
+// Walks the stiffness -K (positive) of the intact springs and acting
+// bending terms: spring(first, a, b, h) per spring, whose blocks are
+// (a, a) = (b, b) = h, (a, b) = (b, a) = -h, and bending(first, v, kb) per
+// term, whose blocks (v[p], v[q]) are kb c_p c_q I (kBendingCoefficient); a
+// pair may come several times, its blocks add up. first numbers the blocks
 // of the whole sheet (for_each_block_place): 4 (6 c + k) + 0..3 for spring
-// k of cell c, 24 cells + 9 t + 3 p + q for bending term t.
-template <class Add>
-void for_each_stiffness_block(const SheetModel& model, const SheetParams& params, const SheetState& state, Add&& add) {
+// k of cell c in the order above, 24 cells + 9 t + 3 p + q for term t.
+template <class Spring, class Bending>
+void for_each_stiffness_term(const SheetModel& model, const SheetParams& params, const SheetState& state,
+                             Spring&& spring, Bending&& bending) {
   const SpringConstants kc = spring_constants(model, params);
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (int c = 0; c < model.cell_count(); ++c) {
@@ -56,30 +62,106 @@ void for_each_stiffness_block(const SheetModel& model, const SheetParams& params
       const double ks = spring_constant_n_per_m(kc, s, model.cell_stiffness[c]);
       const double geometric = std::max(0.0, 1.0 - s.rest_length_m / length);
       const Eigen::Matrix3d h = ks * (n * n.transpose() + geometric * (identity - n * n.transpose()));
-      const int first = 4 * (6 * c + k);
-      add(first, s.a, s.a, h);
-      add(first + 1, s.b, s.b, h);
-      add(first + 2, s.a, s.b, -h);
-      add(first + 3, s.b, s.a, -h);
+      spring(4 * (6 * c + k), s.a, s.b, h);
     }
   }
-  constexpr double kCoefficient[3] = {1.0, -2.0, 1.0};
   const int bending_first = 24 * model.cell_count();
   for (std::size_t k = 0; k < model.bending.size(); ++k) {
     const BendingTerm& t = model.bending[k];
     if (!bending_acts(t, state)) continue;
-    const int v[3] = {t.a, t.b, t.c};
-    const double kb = kc.bending_n_per_m * t.weight;
-    for (int p = 0; p < 3; ++p) {
-      for (int q = 0; q < 3; ++q) {
-        add(bending_first + 9 * static_cast<int>(k) + 3 * p + q, v[p], v[q],
-            kb * kCoefficient[p] * kCoefficient[q] * identity);
-      }
-    }
+    const std::array<int, 3> v = {t.a, t.b, t.c};
+    bending(bending_first + 9 * static_cast<int>(k), v, kc.bending_n_per_m * t.weight);
   }
 }
 
-// Calls place(a, b) for every block for_each_stiffness_block can give, in
+// Adds -dt^2 K (the stiffness blocks, at their places in the system's
+// values) to the left and dt K v_n to the right, held dv moved right.
+struct StiffnessAssembly {
+  const std::vector<int>& free_index;
+  const std::vector<int>& first_row;
+  const std::vector<char>& all_free;
+  const std::vector<std::array<int, 3>>& block_place;
+  double* values;
+  Eigen::VectorXd* rhs;
+  Eigen::Map<const Eigen::VectorXd> v0;
+  const Eigen::VectorXd& dv_all;
+  double dt2;
+
+  // any block, any vertices: held rows skipped, held columns to the right
+  void add_block(int index, int va, int vb, const Eigen::Matrix3d& block) {
+    const std::array<int, 3>& place = block_place[static_cast<std::size_t>(index)];
+    const int row0 = first_row[static_cast<std::size_t>(va)];
+    for (int p = 0; p < 3; ++p) {
+      const int row = free_index[static_cast<std::size_t>(3 * va + p)];
+      if (row < 0) continue;
+      for (int q = 0; q < 3; ++q) {
+        const double kpq = block(p, q);  // of -K
+        if (kpq == 0.0) continue;        // six of a bending block's nine
+        (*rhs)[row] -= dt2 * kpq * v0[3 * vb + q];
+        if (free_index[static_cast<std::size_t>(3 * vb + q)] >= 0) {
+          values[place[static_cast<std::size_t>(q)] + (row - row0)] += dt2 * kpq;
+        } else {
+          (*rhs)[row] -= dt2 * kpq * dv_all[3 * vb + q];
+        }
+      }
+    }
+  }
+  // a block between two vertices free in every axis, whose rows are
+  // consecutive, already times dt^2: no branch per entry
+  void add_free_block(int index, const Eigen::Matrix3d& scaled) {
+    const std::array<int, 3>& place = block_place[static_cast<std::size_t>(index)];
+    for (int q = 0; q < 3; ++q) {
+      double* column = values + place[static_cast<std::size_t>(q)];
+      for (int p = 0; p < 3; ++p) column[p] += scaled(p, q);
+    }
+  }
+  bool free(int v) const { return all_free[static_cast<std::size_t>(v)] != 0; }
+  Eigen::VectorBlock<Eigen::VectorXd, 3> rhs_of(int v) { return rhs->segment<3>(first_row[static_cast<std::size_t>(v)]); }
+
+  void add_spring(int first, int a, int b, const Eigen::Matrix3d& h) {
+    if (!(free(a) && free(b))) {
+      add_block(first, a, a, h);
+      add_block(first + 1, b, b, h);
+      add_block(first + 2, a, b, -h);
+      add_block(first + 3, b, a, -h);
+      return;
+    }
+    const Eigen::Matrix3d scaled = dt2 * h;
+    const Eigen::Vector3d pull = scaled * (v0.segment<3>(3 * b) - v0.segment<3>(3 * a));
+    rhs_of(a) += pull;
+    rhs_of(b) -= pull;
+    add_free_block(first, scaled);
+    add_free_block(first + 1, scaled);
+    add_free_block(first + 2, -scaled);
+    add_free_block(first + 3, -scaled);
+  }
+
+  void add_bending(int first, const std::array<int, 3>& v, double kb) {
+    if (!(free(v[0]) && free(v[1]) && free(v[2]))) {
+      for (int p = 0; p < 3; ++p) {
+        for (int q = 0; q < 3; ++q) {
+          add_block(first + 3 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)],
+                    kb * kBendingCoefficient[p] * kBendingCoefficient[q] * Eigen::Matrix3d::Identity());
+        }
+      }
+      return;
+    }
+    // K v_n of the term on vertex p: kb c_p (v_a - 2 v_b + v_c)
+    const Eigen::Vector3d curvature = v0.segment<3>(3 * v[0]) - 2.0 * v0.segment<3>(3 * v[1]) + v0.segment<3>(3 * v[2]);
+    for (int p = 0; p < 3; ++p) {
+      const double kp = dt2 * kb * kBendingCoefficient[p];
+      rhs_of(v[static_cast<std::size_t>(p)]) -= kp * curvature;
+      for (int q = 0; q < 3; ++q) {
+        const std::array<int, 3>& place = block_place[static_cast<std::size_t>(first + 3 * p + q)];
+        for (int axis = 0; axis < 3; ++axis) {
+          values[place[static_cast<std::size_t>(axis)] + axis] += kp * kBendingCoefficient[q];
+        }
+      }
+    }
+  }
+};
+
+// Calls place(a, b) for every block for_each_stiffness_term can give, in
 // the order of its index, whether or not the spring or term acts.
 template <class Place>
 void for_each_block_place(const SheetModel& model, Place&& place) {
@@ -175,10 +257,12 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
   }
   system_ = system_pattern(model, free_index_, free_count_);
   first_row_.assign(static_cast<std::size_t>(model.vertex_count()), -1);
+  all_free_.assign(static_cast<std::size_t>(model.vertex_count()), 0);
   for (int v = 0; v < model.vertex_count(); ++v) {
     for (int a = 2; a >= 0; --a) {
       if (free_index_[3 * v + a] >= 0) first_row_[static_cast<std::size_t>(v)] = free_index_[3 * v + a];
     }
+    all_free_[static_cast<std::size_t>(v)] = model.held_axes[static_cast<std::size_t>(v)] == 0;
   }
   for_each_block_place(model, [&](int a, int b) {
     block_place_.push_back(block_place(system_, free_index_, first_row_, a, b));
@@ -245,27 +329,13 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
       rhs[row] = dt_ * (forces_(a, v) + m * g[a] - c * m * state.velocities(a, v));
     }
   }
-  const Eigen::Map<const Eigen::VectorXd> v0(state.velocities.data(), 3 * model_.vertex_count());
-  const double dt2 = dt_ * dt_;
-  for_each_stiffness_block(model_, params_, state, [&](int index, int va, int vb, const Eigen::Matrix3d& block) {
-    const std::array<int, 3>& place = block_place_[static_cast<std::size_t>(index)];
-    const int row0 = first_row_[static_cast<std::size_t>(va)];
-    for (int p = 0; p < 3; ++p) {
-      const int row = free_index_[3 * va + p];
-      if (row < 0) continue;
-      for (int q = 0; q < 3; ++q) {
-        const double kpq = block(p, q);  // of -K
-        if (kpq == 0.0) continue;        // six of a bending block's nine
-        // dt K v_n on the right; -dt^2 K dv on the left, held dv moved right
-        rhs[row] -= dt2 * kpq * v0[3 * vb + q];
-        if (free_index_[3 * vb + q] >= 0) {
-          values[place[static_cast<std::size_t>(q)] + (row - row0)] += dt2 * kpq;
-        } else {
-          rhs[row] -= dt2 * kpq * dv_all[3 * vb + q];
-        }
-      }
-    }
-  });
+  StiffnessAssembly assembly{free_index_, first_row_, all_free_, block_place_, values, &rhs,
+                             Eigen::Map<const Eigen::VectorXd>(state.velocities.data(), 3 * model_.vertex_count()),
+                             dv_all, dt_ * dt_};
+  for_each_stiffness_term(
+      model_, params_, state,
+      [&](int first, int a, int b, const Eigen::Matrix3d& h) { assembly.add_spring(first, a, b, h); },
+      [&](int first, const std::array<int, 3>& v, double kb) { assembly.add_bending(first, v, kb); });
 }
 
 int ImplicitIntegrator::step(SheetState* state) {

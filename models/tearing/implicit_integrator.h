@@ -14,16 +14,23 @@
 // added at places found once. Tearing is the explicit integrator's rule,
 // judged at x_n.
 //
-// Speed (tearing_benchmark BM_ImplicitStep*/200, 10x the explicit step,
-// the seed's twist from rest, median of 3 runs of 5 s, CPU time, shared
-// 2-core machine at load ~2-3, 2026-11-23): Jacobi at 1e-12 (before)
-// 658 ms a step, Jacobi at 1e-8 (the default) 474 ms (2.1 steps/s),
-// multigrid 389 ms (2.6 steps/s, 8.9 CG iterations, the hierarchy's
-// ~0.3 s build included); the 20 steps/s is missed ~8x. A V-cycle costs
-// ~8 matrix-vector products (two Gauss-Seidel sweeps and a residual on the
-// fine level, the coarse levels half as much again), so the solve (~70 %
-// of a step, perf) and the assembly (~17 %) are of a size: more speed
-// needs both cheaper (block 3 x 3 storage, single-precision cycle).
+// Speed (tearing_benchmark, 10x the explicit step, CPU time, shared 2-core
+// machine at load ~3.5-6, 2026-11-23; before = main at 1ab1748, the two
+// binaries run in turn, median of 6): one step of the seed's twist from
+// rest at 200 x 200, Jacobi 529 -> 530 ms (109 CG iterations; no change
+// out of the noise), multigrid 375 -> 234 ms (4.3 steps/s, 8.8 iterations;
+// the 20 steps/s is missed ~4.7x). Whole tears of the seed's twist
+// to 5 cm (BM_ImplicitWholeTear*): 50 cells, 1,189 steps, Jacobi 40.1 s
+// before, 31.4 and 41.6 s after (noise), multigrid 57.4 -> 13.3 and 13.8 s,
+// the same tear, force and work to the digits printed; 100 cells, 2,161
+// steps, multigrid 119 s against Jacobi 306 s (same outcomes). What made the
+// difference: the multigrid smoother by 3 x 3 vertex blocks
+// (sheet_multigrid.h), whose iterations no longer grow as the flaps turn
+// (20 x 20 twist of implicit_integrator_test, steps 1-140: 8 -> 11, where
+// the point smoother went 11 -> 29), and a backward sweep that reads memory
+// in one direction (it had cost 5x a forward one); springs between free
+// vertices are also assembled a block at a time. Left at ~230 ms (perf):
+// the smoother and residual ~30 %, CG's own products ~15 %, assembly ~11 %.
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
@@ -50,16 +57,13 @@ namespace repose {
 struct ImplicitSolverOptions {
   enum class Preconditioner { kMultigrid, kJacobi };
   // kJacobi, the diagonal: ~100-190 iterations at 1e-8, no state kept
-  // between steps; kMultigrid: ~9 iterations on the seed's twist at
-  // 200 x 200 over its first steps, a step ~20 % faster there, but its
-  // iterations grow as the twist turns the flaps (13 -> 43 in 140 steps at
-  // 20 x 20, Jacobi's 107 -> 138), so that over whole tears (the ladder's
-  // implicit rungs, scenes/tearing_convergence.yaml, 10x) it was slower:
-  // 50 cells 76 s against 65 s of CPU, 100 cells 713 s against ~565 s
-  // (2026-11-23, same work per tear length and peak force). Hence Jacobi
-  // stays the default; multigrid waits for a coarse space that follows the
-  // turned sheet (rigid-body modes, smoothed aggregation).
-  Preconditioner preconditioner = Preconditioner::kJacobi;
+  // between steps; kMultigrid: ~9 iterations a step, 8 -> 11 through the
+  // 20 x 20 tear of implicit_integrator_test, and 2.4x (50 cells) and
+  // 2.6x (100 cells) less CPU than Jacobi over whole tears of the seed's
+  // twist (Speed above), hence the default (a point-Gauss-Seidel smoother
+  // had let its iterations grow 11 -> 29 as the flaps turned, and it lost
+  // to Jacobi over whole tears).
+  Preconditioner preconditioner = Preconditioner::kMultigrid;
   // CG stops once |b - A dv| <= relative_tolerance |b|. In (0, 1). Why
   // 1e-8 and not 1e-12: over a 150-step tear of the seed's twist at 10x the
   // explicit step the sheet then stays within 6e-10 of its motion and the
@@ -118,7 +122,8 @@ class ImplicitIntegrator {
   // every entry the system can have (torn springs leave zeros), refilled each step
   Eigen::SparseMatrix<double> system_;
   std::vector<int> first_row_;  // per vertex: the row of its first free axis, or -1
-  // per stiffness block (for_each_stiffness_block's index), per column of
+  std::vector<char> all_free_;  // per vertex: no axis held (its rows first_row_ + 0..2)
+  // per stiffness block (for_each_stiffness_term's index), per column of
   // the block: where its first free row lies in system_'s values, or -1
   std::vector<std::array<int, 3>> block_place_;
   int last_iterations_ = 0;

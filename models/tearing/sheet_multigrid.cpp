@@ -40,45 +40,6 @@ struct Grid {
   int count = 0;
 };
 
-// Where each column's diagonal entry lies in the matrix's values.
-std::vector<int> diagonal_places(const Eigen::SparseMatrix<double>& a) {
-  std::vector<int> places(static_cast<std::size_t>(a.cols()), -1);
-  for (int i = 0; i < a.cols(); ++i) {
-    for (int k = a.outerIndexPtr()[i]; k < a.outerIndexPtr()[i + 1]; ++k) {
-      if (a.innerIndexPtr()[k] == i) places[static_cast<std::size_t>(i)] = k;
-    }
-    REPOSE_DEMAND(places[static_cast<std::size_t>(i)] >= 0);
-  }
-  return places;
-}
-
-// Forward (or backward) Gauss-Seidel sweep for a x = b; a symmetric, both
-// triangles stored column by column (rows ascending), so column i is row i;
-// diagonal from diagonal_places. from_zero: a forward sweep from x = 0,
-// which reads only the entries left of the diagonal (the rest meet zeros).
-void gauss_seidel_sweep(const Eigen::SparseMatrix<double>& a, const std::vector<int>& diagonal,
-                        const Eigen::VectorXd& b, bool forward, bool from_zero, Eigen::VectorXd* x_out) {
-  double* x = x_out->data();
-  const int n = static_cast<int>(a.cols());
-  const int* outer = a.outerIndexPtr();
-  const int* rows = a.innerIndexPtr();
-  const double* values = a.valuePtr();
-  for (int step = 0; step < n; ++step) {
-    const int i = forward ? step : n - 1 - step;
-    // row i of a x, the diagonal included, in four partial sums: one sum
-    // chains every add on the last (measured ~1.5x slower)
-    double sum[4] = {0.0, 0.0, 0.0, 0.0};
-    const int end = from_zero ? diagonal[static_cast<std::size_t>(i)] : outer[i + 1];
-    int k = outer[i];
-    for (; k + 4 <= end; k += 4) {
-      for (int u = 0; u < 4; ++u) sum[u] += values[k + u] * x[rows[k + u]];
-    }
-    for (; k < end; ++k) sum[0] += values[k] * x[rows[k]];
-    const double ax = (sum[0] + sum[1]) + (sum[2] + sum[3]);
-    x[i] += (b[i] - ax) / values[diagonal[static_cast<std::size_t>(i)]];
-  }
-}
-
 // 1 / sum_j |a_ij| per row: the l1-Jacobi smoother's diagonal, which
 // is at least a in the SPD sense, so its sweeps converge without a weight.
 Eigen::VectorXd inverse_l1_rows(const Eigen::SparseMatrix<double>& a) {
@@ -98,7 +59,7 @@ struct SheetMultigrid::Level {
   Eigen::SparseMatrix<double> interpolation;  // finer x this level's unknowns
   Eigen::SparseMatrix<double> restriction;    // its transpose
   Eigen::SparseMatrix<double> matrix;         // P^T A_finer P
-  std::vector<int> diagonal;                  // diagonal_places(matrix)
+  VertexBlockMatrix blocks;                   // matrix in float 3 x 3 blocks (Gauss-Seidel)
   Eigen::VectorXd inverse_l1;                 // inverse_l1_rows(matrix)
   Grid grid;
 };
@@ -253,7 +214,7 @@ std::pair<Eigen::SparseMatrix<double>, Grid> interpolation_from_coarse(const Gri
 void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
   REPOSE_DEMAND(system.rows() == free_count_ && system.cols() == free_count_);
   levels_.clear();
-  fine_diagonal_ = diagonal_places(system);
+  fine_blocks_ = VertexBlockMatrix(system, free_index_);
   fine_inverse_l1_ = inverse_l1_rows(system);
   Grid grid{vertices_x_, vertices_y_, free_index_, free_count_};
   const Eigen::SparseMatrix<double>* matrix = &system;
@@ -264,7 +225,7 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
     const Eigen::SparseMatrix<double> product = *matrix * level->interpolation;
     level->matrix = level->restriction * product;
     level->matrix.makeCompressed();
-    level->diagonal = diagonal_places(level->matrix);
+    level->blocks = VertexBlockMatrix(level->matrix, level->grid.index);
     level->inverse_l1 = inverse_l1_rows(level->matrix);
     grid = level->grid;
     levels_.push_back(std::move(level));
@@ -285,26 +246,29 @@ Eigen::VectorXd SheetMultigrid::apply(const Eigen::SparseMatrix<double>& system,
 
 void SheetMultigrid::update_fine(const Eigen::SparseMatrix<double>& system) {
   REPOSE_DEMAND(built() && system.rows() == free_count_);
-  fine_inverse_l1_ = inverse_l1_rows(system);
+  if (options_.smoother == SheetMultigridOptions::Smoother::kGaussSeidel) {
+    fine_blocks_.refresh(system);
+  } else {
+    fine_inverse_l1_ = inverse_l1_rows(system);
+  }
 }
 
 Eigen::VectorXd SheetMultigrid::cycle(std::size_t level, const Eigen::SparseMatrix<double>& matrix,
                                       const Eigen::VectorXd& r) const {
   if (level == levels_.size()) return coarsest_->solve(r);
   const Level& coarse = *levels_[level];
-  Eigen::VectorXd x;
   if (options_.smoother == SheetMultigridOptions::Smoother::kGaussSeidel) {
-    const std::vector<int>& diagonal = level == 0 ? fine_diagonal_ : levels_[level - 1]->diagonal;
-    x = Eigen::VectorXd::Zero(r.size());
-    for (int s = 0; s < options_.smoothing_sweeps; ++s) gauss_seidel_sweep(matrix, diagonal, r, true, s == 0, &x);
-    // a^T x = a x (symmetric), which Eigen runs as a dot product per column
-    const Eigen::VectorXd residual = r - matrix.transpose() * x;
-    x += coarse.interpolation * cycle(level + 1, coarse.matrix, coarse.restriction * residual);
-    for (int s = 0; s < options_.smoothing_sweeps; ++s) gauss_seidel_sweep(matrix, diagonal, r, false, false, &x);
-    return x;
+    const VertexBlockMatrix& blocks = level == 0 ? fine_blocks_ : levels_[level - 1]->blocks;
+    const Eigen::VectorXd b = blocks.to_blocks(r);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+    for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, true, s == 0, &x);
+    const Eigen::VectorXd residual = blocks.from_blocks(blocks.residual(b, x));
+    x += blocks.to_blocks(coarse.interpolation * cycle(level + 1, coarse.matrix, coarse.restriction * residual));
+    for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, false, false, &x);
+    return blocks.from_blocks(x);
   }
   const Eigen::VectorXd& inverse_l1 = level == 0 ? fine_inverse_l1_ : levels_[level - 1]->inverse_l1;
-  x = inverse_l1.cwiseProduct(r);  // the first sweep from x = 0
+  Eigen::VectorXd x = inverse_l1.cwiseProduct(r);  // the first sweep from x = 0
   Eigen::VectorXd residual = r - matrix * x;
   for (int s = 1; s < options_.smoothing_sweeps; ++s) {
     x += inverse_l1.cwiseProduct(residual);

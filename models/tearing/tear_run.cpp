@@ -26,6 +26,7 @@ void TearRunOptions::validate() const {
   if (!(std::isfinite(stop_at_depth_m) && stop_at_depth_m >= 0.0)) {
     throw FieldError("stop_at_depth_m", "a depth >= 0 m", fmt::format("{}", stop_at_depth_m));
   }
+  implicit_solver.validate();
 }
 
 namespace {
@@ -63,7 +64,7 @@ TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearR
     ExplicitIntegrator integrator(model, params, run.time_step_s);
     pull(model, options, progress, &integrator, &run);
   } else {
-    ImplicitIntegrator integrator(model, params, run.time_step_s);
+    ImplicitIntegrator integrator(model, params, run.time_step_s, options.implicit_solver);
     pull(model, options, progress, &integrator, &run);
   }
   REPOSE_DEMAND(run.state.positions.allFinite());

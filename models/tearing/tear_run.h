@@ -3,6 +3,7 @@
 // given time, what the grips felt, and the tear it made.
 
 #include "models/core/base/progress.h"
+#include "models/tearing/implicit_integrator.h"
 #include "models/tearing/sheet_model.h"
 #include "models/tearing/sheet_params.h"
 #include "models/tearing/sheet_state.h"
@@ -20,6 +21,9 @@ struct TearRunOptions {
   // Stop early once the tear has reached this depth below the top edge (m);
   // 0: run the whole duration.
   double stop_at_depth_m = 0.0;
+  // The implicit integrator's linear solver (implicit_integrator.h); not
+  // read from scenes: the benchmark compares preconditioners over whole tears.
+  ImplicitSolverOptions implicit_solver;
 
   void validate() const;  // throws FieldError (an InputError) naming the field
 };

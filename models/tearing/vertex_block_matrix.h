@@ -1,0 +1,63 @@
+#pragma once
+// A single-precision copy of a sheet system stored as 3 x 3 blocks, one
+// per pair of coupled vertices: the multigrid smoother's matrix
+// (sheet_multigrid.h).
+//
+// Why: the smoother's sweeps and residuals read the whole matrix once each
+// and are bound by memory, not arithmetic. Eigen's scalar storage costs
+// 12 bytes a non-zero (a double and a row index); 3 x 3 float blocks with
+// one column index a block cost 4.4. A preconditioner may be inexact, so
+// the rounding to float (7 digits, against a condition number ~400) only
+// changes the iterations, never the converged answer, and the rounded
+// matrix is still exactly symmetric (both triangles round alike), so the
+// V-cycle stays a symmetric operator as conjugate gradients require.
+//
+// Vectors here ("block vectors") hold 3 entries per block row (vertex with
+// a free axis), in the order of the vertices; a held axis holds 0.
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace repose {
+
+class VertexBlockMatrix {
+ public:
+  VertexBlockMatrix() = default;
+  // The pattern and values of `a` (square, symmetric, both triangles
+  // stored, compressed); index per (vertex, axis) 3 v + axis: its row in a,
+  // or -1 when that axis is not an unknown. Every row of a must be named.
+  VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const std::vector<int>& index);
+
+  // The values of a later matrix of a's pattern (one gather).
+  void refresh(const Eigen::SparseMatrix<double>& a);
+
+  int block_rows() const { return static_cast<int>(outer_.size()) - 1; }
+  // x (a's rows) as a block vector, and back (held axes dropped).
+  Eigen::VectorXd to_blocks(const Eigen::VectorXd& x) const;
+  Eigen::VectorXd from_blocks(const Eigen::VectorXd& blocks) const;
+
+  // One block Gauss-Seidel sweep for A x = b (block vectors): per vertex
+  // in turn (forward or backward), x_i = D_i^-1 (b_i - sum_{j != i} A_ij x_j)
+  // with D_i the vertex's diagonal block over its free axes. from_zero: a
+  // forward sweep from x = 0, which reads only the blocks left of the
+  // diagonal. A forward sweep and a backward one make a symmetric smoother.
+  void gauss_seidel_sweep(const Eigen::VectorXd& b, bool forward, bool from_zero, Eigen::VectorXd* x) const;
+  // b - A x (block vectors).
+  Eigen::VectorXd residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x) const;
+
+ private:
+  void invert_diagonal();
+
+  int scalar_rows_ = 0;          // a's rows
+  std::vector<int> row_of_;       // 3 per block row: a's row of each axis, or -1
+  std::vector<int> outer_;        // per block row its first block, block_rows + 1 entries
+  std::vector<int> column_;       // per block: its block column
+  std::vector<int> diagonal_;     // per block row: its diagonal block
+  std::vector<float> values_;     // 9 per block, row-major
+  std::vector<int> source_;       // 9 per block: where in a's values, or -1
+  std::vector<double> inverse_;   // 9 per block row: D_i^-1, zero on held axes
+};
+
+}  // namespace repose

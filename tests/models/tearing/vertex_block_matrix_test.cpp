@@ -1,0 +1,120 @@
+// The float 3 x 3 block copy of a sheet system: its residual is the
+// matrix's to float rounding, held axes stay out, its Gauss-Seidel sweeps
+// solve the system, and a refresh follows new values of the pattern.
+#include "models/tearing/vertex_block_matrix.h"
+
+#include <random>
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+#include <gtest/gtest.h>
+
+namespace repose {
+namespace {
+
+// A chain of `vertices` vertices coupled to the next two by random positive
+// semidefinite blocks, unit mass; vertex 0 held in all axes, vertex 2 in x
+// only (index -1), so some blocks are partly held.
+struct BlockSystem {
+  std::vector<int> index;
+  Eigen::SparseMatrix<double> matrix;
+};
+
+BlockSystem block_system(int vertices, double stiffness, std::uint64_t seed) {
+  BlockSystem s;
+  s.index.assign(static_cast<std::size_t>(3 * vertices), -1);
+  int count = 0;
+  for (int v = 0; v < vertices; ++v) {
+    for (int a = 0; a < 3; ++a) {
+      if (v != 0 && !(v == 2 && a == 0)) s.index[static_cast<std::size_t>(3 * v + a)] = count++;
+    }
+  }
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<Eigen::Triplet<double>> triplets;
+  const auto add = [&](int va, int vb, const Eigen::Matrix3d& h) {
+    for (int p = 0; p < 3; ++p) {
+      for (int q = 0; q < 3; ++q) {
+        const int row = s.index[static_cast<std::size_t>(3 * va + p)], col = s.index[static_cast<std::size_t>(3 * vb + q)];
+        if (row >= 0 && col >= 0) triplets.emplace_back(row, col, h(p, q));
+      }
+    }
+  };
+  for (int v = 0; v < vertices; ++v) add(v, v, Eigen::Matrix3d::Identity());
+  for (int v = 0; v < vertices; ++v) {
+    for (int step = 1; step <= 2 && v + step < vertices; ++step) {
+      const Eigen::Vector3d n = Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng)).normalized();
+      const Eigen::Matrix3d h = stiffness * (n * n.transpose() + 0.1 * Eigen::Matrix3d::Identity());
+      add(v, v, h);
+      add(v + step, v + step, h);
+      add(v, v + step, -h);
+      add(v + step, v, -h);
+    }
+  }
+  s.matrix.resize(count, count);
+  s.matrix.setFromTriplets(triplets.begin(), triplets.end());
+  s.matrix.makeCompressed();
+  return s;
+}
+
+Eigen::VectorXd random_vector(Eigen::Index n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::VectorXd x(n);
+  for (Eigen::Index i = 0; i < n; ++i) x[i] = uniform(rng);
+  return x;
+}
+
+TEST(VertexBlockMatrix, ItsResidualIsTheMatrixsToFloatRounding) {
+  const BlockSystem s = block_system(12, 30.0, 1);
+  const VertexBlockMatrix blocks(s.matrix, s.index);
+  EXPECT_EQ(blocks.block_rows(), 11);  // vertex 0 has no unknown
+  const Eigen::VectorXd x = random_vector(s.matrix.rows(), 2), b = random_vector(s.matrix.rows(), 3);
+  EXPECT_EQ(blocks.from_blocks(blocks.to_blocks(x)), x);
+  const Eigen::VectorXd exact = b - s.matrix * x;
+  const Eigen::VectorXd r = blocks.from_blocks(blocks.residual(blocks.to_blocks(b), blocks.to_blocks(x)));
+  EXPECT_LT((r - exact).norm(), 1e-6 * (b.norm() + s.matrix.norm() * x.norm()));
+  // the held x axis of vertex 2 (block row 1) stays zero in block vectors
+  EXPECT_EQ(blocks.residual(blocks.to_blocks(b), blocks.to_blocks(x))[3], 0.0);
+}
+
+TEST(VertexBlockMatrix, SymmetricGaussSeidelSweepsSolveTheSystem) {
+  const BlockSystem s = block_system(12, 30.0, 4);
+  const VertexBlockMatrix blocks(s.matrix, s.index);
+  const Eigen::VectorXd b = random_vector(s.matrix.rows(), 5);
+  const Eigen::VectorXd bb = blocks.to_blocks(b);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(bb.size());
+  blocks.gauss_seidel_sweep(bb, true, true, &x);
+  for (int sweep = 0; sweep < 400; ++sweep) {
+    blocks.gauss_seidel_sweep(bb, false, false, &x);
+    blocks.gauss_seidel_sweep(bb, true, false, &x);
+  }
+  EXPECT_EQ(x[3], 0.0);  // the held axis
+  // solved to the float rounding of the matrix
+  EXPECT_LT((s.matrix * blocks.from_blocks(x) - b).norm(), 1e-5 * b.norm());
+}
+
+TEST(VertexBlockMatrix, ASweepFromZeroIsAFullSweepFromZero) {
+  const BlockSystem s = block_system(9, 10.0, 6);
+  const VertexBlockMatrix blocks(s.matrix, s.index);
+  const Eigen::VectorXd bb = blocks.to_blocks(random_vector(s.matrix.rows(), 7));
+  Eigen::VectorXd half = Eigen::VectorXd::Zero(bb.size()), full = half;
+  blocks.gauss_seidel_sweep(bb, true, true, &half);
+  blocks.gauss_seidel_sweep(bb, true, false, &full);
+  EXPECT_LT((half - full).norm(), 1e-14 * full.norm());
+}
+
+TEST(VertexBlockMatrix, ARefreshFollowsNewValuesOfThePattern) {
+  const BlockSystem s = block_system(10, 5.0, 8);
+  VertexBlockMatrix blocks(s.matrix, s.index);
+  const Eigen::SparseMatrix<double> doubled = 2.0 * s.matrix;
+  blocks.refresh(doubled);
+  const Eigen::VectorXd x = random_vector(s.matrix.rows(), 9);
+  const Eigen::VectorXd ax = -blocks.from_blocks(blocks.residual(Eigen::VectorXd::Zero(3 * blocks.block_rows()),
+                                                                  blocks.to_blocks(x)));
+  EXPECT_LT((ax - doubled * x).norm(), 1e-6 * (doubled * x).norm());
+}
+
+}  // namespace
+}  // namespace repose
