@@ -332,7 +332,7 @@ Pose FreeBodyDrive::Impl::press(Driven& d, const HeightField& ground) {
   const Footprint fp = footprint_of(box, model.grid);
   d.bearing_sinkage_m = 0.0;
   if (fp.empty()) return pose;
-  const DepthImage underside = depth_image_cpu({mesh}, fp.sub_grid(model.grid), ViewFrom::kBelow);
+  const DepthImage underside = depth_image_cpu(mesh, fp.sub_grid(model.grid), ViewFrom::kBelow);
   pose.position_m.z() += intersection_m(underside, fp, ground);
   const double surface = initial.sample(pose.position_m.x(), pose.position_m.y());
   const double sinkage = surface - lowest_z(d.shape, pose.position_m, pose.orientation.toRotationMatrix());
