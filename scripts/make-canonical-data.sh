@@ -29,6 +29,14 @@ if [[ -z "$repose" || ! -x "$repose" ]]; then
   exit 2
 fi
 
+# the manifests in data/ name the settled bed's folder: relative when the
+# cache is inside the repository, by an absolute path (which the tests refuse
+# in committed data) when it is not
+if [[ -n "${REPOSE_CACHE:-}" && "$(realpath -m "$REPOSE_CACHE")/" != "$repo"/* ]]; then
+  echo "make-canonical-data: REPOSE_CACHE=$REPOSE_CACHE is outside the repository, so data/ would hold its absolute path; unset it (REPO/cache) or copy the beds into REPO/cache" >&2
+  exit 2
+fi
+
 # name -> scene (relative to the repository) and, for the scale-separated
 # references, the seed of the random bed (`--set seed=N`): NAME/seedN.
 declare -A scenes=(
