@@ -10,6 +10,7 @@
 
 #include "models/core/base/error.h"
 #include "models/core/io/input_file.h"
+#include "models/core/run/repository_path.h"
 #include "models/core/config/yaml_reader.h"
 
 namespace repose {
@@ -237,7 +238,7 @@ std::string experiment_to_yaml(const Experiment& e) {
   for (const ExperimentRun& run : e.runs) {
     out << YAML::BeginMap;
     out << YAML::Key << "name" << YAML::Value << run.name;
-    out << YAML::Key << "scene" << YAML::Value << run.scene_path;
+    out << YAML::Key << "scene" << YAML::Value << repository_relative(run.scene_path);
     out << YAML::Key << "solver" << YAML::Value << run.solver;
     out << YAML::Key << "overrides" << YAML::Value << YAML::BeginMap;
     for (const SceneOverride& o : run.overrides) out << YAML::Key << o.key << YAML::Value << o.value;
@@ -247,7 +248,7 @@ std::string experiment_to_yaml(const Experiment& e) {
   out << YAML::Key << "measures" << YAML::Value << YAML::Flow << YAML::BeginSeq;
   for (const auto& m : e.measures) out << m;
   out << YAML::EndSeq;
-  out << YAML::Key << "plot" << YAML::Value << e.plot_path;
+  out << YAML::Key << "plot" << YAML::Value << repository_relative(e.plot_path);
   out << YAML::EndMap;
   return std::string(out.c_str()) + "\n";
 }

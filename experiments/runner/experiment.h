@@ -58,8 +58,9 @@ Experiment load_experiment(const std::string& path, const SolverRegistry& regist
 Experiment load_experiment_from_string(const std::string& yaml, const std::string& pretend_path,
                                        const SolverRegistry& registry);
 
-// The resolved experiment (absolute paths, sweeps expanded) as YAML, for the
-// experiment manifest.
+// The resolved experiment (sweeps expanded; scene and plot paths relative
+// to the repository when inside it, as a committed manifest must name them)
+// as YAML, for the experiment manifest.
 std::string experiment_to_yaml(const Experiment& experiment);
 
 }  // namespace repose

@@ -155,6 +155,19 @@ measures: [steps]
   }
 }
 
+// A manifest committed under data/ must not hold the absolute paths of the
+// machine that made it: a shipped experiment's resolved YAML names its
+// scenes and plot relative to the repository.
+TEST(ExperimentFile, TheResolvedExperimentNamesShippedFilesRelativeToTheRepository) {
+  const std::string root = REPOSE_SOURCE_DIR;
+  const Experiment e =
+      load_experiment(root + "/experiments/dem_column_collapse_l30_wide_large.yaml", solver_registry());
+  const std::string resolved = experiment_to_yaml(e);
+  EXPECT_EQ(resolved.find(root), std::string::npos) << resolved;
+  EXPECT_NE(resolved.find("scene: experiments/scenes/dem_column_slot.yaml"), std::string::npos) << resolved;
+  EXPECT_NE(resolved.find("plot: experiments/plots/dem_column_collapse.py"), std::string::npos) << resolved;
+}
+
 TEST(ExperimentFile, UnknownKeysAreErrorsAtTheirLine) {
   ExperimentDir top("runs: [{name: a, scene: scenes/press.yaml}]\ncolour: red\n");
   const std::string top_error = load_error(top.experiment);
