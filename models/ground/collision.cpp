@@ -58,9 +58,10 @@ Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, Un
   return find_underside_of_faces_down(faces_turned(mesh, true), ground, renderer, reach_cells);
 }
 
-Underside find_underside_of_faces_down(const TriangleMesh& faces_down, const HeightField& ground,
-                                       UndersideRenderer& renderer, int reach_cells) {
-  const Aabb box = bounding_box(faces_down);
+namespace {
+
+Underside underside_in_box(const TriangleMesh& faces_down, const Aabb& box, const HeightField& ground,
+                           UndersideRenderer& renderer, int reach_cells) {
   const Footprint fp = footprint_of(box, ground.grid());
   if (fp.empty()) return {};
   // bounding boxes first: the object is above the ground under its footprint (and within reach)
@@ -82,6 +83,18 @@ Underside find_underside_of_faces_down(const TriangleMesh& faces_down, const Hei
     }
   }
   return u;
+}
+
+}  // namespace
+
+Underside find_underside_of_faces_down(const TriangleMesh& faces_down, const HeightField& ground,
+                                       UndersideRenderer& renderer, int reach_cells) {
+  return underside_in_box(faces_down, bounding_box(faces_down), ground, renderer, reach_cells);
+}
+
+Underside find_underside_of_faces_down(const FacesDown& faces_down, const HeightField& ground,
+                                       UndersideRenderer& renderer, int reach_cells) {
+  return underside_in_box(faces_down.mesh, faces_down.box, ground, renderer, reach_cells);
 }
 
 }  // namespace repose

@@ -1,5 +1,6 @@
 #include "models/ground/swept_mesh.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -137,6 +138,64 @@ TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const Swep
     out.F.row(n++) << a + offset, b + offset, c + offset;
   }
   out.F.conservativeResize(n, 3);
+  return out;
+}
+
+namespace {
+
+// The box of the body at both poses from its box at the later one: d has
+// no x or y, and rounding keeps the order of z - dz, so the lowest and
+// highest vertex at the earlier pose are those at the later one, shifted.
+Aabb box_at_both_poses(const Aabb& later, const Eigen::Vector3d& d) {
+  Aabb box = later;
+  box.min.z() = std::min(later.min.z(), later.min.z() - d.z());
+  box.max.z() = std::max(later.max.z(), later.max.z() - d.z());
+  return box;
+}
+
+}  // namespace
+
+FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                    const Pose& to) {
+  const Eigen::Index nv = body.V.rows(), nf = body.F.rows();
+  REPOSE_DEMAND(swept.face_normal.size() == static_cast<std::size_t>(nf));
+  const Eigen::Vector3d d = to.position_m - from.position_m;
+  REPOSE_DEMAND(is_vertical(d));
+  if (d.squaredNorm() == 0.0) return faces_down_of(transformed(body, to));
+  const MatrixX3dR later = transformed_vertices(body.V, to);
+  FacesDown out;
+  out.box = box_at_both_poses(bounding_box(later), d);
+  // as vertical_sweep_seen_from_below: vertex v < nv at the earlier pose,
+  // nv + v at the later; slot: its row in the output, -1 until used
+  std::vector<int> slot(2 * static_cast<std::size_t>(nv), -1);
+  std::vector<int> used;
+  out.mesh.F.resize(nf, 3);
+  const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
+  Eigen::Index n = 0;
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    const int a = body.F(f, 0), b = body.F(f, 1), c = body.F(f, 2);
+    if (!is_turned(later.row(a), later.row(b), later.row(c), true)) continue;
+    const int offset = is_front(swept, static_cast<std::size_t>(f), d_body) ? static_cast<int>(nv) : 0;
+    for (int k = 0; k < 3; ++k) {
+      int& s = slot[static_cast<std::size_t>(body.F(f, k) + offset)];
+      if (s < 0) {
+        s = static_cast<int>(used.size());
+        used.push_back(body.F(f, k) + offset);
+      }
+      out.mesh.F(n, k) = s;
+    }
+    ++n;
+  }
+  out.mesh.F.conservativeResize(n, 3);
+  out.mesh.V.resize(static_cast<Eigen::Index>(used.size()), 3);
+  for (std::size_t r = 0; r < used.size(); ++r) {
+    const Eigen::Index row = static_cast<Eigen::Index>(r);
+    if (used[r] >= nv) {
+      out.mesh.V.row(row) = later.row(used[r] - nv);
+    } else {
+      out.mesh.V.row(row) = later.row(used[r]) - d.transpose();  // as vertices_at_both_poses
+    }
+  }
   return out;
 }
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "models/core/geometry/triangle_mesh.h"
+#include "models/ground/faces_down.h"
 
 namespace repose {
 
@@ -51,5 +52,11 @@ bool is_vertical(const Eigen::Vector3d& d);
 // press or lift needs no silhouette.
 TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
                                             const Pose& to);
+// The same faces in the same order at the same coordinates, on the
+// vertices they use alone (numbered as first used), with the bounding box
+// of the whole swept mesh (faces_down.h), found from the body at `to`
+// alone: what a step renders, with a quarter of the vertices.
+FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                    const Pose& to);
 
 }  // namespace repose
