@@ -42,8 +42,11 @@ class CpuUndersideRenderer : public UndersideRenderer {
  public:
   std::string name() const override { return "cpu"; }
   DepthImage render_below(const TriangleMesh& mesh, const Grid& sub, double, double) override {
-    return depth_image_cpu(mesh, sub, ViewFrom::kBelow);
+    return cache_.render(mesh, sub, ViewFrom::kBelow);
   }
+
+ private:
+  DepthImageCpuCache cache_;  // a body pressed straight down is drawn again from its last coverage
 };
 
 }  // namespace

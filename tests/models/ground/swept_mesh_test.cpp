@@ -158,5 +158,37 @@ TEST(VerticalSweepSeenFromBelow, IsVerticalMeansNoHorizontalPartAtAll) {
   EXPECT_FALSE(is_vertical(Eigen::Vector3d(0, -1e-18, -0.01)));
 }
 
+// The compacted faces down a step renders: per face the same corners at the
+// same coordinates, in the same order, and the whole swept mesh's box.
+TEST(VerticalSweepFacesDown, IsTheSweptMeshsFacesTurnedDownOnTheVerticesTheyUse) {
+  const std::vector<std::pair<std::string, TriangleMesh>> bodies = {
+      {"sphere", make_sphere(0.03, 32)},
+      {"box", make_box(Eigen::Vector3d(0.02, 0.03, 0.01))},
+      {"cylinder", make_cylinder(0.025, 0.02, 24)}};
+  const std::vector<Eigen::Quaterniond> turns = {
+      Eigen::Quaterniond::Identity(), Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 0.5).normalized()))};
+  for (const auto& [name, body] : bodies) {
+    const SweptBody swept = make_swept_body(body);
+    for (std::size_t t = 0; t < turns.size(); ++t) {
+      for (const double dz : {-0.004, 0.0035, -1e-7, 0.0}) {
+        Pose from = at_position(0.0013, -0.0021, 0.05), to = from;
+        from.orientation = to.orientation = turns[t];
+        to.position_m.z() += dz;
+        const std::string what = name + " turn " + std::to_string(t) + " dz " + std::to_string(dz);
+        const FacesDown fast = vertical_sweep_faces_down(body, swept, from, to);
+        const TriangleMesh full = faces_turned(swept_mesh(body, swept, from, to), true);
+        ASSERT_EQ(fast.mesh.F.rows(), full.F.rows()) << what;
+        for (Eigen::Index f = 0; f < full.F.rows(); ++f) {
+          for (int k = 0; k < 3; ++k) {
+            EXPECT_TRUE(fast.mesh.V.row(fast.mesh.F(f, k)) == full.V.row(full.F(f, k))) << what << " face " << f;
+          }
+        }
+        const Aabb box = bounding_box(full);
+        EXPECT_TRUE(fast.box.min == box.min && fast.box.max == box.max) << what;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace repose
