@@ -133,7 +133,9 @@ void substep(const GroundModel& model, const GroundParams& params, const std::ve
     if (model.options.sweep && moved(from[o], to[o], model.grid.cell_size_m)) {
       REPOSE_DEMAND(model.swept_bodies.size() == n_objects);
       const SweptBody& swept = model.swept_bodies[o];
-      faces_down[o] = is_vertical(motion[o]) ? vertical_sweep_faces_down(object.body, swept, from[o], to[o])
+      state->sweep_caches.resize(n_objects);
+      faces_down[o] = is_vertical(motion[o]) ? vertical_sweep_faces_down(object.body, swept, from[o], to[o],
+                                                                         &state->sweep_caches[o])
                                              : faces_down_of(swept_mesh(object.body, swept, from[o], to[o]));
       ++report->swept_objects;
     } else {

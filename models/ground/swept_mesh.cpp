@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <unordered_map>
 #include <vector>
 
@@ -155,8 +156,58 @@ Aabb box_at_both_poses(const Aabb& later, const Eigen::Vector3d& d) {
 
 }  // namespace
 
+namespace {
+
+bool same_bits(const void* a, const void* b, std::size_t n) { return std::memcmp(a, b, n) == 0; }
+
+// The faces turned down of the body at `to`, kept while its orientation and
+// its x and y stay the same bit for bit (so do the vertices' x and y).
+void update_turned(const TriangleMesh& body, const MatrixX3dR& later, const Pose& to, VerticalSweepCache* cache) {
+  const Eigen::Quaterniond& q = to.orientation;
+  if (cache->valid && same_bits(q.coeffs().data(), cache->orientation.coeffs().data(), 4 * sizeof(double)) &&
+      same_bits(&to.position_m.x(), &cache->x_m, sizeof(double)) &&
+      same_bits(&to.position_m.y(), &cache->y_m, sizeof(double))) {
+    return;
+  }
+  cache->valid = true;
+  cache->orientation = q;
+  cache->x_m = to.position_m.x();
+  cache->y_m = to.position_m.y();
+  cache->turned.clear();
+  cache->front.clear();
+  for (Eigen::Index f = 0; f < body.F.rows(); ++f) {
+    const int a = body.F(f, 0), b = body.F(f, 1), c = body.F(f, 2);
+    // turned as at either pose: the poses differ in z alone
+    if (is_turned(later.row(a), later.row(b), later.row(c), true)) cache->turned.push_back(static_cast<int>(f));
+  }
+}
+
+// The faces on the vertices they use, numbered as first used, for these front faces.
+void update_faces(const TriangleMesh& body, const std::vector<char>& front, VerticalSweepCache* cache) {
+  if (front == cache->front && cache->faces.rows() == static_cast<Eigen::Index>(cache->turned.size())) return;
+  cache->front = front;
+  const Eigen::Index nv = body.V.rows();
+  std::vector<int> slot(2 * static_cast<std::size_t>(nv), -1);  // its row in the output, -1 until used
+  cache->used.clear();
+  cache->faces.resize(static_cast<Eigen::Index>(cache->turned.size()), 3);
+  for (std::size_t t = 0; t < cache->turned.size(); ++t) {
+    const int offset = front[t] ? static_cast<int>(nv) : 0;
+    for (int k = 0; k < 3; ++k) {
+      const int v = body.F(cache->turned[t], k) + offset;
+      int& s = slot[static_cast<std::size_t>(v)];
+      if (s < 0) {
+        s = static_cast<int>(cache->used.size());
+        cache->used.push_back(v);
+      }
+      cache->faces(static_cast<Eigen::Index>(t), k) = s;
+    }
+  }
+}
+
+}  // namespace
+
 FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
-                                    const Pose& to) {
+                                    const Pose& to, VerticalSweepCache* cache) {
   const Eigen::Index nv = body.V.rows(), nf = body.F.rows();
   REPOSE_DEMAND(swept.face_normal.size() == static_cast<std::size_t>(nf));
   const Eigen::Vector3d d = to.position_m - from.position_m;
@@ -165,38 +216,32 @@ FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& s
   const MatrixX3dR later = transformed_vertices(body.V, to);
   FacesDown out;
   out.box = box_at_both_poses(bounding_box(later), d);
-  // as vertical_sweep_seen_from_below: vertex v < nv at the earlier pose,
-  // nv + v at the later; slot: its row in the output, -1 until used
-  std::vector<int> slot(2 * static_cast<std::size_t>(nv), -1);
-  std::vector<int> used;
-  out.mesh.F.resize(nf, 3);
+  update_turned(body, later, to, cache);
+  // as vertical_sweep_seen_from_below: a front face at the later pose
   const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
-  Eigen::Index n = 0;
-  for (Eigen::Index f = 0; f < nf; ++f) {
-    const int a = body.F(f, 0), b = body.F(f, 1), c = body.F(f, 2);
-    if (!is_turned(later.row(a), later.row(b), later.row(c), true)) continue;
-    const int offset = is_front(swept, static_cast<std::size_t>(f), d_body) ? static_cast<int>(nv) : 0;
-    for (int k = 0; k < 3; ++k) {
-      int& s = slot[static_cast<std::size_t>(body.F(f, k) + offset)];
-      if (s < 0) {
-        s = static_cast<int>(used.size());
-        used.push_back(body.F(f, k) + offset);
-      }
-      out.mesh.F(n, k) = s;
-    }
-    ++n;
+  std::vector<char> front(cache->turned.size());
+  for (std::size_t t = 0; t < front.size(); ++t) {
+    front[t] = is_front(swept, static_cast<std::size_t>(cache->turned[t]), d_body);
   }
-  out.mesh.F.conservativeResize(n, 3);
-  out.mesh.V.resize(static_cast<Eigen::Index>(used.size()), 3);
-  for (std::size_t r = 0; r < used.size(); ++r) {
+  update_faces(body, front, cache);
+  out.mesh.F = cache->faces;
+  out.mesh.V.resize(static_cast<Eigen::Index>(cache->used.size()), 3);
+  for (std::size_t r = 0; r < cache->used.size(); ++r) {
     const Eigen::Index row = static_cast<Eigen::Index>(r);
-    if (used[r] >= nv) {
-      out.mesh.V.row(row) = later.row(used[r] - nv);
+    const int v = cache->used[r];
+    if (v >= nv) {
+      out.mesh.V.row(row) = later.row(v - nv);
     } else {
-      out.mesh.V.row(row) = later.row(used[r]) - d.transpose();  // as vertices_at_both_poses
+      out.mesh.V.row(row) = later.row(v) - d.transpose();  // as vertices_at_both_poses
     }
   }
   return out;
+}
+
+FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                    const Pose& to) {
+  VerticalSweepCache cache;
+  return vertical_sweep_faces_down(body, swept, from, to, &cache);
 }
 
 TriangleMesh swept_mesh(const TriangleMesh& body, const Pose& from, const Pose& to) {

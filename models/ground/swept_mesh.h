@@ -52,10 +52,28 @@ bool is_vertical(const Eigen::Vector3d& d);
 // press or lift needs no silhouette.
 TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
                                             const Pose& to);
+// What vertical_sweep_faces_down keeps between calls for one body, so that
+// a press or lift does not test every face every step: the faces turned
+// down at the last orientation and horizontal position (the test reads x
+// and y alone, which these fix bit for bit), and the faces and vertex
+// order made from them at the last choice of front faces.
+struct VerticalSweepCache {
+  bool valid = false;
+  Eigen::Quaterniond orientation;
+  double x_m = 0.0, y_m = 0.0;
+  std::vector<int> turned;  // the faces turned down, in order
+  std::vector<char> front;  // per turned face: placed at the later pose
+  MatrixX3iR faces;         // into `used`
+  std::vector<int> used;    // vertex v < nv at the earlier pose, nv + v at the later, in order of first use
+};
+
 // The same faces in the same order at the same coordinates, on the
 // vertices they use alone (numbered as first used), with the bounding box
 // of the whole swept mesh (faces_down.h), found from the body at `to`
-// alone: what a step renders, with a quarter of the vertices.
+// alone: what a step renders, with a quarter of the vertices. cache: kept
+// by the caller for this body (any contents give the same result).
+FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                    const Pose& to, VerticalSweepCache* cache);
 FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
                                     const Pose& to);
 
