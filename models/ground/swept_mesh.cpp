@@ -160,9 +160,9 @@ namespace {
 
 bool same_bits(const void* a, const void* b, std::size_t n) { return std::memcmp(a, b, n) == 0; }
 
-// The faces turned down of the body at `to`, kept while its orientation and
-// its x and y stay the same bit for bit (so do the vertices' x and y).
-void update_turned(const TriangleMesh& body, const MatrixX3dR& later, const Pose& to, VerticalSweepCache* cache) {
+// The body placed at `to`'s orientation and x, y at height 0, its box and
+// its faces turned down, kept while these stay the same bit for bit.
+void update_level(const TriangleMesh& body, const Pose& to, VerticalSweepCache* cache) {
   const Eigen::Quaterniond& q = to.orientation;
   if (cache->valid && same_bits(q.coeffs().data(), cache->orientation.coeffs().data(), 4 * sizeof(double)) &&
       same_bits(&to.position_m.x(), &cache->x_m, sizeof(double)) &&
@@ -173,12 +173,17 @@ void update_turned(const TriangleMesh& body, const MatrixX3dR& later, const Pose
   cache->orientation = q;
   cache->x_m = to.position_m.x();
   cache->y_m = to.position_m.y();
+  Pose level = to;
+  level.position_m.z() = 0.0;
+  cache->level = transformed_vertices(body.V, level);
+  cache->level_box = bounding_box(cache->level);
   cache->turned.clear();
   cache->front.clear();
+  const MatrixX3dR& V = cache->level;
   for (Eigen::Index f = 0; f < body.F.rows(); ++f) {
     const int a = body.F(f, 0), b = body.F(f, 1), c = body.F(f, 2);
-    // turned as at either pose: the poses differ in z alone
-    if (is_turned(later.row(a), later.row(b), later.row(c), true)) cache->turned.push_back(static_cast<int>(f));
+    // turned as at any height: the test reads x and y alone
+    if (is_turned(V.row(a), V.row(b), V.row(c), true)) cache->turned.push_back(static_cast<int>(f));
   }
 }
 
@@ -213,10 +218,24 @@ FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& s
   const Eigen::Vector3d d = to.position_m - from.position_m;
   REPOSE_DEMAND(is_vertical(d));
   if (d.squaredNorm() == 0.0) return faces_down_of(transformed(body, to));
-  const MatrixX3dR later = transformed_vertices(body.V, to);
+  update_level(body, to, cache);
+  // the body at `to`: lifted from height 0, bit for bit as placed
+  // (VerticalSweepCache) unless it lies at height 0, where it is placed afresh
+  const double lift = to.position_m.z();
+  const MatrixX3dR placed = lift == 0.0 ? transformed_vertices(body.V, to) : MatrixX3dR();
+  auto later = [&](int v) -> Eigen::RowVector3d {
+    if (lift == 0.0) return placed.row(v);
+    return Eigen::RowVector3d(cache->level(v, 0), cache->level(v, 1), cache->level(v, 2) + lift);
+  };
+  Aabb later_box = cache->level_box;
+  if (lift == 0.0) {
+    later_box = bounding_box(placed);
+  } else {
+    later_box.min.z() += lift;
+    later_box.max.z() += lift;
+  }
   FacesDown out;
-  out.box = box_at_both_poses(bounding_box(later), d);
-  update_turned(body, later, to, cache);
+  out.box = box_at_both_poses(later_box, d);
   // as vertical_sweep_seen_from_below: a front face at the later pose
   const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
   std::vector<char> front(cache->turned.size());
@@ -230,9 +249,9 @@ FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& s
     const Eigen::Index row = static_cast<Eigen::Index>(r);
     const int v = cache->used[r];
     if (v >= nv) {
-      out.mesh.V.row(row) = later.row(v - nv);
+      out.mesh.V.row(row) = later(v - static_cast<int>(nv));
     } else {
-      out.mesh.V.row(row) = later.row(v) - d.transpose();  // as vertices_at_both_poses
+      out.mesh.V.row(row) = later(v) - d.transpose();  // as vertices_at_both_poses
     }
   }
   return out;

@@ -53,14 +53,21 @@ bool is_vertical(const Eigen::Vector3d& d);
 TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
                                             const Pose& to);
 // What vertical_sweep_faces_down keeps between calls for one body, so that
-// a press or lift does not test every face every step: the faces turned
-// down at the last orientation and horizontal position (the test reads x
-// and y alone, which these fix bit for bit), and the faces and vertex
-// order made from them at the last choice of front faces.
+// a press or lift neither places every vertex nor tests every face every
+// step. At the last orientation and horizontal position, bit for bit: the
+// body placed there at height 0 and its box (transformed_vertices adds the
+// height last, so x and y are those at any height, and z is that at height
+// p.z less p.z, bit for bit when p.z != 0: adding 0 changed at most the
+// sign of a zero, which adding p.z erases; rounding keeps the order of z,
+// so the box's z is lifted alike), and the faces turned down (the test
+// reads x and y alone). And the faces and vertex order made from them at
+// the last choice of front faces.
 struct VerticalSweepCache {
   bool valid = false;
   Eigen::Quaterniond orientation;
   double x_m = 0.0, y_m = 0.0;
+  MatrixX3dR level;  // the body at (x_m, y_m, 0)
+  Aabb level_box;
   std::vector<int> turned;  // the faces turned down, in order
   std::vector<char> front;  // per turned face: placed at the later pose
   MatrixX3iR faces;         // into `used`
