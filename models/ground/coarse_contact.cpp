@@ -36,12 +36,12 @@ void keep_above_base(int i0, int j0, int f, HeightField* fine) {
 
 }  // namespace
 
-CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& params, const TriangleMesh& faces_down,
+CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& params, const FacesDown& faces_down,
                                   const Eigen::Vector3d& motion_m, UndersideRenderer& renderer, GroundState* state) {
   CoarseContactResult result;
   const Grid& g = model.grid;
   const int f = model.options.coarse_factor;
-  const Footprint fp = footprint_of(bounding_box(faces_down), g);
+  const Footprint fp = footprint_of(faces_down.box, g);
   if (fp.empty()) return result;
   const std::int64_t margin = std::max(fp.ni, fp.nj) / 2 + 2 * static_cast<std::int64_t>(f);
   int ci0, ci1, cj0, cj1;

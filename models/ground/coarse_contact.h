@@ -39,9 +39,9 @@ struct CoarseContactResult {
   int changed_fine_cells = 0;
 };
 
-// faces_down: the faces turned down of the object's collision mesh (world),
-// on all its vertices (faces_turned(mesh, true)); motion_m as for displace().
-CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& params, const TriangleMesh& faces_down,
+// faces_down: the faces turned down of the object's collision mesh (world)
+// and the whole mesh's box (faces_down.h); motion_m as for displace().
+CoarseContactResult deform_coarse(const GroundModel& model, const GroundParams& params, const FacesDown& faces_down,
                                   const Eigen::Vector3d& motion_m, UndersideRenderer& renderer, GroundState* state);
 
 }  // namespace repose

@@ -42,8 +42,11 @@ class CpuUndersideRenderer : public UndersideRenderer {
  public:
   std::string name() const override { return "cpu"; }
   DepthImage render_below(const TriangleMesh& mesh, const Grid& sub, double, double) override {
-    return depth_image_cpu(mesh, sub, ViewFrom::kBelow);
+    return cache_.render(mesh, sub, ViewFrom::kBelow);
   }
+
+ private:
+  DepthImageCpuCache cache_;  // a body pressed straight down is drawn again from its last coverage
 };
 
 }  // namespace
@@ -58,9 +61,10 @@ Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, Un
   return find_underside_of_faces_down(faces_turned(mesh, true), ground, renderer, reach_cells);
 }
 
-Underside find_underside_of_faces_down(const TriangleMesh& faces_down, const HeightField& ground,
-                                       UndersideRenderer& renderer, int reach_cells) {
-  const Aabb box = bounding_box(faces_down);
+namespace {
+
+Underside underside_in_box(const TriangleMesh& faces_down, const Aabb& box, const HeightField& ground,
+                           UndersideRenderer& renderer, int reach_cells) {
   const Footprint fp = footprint_of(box, ground.grid());
   if (fp.empty()) return {};
   // bounding boxes first: the object is above the ground under its footprint (and within reach)
@@ -82,6 +86,18 @@ Underside find_underside_of_faces_down(const TriangleMesh& faces_down, const Hei
     }
   }
   return u;
+}
+
+}  // namespace
+
+Underside find_underside_of_faces_down(const TriangleMesh& faces_down, const HeightField& ground,
+                                       UndersideRenderer& renderer, int reach_cells) {
+  return underside_in_box(faces_down, bounding_box(faces_down), ground, renderer, reach_cells);
+}
+
+Underside find_underside_of_faces_down(const FacesDown& faces_down, const HeightField& ground,
+                                       UndersideRenderer& renderer, int reach_cells) {
+  return underside_in_box(faces_down.mesh, faces_down.box, ground, renderer, reach_cells);
 }
 
 }  // namespace repose

@@ -14,6 +14,7 @@
 #include "models/core/geometry/grid.h"
 #include "models/core/geometry/height_field.h"
 #include "models/core/geometry/triangle_mesh.h"
+#include "models/ground/faces_down.h"
 
 namespace repose {
 
@@ -72,6 +73,10 @@ Underside find_underside(const TriangleMesh& mesh, const HeightField& ground, Un
 // is the whole mesh's): a step makes that once per object and looks from
 // below with it up to three times (fine, coarse, hovering).
 Underside find_underside_of_faces_down(const TriangleMesh& faces_down, const HeightField& ground,
+                                       UndersideRenderer& renderer, int reach_cells = 0);
+// The same with the box given (faces_down.h): the mesh may then keep only
+// the vertices its faces use, and its box is not computed again.
+Underside find_underside_of_faces_down(const FacesDown& faces_down, const HeightField& ground,
                                        UndersideRenderer& renderer, int reach_cells = 0);
 
 // The undersides of all objects in a step. The lowest one over a cell is

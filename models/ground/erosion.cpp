@@ -4,8 +4,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <utility>
 #include <vector>
 
+#include "models/core/base/error.h"
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"
@@ -19,6 +22,7 @@ constexpr std::array<std::array<int, 2>, 4> kNeighbours = {{{1, 0}, {-1, 0}, {0,
 struct Flux {
   std::int64_t from, to;
   double amount;
+  double ceiling_m;  // over `to` (+inf: no object), found where its coordinates are known
 };
 
 // Per material: the height difference a pair may have, sigma and En.
@@ -31,29 +35,25 @@ struct PairRule {
 // Never above an object: scales the inflow of each capped cell (one under
 // an object) down to its room. The fluxes into capped cells are grouped by
 // cell, in flux order within a cell, so each inflow sums in flux order; a
-// sorted list of indices, not a hash map, so that a pass allocates nothing
-// (`capped` is scratch, kept between passes).
-void cap_inflow(const Ceiling& ceiling, const Grid& g, const double* h, std::vector<Flux>* fluxes,
-                std::vector<std::size_t>* capped) {
+// sorted list of (cell, flux index), not a hash map, so that a pass
+// allocates nothing (`capped` is scratch, kept between passes).
+void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t, std::size_t>>* capped) {
   std::vector<Flux>& fx = *fluxes;
   capped->clear();
   for (std::size_t k = 0; k < fx.size(); ++k) {
-    const int i = static_cast<int>(fx[k].to % g.nx), j = static_cast<int>(fx[k].to / g.nx);
-    if (std::isfinite(ceiling.at(i, j))) capped->push_back(k);
+    if (std::isfinite(fx[k].ceiling_m)) capped->emplace_back(fx[k].to, k);
   }
-  std::sort(capped->begin(), capped->end(),
-            [&](std::size_t a, std::size_t b) { return fx[a].to != fx[b].to ? fx[a].to < fx[b].to : a < b; });
+  std::sort(capped->begin(), capped->end());
   for (std::size_t first = 0, last = 0; first < capped->size(); first = last) {
-    const std::int64_t cell = fx[(*capped)[first]].to;
+    const std::int64_t cell = (*capped)[first].first;
     double inflow = 0.0;
-    for (last = first; last < capped->size() && fx[(*capped)[last]].to == cell; ++last) {
-      inflow += fx[(*capped)[last]].amount;
+    for (last = first; last < capped->size() && (*capped)[last].first == cell; ++last) {
+      inflow += fx[(*capped)[last].second].amount;
     }
-    const int i = static_cast<int>(cell % g.nx), j = static_cast<int>(cell / g.nx);
-    const double room = std::max(0.0, ceiling.at(i, j) - h[cell]);
+    const double room = std::max(0.0, fx[(*capped)[first].second].ceiling_m - h[cell]);
     if (!(inflow > room)) continue;
     const double scale = room / inflow;
-    for (std::size_t k = first; k < last; ++k) fx[(*capped)[k]].amount *= scale;
+    for (std::size_t k = first; k < last; ++k) fx[(*capped)[k].second].amount *= scale;
   }
 }
 
@@ -97,13 +97,20 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
   double* h = hf.heights().data();
   ErosionMemory& memory = state->erosion;
 
+  REPOSE_DEMAND(g.cell_count() <= static_cast<std::size_t>(std::numeric_limits<int>::max()));
   std::vector<Flux> fluxes;
-  std::vector<std::size_t> capped;
+  std::vector<std::pair<std::int64_t, std::size_t>> capped;
+  std::vector<std::array<int, 2>> ij;  // of memory.cells(), divided out once: a pass would repeat it
   for (int p = 0; p < passes && !memory.empty(); ++p) {
     fluxes.clear();
     const std::vector<std::int64_t>& cells = memory.cells();
-    for (const std::int64_t c : cells) {
-      const int i = static_cast<int>(c % g.nx), j = static_cast<int>(c / g.nx);
+    for (std::size_t k = ij.size(); k < cells.size(); ++k) {
+      const int c = static_cast<int>(cells[k]);
+      ij.push_back({c % g.nx, c / g.nx});
+    }
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      const std::int64_t c = cells[k];
+      const int i = ij[k][0], j = ij[k][1];
       for (const auto& o : kNeighbours) {
         const int ni = i + o[0], nj = j + o[1];
         if (!g.contains(ni, nj)) continue;  // closed boundary
@@ -116,13 +123,13 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
         if (p >= rule.passes) continue;
         const double excess = (h[hi] - h[lo]) - rule.max_dh_m;
         if (!(excess > tolerance_m)) continue;
-        fluxes.push_back({hi, lo, rule.sigma * excess});
+        fluxes.push_back({hi, lo, rule.sigma * excess, c_higher ? ceiling.at(ni, nj) : ceiling.at(i, j)});
       }
     }
     if (fluxes.empty()) break;
     result.passes = p + 1;
 
-    cap_inflow(ceiling, g, h, &fluxes, &capped);
+    cap_inflow(h, &fluxes, &capped);
 
     for (const Flux& f : fluxes) {
       if (!(f.amount > 0.0)) continue;

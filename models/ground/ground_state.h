@@ -8,6 +8,7 @@
 #include "models/core/geometry/height_field.h"
 #include "models/core/geometry/triangle_mesh.h"
 #include "models/ground/erosion_memory.h"
+#include "models/ground/swept_mesh.h"
 #include "models/ground/volume_ledger.h"
 
 namespace repose {
@@ -18,6 +19,9 @@ struct GroundState {
   HeightField height;
   ErosionMemory erosion;
   std::vector<Pose> previous_poses;  // one per model object, at time_s
+  // Per model object (or none yet): what the vertical sweep of its body
+  // keeps from step to step. Derived data only: the results do not depend on it.
+  std::vector<VerticalSweepCache> sweep_caches;
   VolumeLedger ledger;
   double time_s = 0.0;
   int step_index = 0;

@@ -92,7 +92,7 @@ Underside merged_underside(const std::vector<Underside>& undersides, const std::
 // contact (e.g. one lifted out of its own imprint), and material deposited
 // above its underside is displaced as by any contact.
 int add_hovering_undersides(const GroundModel& model, const GroundParams& params,
-                            const std::vector<TriangleMesh>& faces_down, const std::vector<double>& tops,
+                            const std::vector<FacesDown>& faces_down, const std::vector<double>& tops,
                             const std::vector<char>& coarse,
                             const std::vector<Eigen::Vector3d>& motion, UndersideRenderer& renderer,
                             GroundState* state, Ceiling* ceiling) {
@@ -121,7 +121,7 @@ void substep(const GroundModel& model, const GroundParams& params, const std::ve
              const std::vector<Pose>& to, UndersideRenderer& renderer, GroundState* state, StepReport* report) {
   const std::size_t n_objects = model.objects.size();
   Ceiling ceiling;
-  std::vector<TriangleMesh> faces_down(n_objects);
+  std::vector<FacesDown> faces_down(n_objects);
   std::vector<Eigen::Vector3d> motion(n_objects), fine_motion;
   std::vector<char> coarse(n_objects);
   std::vector<double> tops(n_objects);
@@ -133,11 +133,13 @@ void substep(const GroundModel& model, const GroundParams& params, const std::ve
     if (model.options.sweep && moved(from[o], to[o], model.grid.cell_size_m)) {
       REPOSE_DEMAND(model.swept_bodies.size() == n_objects);
       const SweptBody& swept = model.swept_bodies[o];
-      faces_down[o] = is_vertical(motion[o]) ? vertical_sweep_seen_from_below(object.body, swept, from[o], to[o])
-                                         : faces_turned(swept_mesh(object.body, swept, from[o], to[o]), true);
+      state->sweep_caches.resize(n_objects);
+      faces_down[o] = is_vertical(motion[o]) ? vertical_sweep_faces_down(object.body, swept, from[o], to[o],
+                                                                         &state->sweep_caches[o])
+                                             : faces_down_of(swept_mesh(object.body, swept, from[o], to[o]));
       ++report->swept_objects;
     } else {
-      faces_down[o] = faces_turned(transformed(object.body, to[o]), true);
+      faces_down[o] = faces_down_of(transformed(object.body, to[o]));
     }
     coarse[o] = uses_coarse_grid(model, static_cast<int>(o), to[o]);
     tops[o] = top_at(object, to[o]);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "models/core/geometry/triangle_mesh.h"
+#include "models/ground/faces_down.h"
 
 namespace repose {
 
@@ -51,5 +52,36 @@ bool is_vertical(const Eigen::Vector3d& d);
 // press or lift needs no silhouette.
 TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
                                             const Pose& to);
+// What vertical_sweep_faces_down keeps between calls for one body, so that
+// a press or lift neither places every vertex nor tests every face every
+// step. At the last orientation and horizontal position, bit for bit: the
+// body placed there at height 0 and its box (transformed_vertices adds the
+// height last, so x and y are those at any height, and z is that at height
+// p.z less p.z, bit for bit when p.z != 0: adding 0 changed at most the
+// sign of a zero, which adding p.z erases; rounding keeps the order of z,
+// so the box's z is lifted alike), and the faces turned down (the test
+// reads x and y alone). And the faces and vertex order made from them at
+// the last choice of front faces.
+struct VerticalSweepCache {
+  bool valid = false;
+  Eigen::Quaterniond orientation;
+  double x_m = 0.0, y_m = 0.0;
+  MatrixX3dR level;  // the body at (x_m, y_m, 0)
+  Aabb level_box;
+  std::vector<int> turned;  // the faces turned down, in order
+  std::vector<char> front;  // per turned face: placed at the later pose
+  MatrixX3iR faces;         // into `used`
+  std::vector<int> used;    // vertex v < nv at the earlier pose, nv + v at the later, in order of first use
+};
+
+// The same faces in the same order at the same coordinates, on the
+// vertices they use alone (numbered as first used), with the bounding box
+// of the whole swept mesh (faces_down.h), found from the body at `to`
+// alone: what a step renders, with a quarter of the vertices. cache: kept
+// by the caller for this body (any contents give the same result).
+FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                    const Pose& to, VerticalSweepCache* cache);
+FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                    const Pose& to);
 
 }  // namespace repose

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace repose {
@@ -37,8 +38,16 @@ Eigen::ArrayXd cell_units(const TriangleMesh& m, int axis, double origin, double
 
 // Writes the z of triangle (a, b, c) into every cell whose centre it covers
 // among cells [i0, i1] x [j0, j1], keeping the lowest (from below) or highest (from above).
+// Keeps the lowest (from below) or highest (from above) z of a cell centre.
+inline void draw(int i, int j, double z, ViewFrom view, DepthImage* img) {
+  double& out = img->z_m(j, i);
+  if (!img->covered(j, i) || (view == ViewFrom::kBelow ? z < out : z > out)) out = z;
+  img->covered(j, i) = 1;
+}
+
+// hits: where given, each covered centre of face `face` is appended (DepthImageCpuCache).
 void rasterise(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, int i0, int i1, int j0,
-               int j1, ViewFrom view, DepthImage* img) {
+               int j1, ViewFrom view, DepthImage* img, int face, std::vector<DepthImageCpuCache::Hit>* hits) {
   const Grid& grid = img->grid;
   const Eigen::Vector2d a2 = a.head<2>(), b2 = b.head<2>(), c2 = c.head<2>();
   const double area = edge(a2, b2, c2);
@@ -51,10 +60,8 @@ void rasterise(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::
       const double wc = 1.0 - wa - wb;
       // closed on all edges: a centre on a shared edge is seen by both triangles, same z
       if (wa < 0.0 || wb < 0.0 || wc < 0.0) continue;
-      const double z = wa * a.z() + wb * b.z() + wc * c.z();
-      double& out = img->z_m(j, i);
-      if (!img->covered(j, i) || (view == ViewFrom::kBelow ? z < out : z > out)) out = z;
-      img->covered(j, i) = 1;
+      draw(i, j, wa * a.z() + wb * b.z() + wc * c.z(), view, img);
+      if (hits) hits->push_back({face, i, j, wa, wb, wc});
     }
   }
 }
@@ -70,7 +77,8 @@ DepthImage empty_image(const Grid& grid, ViewFrom view) {
 
 // Most triangles of a body on a height-field grid cover no cell centre at
 // all: the range of centres they span is found first, from cell units.
-void rasterise(const TriangleMesh& m, ViewFrom view, DepthImage* img) {
+void rasterise(const TriangleMesh& m, ViewFrom view, DepthImage* img,
+               std::vector<DepthImageCpuCache::Hit>* hits = nullptr) {
   const Grid& g = img->grid;
   const Eigen::ArrayXd ux = cell_units(m, 0, g.origin_x_m, g.cell_size_m);
   const Eigen::ArrayXd uy = cell_units(m, 1, g.origin_y_m, g.cell_size_m);
@@ -81,7 +89,7 @@ void rasterise(const TriangleMesh& m, ViewFrom view, DepthImage* img) {
     if (i0 > i1) continue;
     centre_range(std::min(uy[a], std::min(uy[b], uy[c])), std::max(uy[a], std::max(uy[b], uy[c])), g.ny, &j0, &j1);
     if (j0 > j1) continue;
-    rasterise(m.V.row(a), m.V.row(b), m.V.row(c), i0, i1, j0, j1, view, img);
+    rasterise(m.V.row(a), m.V.row(b), m.V.row(c), i0, i1, j0, j1, view, img, static_cast<int>(f), hits);
   }
 }
 
@@ -96,6 +104,40 @@ DepthImage depth_image_cpu(const std::vector<TriangleMesh>& meshes, const Grid& 
 DepthImage depth_image_cpu(const TriangleMesh& mesh, const Grid& grid, ViewFrom view) {
   DepthImage img = empty_image(grid, view);
   rasterise(mesh, view, &img);
+  return img;
+}
+
+bool DepthImageCpuCache::same_footing(const TriangleMesh& mesh, const Grid& grid, ViewFrom view) const {
+  if (!valid_ || !(grid == grid_) || view != view_ || mesh.F.rows() != faces_.rows()) return false;
+  if (static_cast<std::size_t>(2 * mesh.V.rows()) != xy_.size()) return false;
+  if (mesh.F.size() > 0 && std::memcmp(mesh.F.data(), faces_.data(), sizeof(int) * mesh.F.size()) != 0) return false;
+  for (Eigen::Index r = 0; r < mesh.V.rows(); ++r) {
+    // bit for bit: equal as numbers is not enough (-0.0 and 0.0)
+    if (std::memcmp(&mesh.V(r, 0), &xy_[2 * static_cast<std::size_t>(r)], 2 * sizeof(double)) != 0) return false;
+  }
+  return true;
+}
+
+DepthImage DepthImageCpuCache::render(const TriangleMesh& mesh, const Grid& grid, ViewFrom view) {
+  DepthImage img = empty_image(grid, view);
+  if (same_footing(mesh, grid, view)) {
+    for (const Hit& h : hits_) {
+      const double za = mesh.V(mesh.F(h.face, 0), 2), zb = mesh.V(mesh.F(h.face, 1), 2), zc = mesh.V(mesh.F(h.face, 2), 2);
+      draw(h.i, h.j, h.wa * za + h.wb * zb + h.wc * zc, view, &img);
+    }
+    return img;
+  }
+  hits_.clear();
+  rasterise(mesh, view, &img, &hits_);
+  valid_ = true;
+  grid_ = grid;
+  view_ = view;
+  faces_ = mesh.F;
+  xy_.resize(2 * static_cast<std::size_t>(mesh.V.rows()));
+  for (Eigen::Index r = 0; r < mesh.V.rows(); ++r) {
+    xy_[2 * static_cast<std::size_t>(r)] = mesh.V(r, 0);
+    xy_[2 * static_cast<std::size_t>(r) + 1] = mesh.V(r, 1);
+  }
   return img;
 }
 

@@ -48,4 +48,33 @@ DepthImage depth_image_cpu(const std::vector<TriangleMesh>& meshes, const Grid& 
 // renders a placed body every step).
 DepthImage depth_image_cpu(const TriangleMesh& mesh, const Grid& grid, ViewFrom view);
 
+// depth_image_cpu of one mesh, bit for bit, for a caller that renders a
+// mesh again and again (the ground's underside renderer, every step).
+// Which cells a triangle covers and its barycentric weights there depend on
+// the faces and on x and y alone; they are kept for the last mesh, and a
+// mesh with the same faces and the same x and y (a body pressed straight
+// down or lifted: only its z moved) is drawn from them, interpolating z
+// alone. Same inputs are compared bit for bit, so the image never differs.
+class DepthImageCpuCache {
+ public:
+  DepthImage render(const TriangleMesh& mesh, const Grid& grid, ViewFrom view);
+
+  // One covered cell centre of one face, in the order they were drawn.
+  struct Hit {
+    int face;
+    int i, j;
+    double wa, wb, wc;
+  };
+
+ private:
+  bool same_footing(const TriangleMesh& mesh, const Grid& grid, ViewFrom view) const;
+
+  bool valid_ = false;
+  Grid grid_;
+  ViewFrom view_ = ViewFrom::kBelow;
+  MatrixX3iR faces_;
+  std::vector<double> xy_;  // x, y of each vertex
+  std::vector<Hit> hits_;
+};
+
 }  // namespace repose

@@ -10,11 +10,25 @@
 
 namespace repose {
 
-Aabb bounding_box(const TriangleMesh& mesh) {
+Aabb bounding_box(const TriangleMesh& mesh) { return bounding_box(mesh.V); }
+
+Aabb bounding_box(const MatrixX3dR& V) {
   Aabb box;
-  if (mesh.V.rows() == 0) return box;
-  box.min = mesh.V.colwise().minCoeff().transpose();
-  box.max = mesh.V.colwise().maxCoeff().transpose();
+  if (V.rows() == 0) return box;
+  // one pass over the rows: Eigen's column reductions stride through the
+  // row-major matrix once per column, and this runs on every placed body
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) lo[k] = hi[k] = V(0, k);
+  const double* v = V.data();
+  for (Eigen::Index r = 1; r < V.rows(); ++r) {
+    for (int k = 0; k < 3; ++k) {
+      const double x = v[3 * r + k];
+      lo[k] = x < lo[k] ? x : lo[k];
+      hi[k] = x > hi[k] ? x : hi[k];
+    }
+  }
+  box.min = Eigen::Vector3d(lo[0], lo[1], lo[2]);
+  box.max = Eigen::Vector3d(hi[0], hi[1], hi[2]);
   return box;
 }
 

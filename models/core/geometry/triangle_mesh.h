@@ -37,6 +37,8 @@ struct Aabb {
 };
 
 Aabb bounding_box(const TriangleMesh& mesh);
+// The same over vertices alone (#V by 3).
+Aabb bounding_box(const MatrixX3dR& V);
 TriangleMesh transformed(const TriangleMesh& mesh, const Pose& pose);
 // The vertices alone (#V by 3), as transformed() places them.
 MatrixX3dR transformed_vertices(const MatrixX3dR& V, const Pose& pose);

@@ -158,5 +158,73 @@ TEST(VerticalSweepSeenFromBelow, IsVerticalMeansNoHorizontalPartAtAll) {
   EXPECT_FALSE(is_vertical(Eigen::Vector3d(0, -1e-18, -0.01)));
 }
 
+// The compacted faces down a step renders: per face the same corners at the
+// same coordinates, in the same order, and the whole swept mesh's box.
+TEST(VerticalSweepFacesDown, IsTheSweptMeshsFacesTurnedDownOnTheVerticesTheyUse) {
+  const std::vector<std::pair<std::string, TriangleMesh>> bodies = {
+      {"sphere", make_sphere(0.03, 32)},
+      {"box", make_box(Eigen::Vector3d(0.02, 0.03, 0.01))},
+      {"cylinder", make_cylinder(0.025, 0.02, 24)}};
+  const std::vector<Eigen::Quaterniond> turns = {
+      Eigen::Quaterniond::Identity(), Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 0.5).normalized()))};
+  for (const auto& [name, body] : bodies) {
+    const SweptBody swept = make_swept_body(body);
+    for (std::size_t t = 0; t < turns.size(); ++t) {
+      for (const double dz : {-0.004, 0.0035, -1e-7, 0.0}) {
+        Pose from = at_position(0.0013, -0.0021, 0.05), to = from;
+        from.orientation = to.orientation = turns[t];
+        to.position_m.z() += dz;
+        const std::string what = name + " turn " + std::to_string(t) + " dz " + std::to_string(dz);
+        const FacesDown fast = vertical_sweep_faces_down(body, swept, from, to);
+        const TriangleMesh full = faces_turned(swept_mesh(body, swept, from, to), true);
+        ASSERT_EQ(fast.mesh.F.rows(), full.F.rows()) << what;
+        for (Eigen::Index f = 0; f < full.F.rows(); ++f) {
+          for (int k = 0; k < 3; ++k) {
+            EXPECT_TRUE(fast.mesh.V.row(fast.mesh.F(f, k)) == full.V.row(full.F(f, k))) << what << " face " << f;
+          }
+        }
+        const Aabb box = bounding_box(full);
+        EXPECT_TRUE(fast.box.min == box.min && fast.box.max == box.max) << what;
+      }
+    }
+  }
+}
+
+// A kept cache never changes the result: a press, a turn, a sideways step,
+// a lift, a press again and one to height 0, each against a fresh
+// computation and against the swept mesh's faces turned down.
+TEST(VerticalSweepFacesDown, KeptCacheGivesTheSameFacesAsNone) {
+  const TriangleMesh ball = make_sphere(0.03, 32);
+  const SweptBody swept = make_swept_body(ball);
+  VerticalSweepCache cache;
+  Pose from = at_position(0.0013, -0.0021, 0.05);
+  const Eigen::Quaterniond turned(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 0.5).normalized()));
+  const std::vector<std::pair<double, int>> moves = {{-0.003, 0}, {-0.003, 0}, {-0.002, 1}, {-0.002, 1},
+                                                      {-0.001, 2}, {0.004, 2},  {0.004, 0},  {-0.003, 0},
+                                                      {0.0, 3}};
+  for (std::size_t s = 0; s < moves.size(); ++s) {
+    const auto [dz, kind] = moves[s];
+    if (kind == 1) from.orientation = turned;
+    if (kind == 2) from.position_m.x() += 1e-4;
+    Pose to = from;
+    to.position_m.z() += dz;
+    if (kind == 3) to.position_m.z() = 0.0;
+    const FacesDown kept = vertical_sweep_faces_down(ball, swept, from, to, &cache);
+    const FacesDown fresh = vertical_sweep_faces_down(ball, swept, from, to);
+    EXPECT_TRUE(kept.mesh.F == fresh.mesh.F && kept.mesh.V == fresh.mesh.V) << "move " << s;
+    EXPECT_TRUE(kept.box.min == fresh.box.min && kept.box.max == fresh.box.max) << "move " << s;
+    const TriangleMesh full = faces_turned(swept_mesh(ball, swept, from, to), true);
+    ASSERT_EQ(kept.mesh.F.rows(), full.F.rows()) << "move " << s;
+    for (Eigen::Index f = 0; f < full.F.rows(); ++f) {
+      for (int k = 0; k < 3; ++k) {
+        ASSERT_TRUE(kept.mesh.V.row(kept.mesh.F(f, k)) == full.V.row(full.F(f, k))) << "move " << s << " face " << f;
+      }
+    }
+    const Aabb box = bounding_box(full);
+    EXPECT_TRUE(kept.box.min == box.min && kept.box.max == box.max) << "move " << s;
+    from = to;
+  }
+}
+
 }  // namespace
 }  // namespace repose

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace repose {
@@ -52,6 +53,29 @@ TEST(DepthImageCpu, OneMeshAsAList) {
   const DepthImage list = depth_image_cpu(std::vector<TriangleMesh>{ball}, g, ViewFrom::kAbove);
   ASSERT_TRUE((one.covered == list.covered).all());
   EXPECT_TRUE((one.covered == 0 || one.z_m == list.z_m).all());
+}
+
+// The cache draws each mesh as depth_image_cpu does, bit for bit: a mesh
+// moved along z alone (drawn from the kept coverage), moved sideways by a
+// hair, given other faces, or drawn on another grid or from the other side
+// (each drawn afresh), in a sequence that goes back and forth between them.
+TEST(DepthImageCpuCache, DrawsEveryMeshAsDepthImageCpu) {
+  const Grid g{20, 20, 0.01, -0.1, -0.1}, other{10, 12, 0.013, -0.07, -0.05};
+  const TriangleMesh ball = make_sphere(0.06, 16);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> dz(-0.05, 0.05);
+  DepthImageCpuCache cache;
+  for (int trial = 0; trial < 60; ++trial) {
+    TriangleMesh m = ball;
+    m.V.col(2).array() += dz(rng);
+    if (trial % 7 == 3) m.V(5, 0) = std::nextafter(m.V(5, 0), 1.0);
+    if (trial % 11 == 5) m.F.row(0).swap(m.F.row(1));
+    const Grid& grid = trial % 5 == 4 ? other : g;
+    const ViewFrom view = trial % 9 == 8 ? ViewFrom::kAbove : ViewFrom::kBelow;
+    const DepthImage fresh = depth_image_cpu(m, grid, view), kept = cache.render(m, grid, view);
+    ASSERT_TRUE((fresh.covered == kept.covered).all()) << "trial " << trial;
+    EXPECT_TRUE((fresh.covered == 0 || fresh.z_m == kept.z_m).all()) << "trial " << trial;
+  }
 }
 
 }  // namespace
