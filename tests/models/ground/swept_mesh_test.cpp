@@ -88,6 +88,24 @@ TEST(SweptBody, EdgeTwinsOfClosedAndOpenBodies) {
 }
 
 
+// Calls `check(body, swept, from, to, what)` for each body pressed and
+// lifted straight down/up (and by nothing) at each turn, off the grid's axes.
+template <typename Check>
+void for_each_vertical_move(const std::vector<std::pair<std::string, TriangleMesh>>& bodies,
+                            const std::vector<Eigen::Quaterniond>& turns, Check check) {
+  for (const auto& [name, body] : bodies) {
+    const SweptBody swept = make_swept_body(body);
+    for (std::size_t t = 0; t < turns.size(); ++t) {
+      for (const double dz : {-0.004, 0.0035, -1e-7, 0.0}) {
+        Pose from = at_position(0.0013, -0.0021, 0.05), to = from;
+        from.orientation = to.orientation = turns[t];
+        to.position_m.z() += dz;
+        check(body, swept, from, to, name + " turn " + std::to_string(t) + " dz " + std::to_string(dz));
+      }
+    }
+  }
+}
+
 // The fast path of a vertical press or lift must be seen from below
 // exactly as the swept mesh is: the very mesh faces_turned makes of it, and
 // so the same bounding box and depth image, bit for bit, for bodies with
@@ -103,26 +121,18 @@ TEST(VerticalSweepSeenFromBelow, IsTheSweptMeshsFacesTurnedDown) {
       Eigen::Quaterniond::Identity(), Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ())),
       Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 0.5).normalized()))};
   const Grid g = centred_grid(40, 40, 0.0025);
-  for (const auto& [name, body] : bodies) {
-    const SweptBody swept = make_swept_body(body);
-    for (std::size_t t = 0; t < turns.size(); ++t) {
-      for (const double dz : {-0.004, 0.0035, -1e-7, 0.0}) {
-        Pose from = at_position(0.0013, -0.0021, 0.05), to = from;
-        from.orientation = to.orientation = turns[t];
-        to.position_m.z() += dz;
-        const std::string what = name + " turn " + std::to_string(t) + " dz " + std::to_string(dz);
-        const TriangleMesh fast = vertical_sweep_seen_from_below(body, swept, from, to);
-        const TriangleMesh full = faces_turned(swept_mesh(body, swept, from, to), true);
-        ASSERT_EQ(fast.V.rows(), full.V.rows()) << what;
-        EXPECT_TRUE(fast.V == full.V) << what;
-        ASSERT_EQ(fast.F.rows(), full.F.rows()) << what;
-        EXPECT_TRUE(fast.F == full.F) << what;
-        const DepthImage x = depth_image_cpu(fast, g, ViewFrom::kBelow), y = depth_image_cpu(full, g, ViewFrom::kBelow);
-        EXPECT_TRUE((x.covered == y.covered).all()) << what;
-        EXPECT_TRUE((x.covered == 0 || x.z_m == y.z_m).all()) << what;
-      }
-    }
-  }
+  for_each_vertical_move(bodies, turns, [&](const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                            const Pose& to, const std::string& what) {
+    const TriangleMesh fast = vertical_sweep_seen_from_below(body, swept, from, to);
+    const TriangleMesh full = faces_turned(swept_mesh(body, swept, from, to), true);
+    ASSERT_EQ(fast.V.rows(), full.V.rows()) << what;
+    EXPECT_TRUE(fast.V == full.V) << what;
+    ASSERT_EQ(fast.F.rows(), full.F.rows()) << what;
+    EXPECT_TRUE(fast.F == full.F) << what;
+    const DepthImage x = depth_image_cpu(fast, g, ViewFrom::kBelow), y = depth_image_cpu(full, g, ViewFrom::kBelow);
+    EXPECT_TRUE((x.covered == y.covered).all()) << what;
+    EXPECT_TRUE((x.covered == 0 || x.z_m == y.z_m).all()) << what;
+  });
 }
 
 // As the ground step uses it: a sphere pressed into and lifted out of a
@@ -167,27 +177,19 @@ TEST(VerticalSweepFacesDown, IsTheSweptMeshsFacesTurnedDownOnTheVerticesTheyUse)
       {"cylinder", make_cylinder(0.025, 0.02, 24)}};
   const std::vector<Eigen::Quaterniond> turns = {
       Eigen::Quaterniond::Identity(), Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 0.5).normalized()))};
-  for (const auto& [name, body] : bodies) {
-    const SweptBody swept = make_swept_body(body);
-    for (std::size_t t = 0; t < turns.size(); ++t) {
-      for (const double dz : {-0.004, 0.0035, -1e-7, 0.0}) {
-        Pose from = at_position(0.0013, -0.0021, 0.05), to = from;
-        from.orientation = to.orientation = turns[t];
-        to.position_m.z() += dz;
-        const std::string what = name + " turn " + std::to_string(t) + " dz " + std::to_string(dz);
-        const FacesDown fast = vertical_sweep_faces_down(body, swept, from, to);
-        const TriangleMesh full = faces_turned(swept_mesh(body, swept, from, to), true);
-        ASSERT_EQ(fast.mesh.F.rows(), full.F.rows()) << what;
-        for (Eigen::Index f = 0; f < full.F.rows(); ++f) {
-          for (int k = 0; k < 3; ++k) {
-            EXPECT_TRUE(fast.mesh.V.row(fast.mesh.F(f, k)) == full.V.row(full.F(f, k))) << what << " face " << f;
-          }
-        }
-        const Aabb box = bounding_box(full);
-        EXPECT_TRUE(fast.box.min == box.min && fast.box.max == box.max) << what;
+  for_each_vertical_move(bodies, turns, [](const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                           const Pose& to, const std::string& what) {
+    const FacesDown fast = vertical_sweep_faces_down(body, swept, from, to);
+    const TriangleMesh full = faces_turned(swept_mesh(body, swept, from, to), true);
+    ASSERT_EQ(fast.mesh.F.rows(), full.F.rows()) << what;
+    for (Eigen::Index f = 0; f < full.F.rows(); ++f) {
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_TRUE(fast.mesh.V.row(fast.mesh.F(f, k)) == full.V.row(full.F(f, k))) << what << " face " << f;
       }
     }
-  }
+    const Aabb box = bounding_box(full);
+    EXPECT_TRUE(fast.box.min == box.min && fast.box.max == box.max) << what;
+  });
 }
 
 // A kept cache never changes the result: a press, a turn, a sideways step,
