@@ -117,31 +117,6 @@ TriangleMesh swept_mesh(const TriangleMesh& body, const SweptBody& swept, const 
 
 bool is_vertical(const Eigen::Vector3d& d) { return d.x() == 0.0 && d.y() == 0.0; }
 
-TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
-                                            const Pose& to) {
-  const Eigen::Index nv = body.V.rows(), nf = body.F.rows();
-  REPOSE_DEMAND(swept.face_normal.size() == static_cast<std::size_t>(nf));
-  const Eigen::Vector3d d = to.position_m - from.position_m;
-  REPOSE_DEMAND(is_vertical(d));
-  if (d.squaredNorm() == 0.0) return faces_turned(transformed(body, to), true);
-  // swept_mesh's vertices and its faces in their order, each at its pose,
-  // keeping those faces_turned keeps; the quads it would drop are never made
-  TriangleMesh out;
-  out.V = vertices_at_both_poses(body, to, d);
-  out.F.resize(nf, 3);
-  const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
-  Eigen::Index n = 0;
-  for (Eigen::Index f = 0; f < nf; ++f) {
-    const int a = body.F(f, 0), b = body.F(f, 1), c = body.F(f, 2);
-    // turned as at either pose: the poses differ in z alone
-    if (!is_turned(out.V.row(nv + a), out.V.row(nv + b), out.V.row(nv + c), true)) continue;
-    const int offset = is_front(swept, static_cast<std::size_t>(f), d_body) ? static_cast<int>(nv) : 0;
-    out.F.row(n++) << a + offset, b + offset, c + offset;
-  }
-  out.F.conservativeResize(n, 3);
-  return out;
-}
-
 namespace {
 
 // The box of the body at both poses from its box at the later one: d has
@@ -153,10 +128,6 @@ Aabb box_at_both_poses(const Aabb& later, const Eigen::Vector3d& d) {
   box.max.z() = std::max(later.max.z(), later.max.z() - d.z());
   return box;
 }
-
-}  // namespace
-
-namespace {
 
 bool same_bits(const void* a, const void* b, std::size_t n) { return std::memcmp(a, b, n) == 0; }
 
@@ -236,7 +207,7 @@ FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& s
   }
   FacesDown out;
   out.box = box_at_both_poses(later_box, d);
-  // as vertical_sweep_seen_from_below: a front face at the later pose
+  // as swept_mesh: a face is at the later pose when it faces the motion
   const Eigen::Vector3d d_body = to.orientation.conjugate() * d;
   std::vector<char> front(cache->turned.size());
   for (std::size_t t = 0; t < front.size(); ++t) {

@@ -42,16 +42,6 @@ TriangleMesh swept_mesh(const TriangleMesh& body, const Pose& from, const Pose& 
 // True when a motion d has no horizontal part (exactly: x and y are zero).
 bool is_vertical(const Eigen::Vector3d& d);
 
-// For a vertical motion (is_vertical(to - from)): what a view from below
-// sees of the swept mesh, faces_turned(swept_mesh(body, swept, from, to),
-// true), bit for bit (the same vertices, the same faces in the same order),
-// at a fraction of the cost. The silhouette and open-edge quads then join
-// each edge to itself shifted along z, so their x and y are exactly those of
-// the edge: they have no area seen along z, and faces_turned drops them; so
-// they are not made, and a face is turned alike at both poses. A vertical
-// press or lift needs no silhouette.
-TriangleMesh vertical_sweep_seen_from_below(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
-                                            const Pose& to);
 // What vertical_sweep_faces_down keeps between calls for one body, so that
 // a press or lift neither places every vertex nor tests every face every
 // step. At the last orientation and horizontal position, bit for bit: the
@@ -74,10 +64,16 @@ struct VerticalSweepCache {
   std::vector<int> used;    // vertex v < nv at the earlier pose, nv + v at the later, in order of first use
 };
 
-// The same faces in the same order at the same coordinates, on the
-// vertices they use alone (numbered as first used), with the bounding box
-// of the whole swept mesh (faces_down.h), found from the body at `to`
-// alone: what a step renders, with a quarter of the vertices. cache: kept
+// For a vertical motion (is_vertical(to - from)): what a view from below
+// sees of the swept mesh, faces_turned(swept_mesh(body, swept, from, to),
+// true): the same faces in the same order at the same coordinates, bit for
+// bit, on the vertices they use alone (numbered as first used), with the
+// bounding box of the whole swept mesh (faces_down.h), found from the body
+// at `to` alone: what a step renders, with a quarter of the vertices. The
+// silhouette and open-edge quads of a vertical sweep join each edge to
+// itself shifted along z, so their x and y are exactly those of the edge:
+// they have no area seen along z, and faces_turned drops them; so they are
+// not made, and a face is turned alike at both poses. cache: kept
 // by the caller for this body (any contents give the same result).
 FacesDown vertical_sweep_faces_down(const TriangleMesh& body, const SweptBody& swept, const Pose& from,
                                     const Pose& to, VerticalSweepCache* cache);

@@ -106,38 +106,9 @@ void for_each_vertical_move(const std::vector<std::pair<std::string, TriangleMes
   }
 }
 
-// The fast path of a vertical press or lift must be seen from below
-// exactly as the swept mesh is: the very mesh faces_turned makes of it, and
-// so the same bounding box and depth image, bit for bit, for bodies with
-// vertical faces (box, cylinder), curved ones, tilted ones, and motions
-// down, up and tiny.
-TEST(VerticalSweepSeenFromBelow, IsTheSweptMeshsFacesTurnedDown) {
-  const std::vector<std::pair<std::string, TriangleMesh>> bodies = {
-      {"sphere", make_sphere(0.03, 32)},
-      {"box", make_box(Eigen::Vector3d(0.02, 0.03, 0.01))},
-      {"cylinder", make_cylinder(0.025, 0.02, 24)},
-      {"capsule", make_capsule(0.015, 0.02, 16)}};
-  const std::vector<Eigen::Quaterniond> turns = {
-      Eigen::Quaterniond::Identity(), Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ())),
-      Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 0.5).normalized()))};
-  const Grid g = centred_grid(40, 40, 0.0025);
-  for_each_vertical_move(bodies, turns, [&](const TriangleMesh& body, const SweptBody& swept, const Pose& from,
-                                            const Pose& to, const std::string& what) {
-    const TriangleMesh fast = vertical_sweep_seen_from_below(body, swept, from, to);
-    const TriangleMesh full = faces_turned(swept_mesh(body, swept, from, to), true);
-    ASSERT_EQ(fast.V.rows(), full.V.rows()) << what;
-    EXPECT_TRUE(fast.V == full.V) << what;
-    ASSERT_EQ(fast.F.rows(), full.F.rows()) << what;
-    EXPECT_TRUE(fast.F == full.F) << what;
-    const DepthImage x = depth_image_cpu(fast, g, ViewFrom::kBelow), y = depth_image_cpu(full, g, ViewFrom::kBelow);
-    EXPECT_TRUE((x.covered == y.covered).all()) << what;
-    EXPECT_TRUE((x.covered == 0 || x.z_m == y.z_m).all()) << what;
-  });
-}
-
 // As the ground step uses it: a sphere pressed into and lifted out of a
 // dented ground has the same underside through either path.
-TEST(VerticalSweepSeenFromBelow, PressAndLiftFindTheSameUndersideAsTheSweptMesh) {
+TEST(VerticalSweepFacesDown, PressAndLiftFindTheSameUndersideAsTheSweptMesh) {
   const TriangleMesh ball = make_sphere(0.03, 32);
   const SweptBody swept = make_swept_body(ball);
   const Grid g = centred_grid(27, 27, 0.005);
@@ -149,7 +120,7 @@ TEST(VerticalSweepSeenFromBelow, PressAndLiftFindTheSameUndersideAsTheSweptMesh)
   for (const double dz : {-0.00375, 0.00375}) {
     const Pose from = at_position(0.001, 0.0, 0.025), to = at_position(0.001, 0.0, 0.025 + dz);
     const Underside fast =
-        find_underside_of_faces_down(vertical_sweep_seen_from_below(ball, swept, from, to), ground, *renderer);
+        find_underside_of_faces_down(vertical_sweep_faces_down(ball, swept, from, to), ground, *renderer);
     const Underside full = find_underside(swept_mesh(ball, swept, from, to), ground, *renderer);
     ASSERT_FALSE(full.empty());
     EXPECT_EQ(fast.footprint.i0, full.footprint.i0);
@@ -161,24 +132,30 @@ TEST(VerticalSweepSeenFromBelow, PressAndLiftFindTheSameUndersideAsTheSweptMesh)
   }
 }
 
-TEST(VerticalSweepSeenFromBelow, IsVerticalMeansNoHorizontalPartAtAll) {
+TEST(VerticalSweep, IsVerticalMeansNoHorizontalPartAtAll) {
   EXPECT_TRUE(is_vertical(Eigen::Vector3d(0, 0, -0.01)));
   EXPECT_TRUE(is_vertical(Eigen::Vector3d(-0.0, 0, 0.01)));
   EXPECT_FALSE(is_vertical(Eigen::Vector3d(1e-300, 0, -0.01)));
   EXPECT_FALSE(is_vertical(Eigen::Vector3d(0, -1e-18, -0.01)));
 }
 
-// The compacted faces down a step renders: per face the same corners at the
-// same coordinates, in the same order, and the whole swept mesh's box.
+// The fast path of a vertical press or lift must be seen from below exactly
+// as the swept mesh is: per face the same corners at the same coordinates,
+// in the same order, the whole swept mesh's box and the same depth image,
+// bit for bit, for bodies with vertical faces (box, cylinder), curved ones,
+// tilted ones, and motions down, up and tiny.
 TEST(VerticalSweepFacesDown, IsTheSweptMeshsFacesTurnedDownOnTheVerticesTheyUse) {
   const std::vector<std::pair<std::string, TriangleMesh>> bodies = {
       {"sphere", make_sphere(0.03, 32)},
       {"box", make_box(Eigen::Vector3d(0.02, 0.03, 0.01))},
-      {"cylinder", make_cylinder(0.025, 0.02, 24)}};
+      {"cylinder", make_cylinder(0.025, 0.02, 24)},
+      {"capsule", make_capsule(0.015, 0.02, 16)}};
   const std::vector<Eigen::Quaterniond> turns = {
-      Eigen::Quaterniond::Identity(), Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 0.5).normalized()))};
-  for_each_vertical_move(bodies, turns, [](const TriangleMesh& body, const SweptBody& swept, const Pose& from,
-                                           const Pose& to, const std::string& what) {
+      Eigen::Quaterniond::Identity(), Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ())),
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 0.5).normalized()))};
+  const Grid g = centred_grid(40, 40, 0.0025);
+  for_each_vertical_move(bodies, turns, [&](const TriangleMesh& body, const SweptBody& swept, const Pose& from,
+                                            const Pose& to, const std::string& what) {
     const FacesDown fast = vertical_sweep_faces_down(body, swept, from, to);
     const TriangleMesh full = faces_turned(swept_mesh(body, swept, from, to), true);
     ASSERT_EQ(fast.mesh.F.rows(), full.F.rows()) << what;
@@ -189,6 +166,9 @@ TEST(VerticalSweepFacesDown, IsTheSweptMeshsFacesTurnedDownOnTheVerticesTheyUse)
     }
     const Aabb box = bounding_box(full);
     EXPECT_TRUE(fast.box.min == box.min && fast.box.max == box.max) << what;
+    const DepthImage x = depth_image_cpu(fast.mesh, g, ViewFrom::kBelow), y = depth_image_cpu(full, g, ViewFrom::kBelow);
+    EXPECT_TRUE((x.covered == y.covered).all()) << what;
+    EXPECT_TRUE((x.covered == 0 || x.z_m == y.z_m).all()) << what;
   });
 }
 
