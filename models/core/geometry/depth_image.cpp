@@ -36,8 +36,6 @@ Eigen::ArrayXd cell_units(const TriangleMesh& m, int axis, double origin, double
   return u;
 }
 
-// Writes the z of triangle (a, b, c) into every cell whose centre it covers
-// among cells [i0, i1] x [j0, j1], keeping the lowest (from below) or highest (from above).
 // Keeps the lowest (from below) or highest (from above) z of a cell centre.
 inline void draw(int i, int j, double z, ViewFrom view, DepthImage* img) {
   double& out = img->z_m(j, i);
@@ -45,7 +43,10 @@ inline void draw(int i, int j, double z, ViewFrom view, DepthImage* img) {
   img->covered(j, i) = 1;
 }
 
-// hits: where given, each covered centre of face `face` is appended (DepthImageCpuCache).
+// Writes the z of triangle (a, b, c) into every cell whose centre it covers
+// among cells [i0, i1] x [j0, j1], keeping the lowest (from below) or highest
+// (from above). hits: where given, each covered centre of face `face` is
+// appended (DepthImageCpuCache).
 void rasterise(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, int i0, int i1, int j0,
                int j1, ViewFrom view, DepthImage* img, int face, std::vector<DepthImageCpuCache::Hit>* hits) {
   const Grid& grid = img->grid;
