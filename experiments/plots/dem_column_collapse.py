@@ -2,10 +2,14 @@
 
 usage: python3 dem_column_collapse.py EXPERIMENT_DIR
 Reads EXPERIMENT_DIR/summary.csv (runs slot_<H0> or strip_<H0>, a periodic
-strip, and cylinder_<H0>, each name optionally after a prefix such as
+strip, and cylinder_<H0> or quarter_cylinder_<H0>, a quarter between two
+symmetry walls, each name optionally after a prefix such as
 bullet_), fits
 (L_inf - L0)/L0 = k a^n by least squares in log-log space separately for
-small (a <= A_SMALL) and large (a >= A_LARGE) aspect ratios, per solver
+small (a <= RANGES[shape][0]) and large (a >= RANGES[shape][1]) aspect
+ratios, each the side of the published law's own transition (planar: the
+gap between 1.8 and 2.8, widened to 2.5 and 3; axisymmetric: 1.7, with
+large a from 2 to leave the transition out), per solver
 (the summary's solver column: LIGGGHTS, Bullet, ODE), and writes
 dem_column_collapse.png (the runs, the fits and the published laws) and
 dem_column_collapse_fits.csv (solver, geometry, range, k, n, points, the
@@ -33,8 +37,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from figure_output import save  # noqa: E402
 
-A_SMALL = 2.5
-A_LARGE = 3.0
+RANGES = {"slot": (2.5, 3.0), "cylinder": (1.7, 2.0)}  # small a up to, large a from
 
 SHAPES = {"slot": re.compile(r"(^|_)(slot|strip)_"), "cylinder": re.compile(r"(^|_)cylinder_")}
 ORDER = ["liggghts", "bullet", "ode"]
@@ -69,7 +72,8 @@ def draw_solver(ax, rows, shape, solver, index, fits):
     r = np.array([d[1] for d in data])
     color = "C{}".format(3 * index)
     ax.loglog(a, r, "o", color=color, label="DEM ({})".format(LABEL.get(solver, solver)))
-    for name, sel, style in [("small", a <= A_SMALL, "-"), ("large", a >= A_LARGE, "-.")]:
+    a_small, a_large = RANGES[shape]
+    for name, sel, style in [("small", a <= a_small, "-"), ("large", a >= a_large, "-.")]:
         kn = fit(a[sel], r[sel])
         if kn is None:
             continue
@@ -77,7 +81,7 @@ def draw_solver(ax, rows, shape, solver, index, fits):
         x = np.geomspace(a[sel].min(), a[sel].max(), 20)
         ax.loglog(x, k * x ** n, style, color=color, label="{} fit a {} {}: {:.2f} a$^{{{:.2f}}}$".format(
             LABEL.get(solver, solver), "<=" if name == "small" else ">=",
-            A_SMALL if name == "small" else A_LARGE, k, n))
+            a_small if name == "small" else a_large, k, n))
         law = PUBLISHED[shape][0 if name == "small" else 1]
         ratio = math.exp(float(np.mean(np.log(r[sel] / (law[0] * a[sel] ** law[1])))))
         fits.append((solver, shape, name, a[sel].min(), a[sel].max(), k, n, int(sel.sum()), law[0], law[1], ratio))
@@ -86,7 +90,7 @@ def draw_solver(ax, rows, shape, solver, index, fits):
 def main(folder):
     with open(os.path.join(folder, "summary.csv")) as f:
         rows = list(csv.DictReader(f))
-    titles = {"slot": "quasi-2-D (slot or periodic strip)", "cylinder": "axisymmetric (cylinder)"}
+    titles = {"slot": "quasi-2-D (slot or periodic strip)", "cylinder": "axisymmetric (cylinder or its quarter)"}
     shapes = [s for s in titles if any(SHAPES[s].search(r["name"]) for r in rows)]
     if not shapes:
         sys.exit("dem_column_collapse: summary.csv has no slot_, strip_ or cylinder_ runs")

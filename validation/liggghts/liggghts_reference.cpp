@@ -62,7 +62,7 @@ void measure_column(LiggghtsReferenceResult& r, const Scene& scene, const std::v
   r.column = measure_column_collapse(geometry, read_last_dump_frame(r.bed.dump_path).grains, frames, times,
                                      mean_grain_diameter_m(*dem_of(scene)), options.column);
   write_runout_csv((dir / "runout.csv").string(), *r.column);
-  if (geometry.shape == DemSpec::ColumnShape::kCylinder) {
+  if (is_axisymmetric(geometry.shape)) {
     r.pile = pile_flank_angles(r.height_final, geometry.axis_xy_m, options.flank);
     write_flank_angles_csv((dir / "pile_flank_angles.csv").string(), *r.pile);
   }

@@ -16,7 +16,7 @@
 //   the manifest also holds free_bodies (each one's rest: depth, force, final state) and mass_held_kg: the mass of grains each object holds at the end
 //   and for a scene that starts from a column (dem.initial: column):
 //        runout.csv                  time_s, front_m: the deposit front over the dumps
-//        pile_flank_angles.csv       cylinder columns: the final pile's flank angle per azimuth (degrees)
+//        pile_flank_angles.csv       cylinder and quarter columns: the final pile's flank angle per azimuth (degrees)
 // run_dir must exist and should be empty (the caller makes it atomic, e.g.
 // with OutputDirectory); the run's own files (run.in, log.liggghts, dumps/) stay there.
 

@@ -48,21 +48,39 @@ std::string box_block(const DemDomain& d) {
                      liggghts_number(d.z_max_m));
 }
 
-// Atom types: 1 the grains (and every wall), 2 a rough floor. Per-type
-// properties list the grains' values for both; pair tables differ only in
-// the grain-floor rolling friction.
+// Atom types: 1 the grains (and every wall of their own material), then a
+// rough floor when there is one, then a quarter column's frictionless
+// symmetry walls when there are those. Only grains are atoms: the other
+// types exist for their pair values with the grains. Per-type properties
+// list the grains' values for every type.
 bool rough_floor(const DemSpec& dem) { return dem.floor == DemSpec::Floor::kRough; }
-int atom_type_count(const DemSpec& dem) { return rough_floor(dem) ? 2 : 1; }
+bool symmetry_walls(const DemSpec& dem) {
+  return dem.initial == DemSpec::Initial::kColumn && dem.column_shape == DemSpec::ColumnShape::kQuarterCylinder;
+}
+int floor_type(const DemSpec& dem) { return rough_floor(dem) ? 2 : 1; }
+int symmetry_type(const DemSpec& dem) { return symmetry_walls(dem) ? floor_type(dem) + 1 : 1; }
+int atom_type_count(const DemSpec& dem) { return std::max(floor_type(dem), symmetry_type(dem)); }
 
 std::string per_type(const DemSpec& dem, double v) {
-  return rough_floor(dem) ? liggghts_number(v) + " " + liggghts_number(v) : liggghts_number(v);
+  std::string out = liggghts_number(v);
+  for (int t = 2; t <= atom_type_count(dem); ++t) out += " " + liggghts_number(v);
+  return out;
 }
 
-// A type-pair table: `grains` between grains, `floor` between a grain and the floor.
-std::string per_type_pair(const DemSpec& dem, double grains, double floor) {
-  const auto n = [](double v) { return liggghts_number(v); };
-  if (!rough_floor(dem)) return "1 " + n(grains);
-  return "2 " + n(grains) + " " + n(floor) + " " + n(floor) + " " + n(floor);
+// A type-pair table: `grains` between grains, `floor` between a grain and
+// the floor, `symmetry` between a grain and a symmetry wall; a pair of two
+// wall types (which never meet) takes the value of the later one.
+std::string per_type_pair(const DemSpec& dem, double grains, double floor, double symmetry) {
+  const int count = atom_type_count(dem);
+  std::string out = std::to_string(count);
+  for (int a = 1; a <= count; ++a) {
+    for (int b = 1; b <= count; ++b) {
+      const int later = std::max(a, b);
+      const double v = later == 1 ? grains : later == symmetry_type(dem) ? symmetry : floor;
+      out += " " + liggghts_number(v);
+    }
+  }
+  return out;
 }
 
 bool periodic_sides(const DemSpec& dem) { return dem.sides == DemSpec::Sides::kPeriodic; }
@@ -92,19 +110,21 @@ void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d
   const auto n = [](double v) { return liggghts_number(v); };
   write_neighbor_settings(s, dem, neighbor);
   s << "# materials (Young's modulus softened, as DEM practice does)"
-    << (rough_floor(dem) ? "; type 2: the rough floor" : "") << "\n"
+    << (rough_floor(dem) ? "; type 2: the rough floor" : "")
+    << (symmetry_walls(dem) ? fmt::format("; type {}: the frictionless symmetry walls", symmetry_type(dem)) : "")
+    << "\n"
     << "fix m1 all property/global youngsModulus peratomtype " << per_type(dem, dem.youngs_modulus_pa) << "\n"
     << "fix m2 all property/global poissonsRatio peratomtype " << per_type(dem, dem.poisson_ratio) << "\n"
     << "fix m3 all property/global coefficientRestitution peratomtypepair "
-    << per_type_pair(dem, dem.restitution, dem.restitution) << "\n"
-    << "fix m4 all property/global coefficientFriction peratomtypepair " << per_type_pair(dem, dem.friction, dem.friction)
-    << "\n"
+    << per_type_pair(dem, dem.restitution, dem.restitution, dem.restitution) << "\n"
+    << "fix m4 all property/global coefficientFriction peratomtypepair "
+    << per_type_pair(dem, dem.friction, dem.friction, 0.0) << "\n"
     << "fix m5 all property/global coefficientRollingFriction peratomtypepair "
-    << per_type_pair(dem, dem.rolling_friction, dem.floor_rolling_friction) << "\n";
+    << per_type_pair(dem, dem.rolling_friction, dem.floor_rolling_friction, 0.0) << "\n";
   const bool cohesive = dem.cohesion_energy_density_j_m3 > 0.0;
   if (cohesive) {
     s << "fix m6 all property/global cohesionEnergyDensity peratomtypepair "
-      << per_type_pair(dem, dem.cohesion_energy_density_j_m3, 0.0) << "\n";
+      << per_type_pair(dem, dem.cohesion_energy_density_j_m3, 0.0, 0.0) << "\n";
   }
   s << "\n# Hertz-Mindlin with tangential history and rolling friction\n"
     << "pair_style gran model hertz tangential history rolling_friction " << rolling_model_name(dem)
@@ -114,12 +134,13 @@ void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d
     << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector 0 0 -1\n\n"
     << "# floor and side walls on the ground grid's edges\n";
   const std::string wall = "all wall/gran " + wall_model(dem) + " primitive type 1";
-  const std::string floor = "all wall/gran " + wall_model(dem) + " primitive type " + std::to_string(atom_type_count(dem));
+  const std::string floor = "all wall/gran " + wall_model(dem) + " primitive type " + std::to_string(floor_type(dem));
+  const std::string symmetry = "all wall/gran " + wall_model(dem) + " primitive type " + std::to_string(symmetry_type(dem));
   s << "fix wall_floor " << floor << " zplane " << n(d.z_min_m) << "\n"
-    << "fix wall_xmin " << wall << " xplane " << n(d.x_min_m) << "\n"
+    << "fix wall_xmin " << symmetry << " xplane " << n(d.x_min_m) << "\n"
     << "fix wall_xmax " << wall << " xplane " << n(d.x_max_m) << "\n";
   if (!periodic_sides(dem)) {
-    s << "fix wall_ymin " << wall << " yplane " << n(d.y_min_m) << "\n"
+    s << "fix wall_ymin " << symmetry << " yplane " << n(d.y_min_m) << "\n"
       << "fix wall_ymax " << wall << " yplane " << n(d.y_max_m) << "\n";
   }
   s << "fix integrate all nve/sphere\n\n";
@@ -137,9 +158,13 @@ double fill_height_m(const Scene& scene, const BedScriptOptions& o) {
   if (is_column(dem)) {
     const ColumnGeometry c = column_geometry(scene);
     const double r = dem.grain_radius_m * (1.0 + dem.radius_spread);
-    const double open = c.shape == DemSpec::ColumnShape::kSlot
-                            ? (c.width_m - 2 * r) * (periodic_sides(dem) ? c.gap_m : c.gap_m - 2 * r)
-                            : std::numbers::pi * (c.width_m - r) * (c.width_m - r);
+    const double rho = c.width_m - r;  // axisymmetric: the radius open to centres
+    double open = std::numbers::pi * rho * rho;
+    if (c.shape == DemSpec::ColumnShape::kSlot) {
+      open = (c.width_m - 2 * r) * (periodic_sides(dem) ? c.gap_m : c.gap_m - 2 * r);
+    } else if (c.shape == DemSpec::ColumnShape::kQuarterCylinder) {
+      open = 0.25 * std::numbers::pi * rho * rho - 2.0 * r * rho + r * r;  // less the strips along both walls
+    }
     factor = c.footprint_m2 / open;
   }
   return settled_height_m(dem) * o.packing_fraction / o.insert_volume_fraction * factor;
@@ -161,12 +186,21 @@ void write_insertion_region(std::ostringstream& s, const Scene& scene, const Dem
     s << "fix gate " << wall << " xplane " << n(c.gate_x_m) << "\n"
       << "region fill block " << n(c.back_wall_x_m) << " " << n(c.gate_x_m) << " " << n(d.y_min_m) << " "
       << n(d.y_max_m) << " 0 " << n(fill_m) << " units box\n";
-  } else {
-    s << "fix gate " << wall << " zcylinder " << n(c.width_m) << " " << n(c.axis_xy_m.x()) << " "
-      << n(c.axis_xy_m.y()) << "\n"
-      << "region fill cylinder z " << n(c.axis_xy_m.x()) << " " << n(c.axis_xy_m.y()) << " " << n(c.width_m)
-      << " 0 " << n(fill_m) << " units box\n";
+    return;
   }
+  s << "fix gate " << wall << " zcylinder " << n(c.width_m) << " " << n(c.axis_xy_m.x()) << " " << n(c.axis_xy_m.y())
+    << "\n";
+  if (c.shape == DemSpec::ColumnShape::kCylinder) {
+    s << "region fill cylinder z " << n(c.axis_xy_m.x()) << " " << n(c.axis_xy_m.y()) << " " << n(c.width_m) << " 0 "
+      << n(fill_m) << " units box\n";
+    return;
+  }
+  // the quarter between the symmetry walls: the cylinder cut by the quadrant x, y >= the axis
+  s << "region fill_cylinder cylinder z " << n(c.axis_xy_m.x()) << " " << n(c.axis_xy_m.y()) << " " << n(c.width_m)
+    << " 0 " << n(fill_m) << " units box\n"
+    << "region fill_quadrant block " << n(c.axis_xy_m.x()) << " " << n(c.axis_xy_m.x() + c.width_m) << " "
+    << n(c.axis_xy_m.y()) << " " << n(c.axis_xy_m.y() + c.width_m) << " 0 " << n(fill_m) << " units box\n"
+    << "region fill intersect 2 fill_cylinder fill_quadrant units box\n";
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ double column_front_m(const ColumnGeometry& geometry, const GrainSet& grains, do
     return deposit_front_m(grains, Eigen::Vector3d(geometry.back_wall_x_m, 0.0, 0.0), Eigen::Vector3d::UnitX(),
                            max_gap_m);
   }
-  const RadialFront f = radial_deposit_front(grains, geometry.axis_xy_m, max_gap_m, sector_count);
+  const RadialFront f = radial_deposit_front(grains, geometry.axis_xy_m, max_gap_m, sector_count,
+                                             {geometry.azimuth_begin_rad, geometry.azimuth_span_rad});
   if (spread_m) *spread_m = f.std_m;
   return f.mean_m;
 }
@@ -60,7 +61,7 @@ nlohmann::json column_results_json(const std::optional<ColumnCollapse>& column, 
   nlohmann::json json = nlohmann::json::object();
   if (column) {
     const ColumnCollapse& c = *column;
-    json["column"] = {{"shape", c.geometry.shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder"},
+    json["column"] = {{"shape", column_shape_name(c.geometry.shape)},
                       {"width_m", c.geometry.width_m},
                       {"slot_gap_m", c.geometry.gap_m},
                       {"height_initial_m", c.height_initial_m},

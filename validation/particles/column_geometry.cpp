@@ -10,6 +10,16 @@
 
 namespace repose {
 
+std::string column_shape_name(DemSpec::ColumnShape shape) {
+  switch (shape) {
+    case DemSpec::ColumnShape::kSlot: return "slot";
+    case DemSpec::ColumnShape::kCylinder: return "cylinder";
+    case DemSpec::ColumnShape::kQuarterCylinder: return "quarter_cylinder";
+  }
+  REPOSE_DEMAND(false);
+  return {};
+}
+
 double settled_height_m(const DemSpec& dem) {
   return dem.initial == DemSpec::Initial::kColumn ? dem.column_height_m : dem.bed_depth_m;
 }
@@ -35,11 +45,21 @@ ColumnGeometry column_geometry(const DemSpec& dem, const Scene& scene) {
                                    "extent ({} m), which is where it collapses to",
                                    scene.source_path, c.width_m, g.extent_x_m()));
     }
-  } else {
+  } else if (c.shape == DemSpec::ColumnShape::kCylinder) {
     c.footprint_m2 = std::numbers::pi * c.width_m * c.width_m;
     if (2.0 * c.width_m >= std::min(g.extent_x_m(), g.extent_y_m())) {
       throw InputError(fmt::format("{}: dem: column_width_m: the cylinder's radius ({} m) must be less than half the "
                                    "grid's smaller extent ({} m)",
+                                   scene.source_path, c.width_m, std::min(g.extent_x_m(), g.extent_y_m())));
+    }
+  } else {
+    c.axis_xy_m = Eigen::Vector2d(g.origin_x_m, g.origin_y_m);
+    c.footprint_m2 = 0.25 * std::numbers::pi * c.width_m * c.width_m;
+    c.azimuth_begin_rad = 0.0;
+    c.azimuth_span_rad = 0.5 * std::numbers::pi;
+    if (c.width_m >= std::min(g.extent_x_m(), g.extent_y_m())) {
+      throw InputError(fmt::format("{}: dem: column_width_m: the quarter cylinder's radius ({} m) must be less than "
+                                   "the grid's smaller extent ({} m), which is where it collapses to",
                                    scene.source_path, c.width_m, std::min(g.extent_x_m(), g.extent_y_m())));
     }
   }

@@ -52,11 +52,17 @@ struct DemSpec {
   //     plane x = x_min + column_width_m.
   //   cylinder: axisymmetric; a cylinder of radius column_width_m on the
   //     grid's centre; the gate is the cylinder wall.
+  //   quarter_cylinder: axisymmetric at a quarter of the grains: the
+  //     quarter of a cylinder of radius column_width_m whose axis is the
+  //     grid's (x_min, y_min) corner, between the x_min and y_min walls made
+  //     frictionless (no sliding or rolling friction), so they act as the
+  //     column's two planes of symmetry. LIGGGHTS only; the rigid engines
+  //     refuse it.
   enum class Initial { kBed, kColumn };
   Initial initial = Initial::kBed;
-  enum class ColumnShape { kSlot, kCylinder };
+  enum class ColumnShape { kSlot, kCylinder, kQuarterCylinder };
   ColumnShape column_shape = ColumnShape::kCylinder;
-  double column_width_m = 0.02;   // slot: length L0 along x; cylinder: radius R0
+  double column_width_m = 0.02;   // slot: length L0 along x; cylinder and quarter: radius R0
   double column_height_m = 0.04;  // H0, the settled column's intended height
 
   // The floor (z = 0). smooth: a plane of the grains' own material. rough: a
@@ -120,7 +126,8 @@ void dem_fields(Visitor& v, DemSpec& d) {
   v.choice("initial", d.initial, std::vector<std::pair<std::string, I>>{{"bed", I::kBed}, {"column", I::kColumn}});
   using C = DemSpec::ColumnShape;
   v.choice("column_shape", d.column_shape,
-           std::vector<std::pair<std::string, C>>{{"slot", C::kSlot}, {"cylinder", C::kCylinder}});
+           std::vector<std::pair<std::string, C>>{
+               {"slot", C::kSlot}, {"cylinder", C::kCylinder}, {"quarter_cylinder", C::kQuarterCylinder}});
   v.number("column_width_m", d.column_width_m, Range::any());
   v.number("column_height_m", d.column_height_m, Range::any());
   using F = DemSpec::Floor;

@@ -81,14 +81,14 @@ double deposit_front_m(const GrainSet& grains, const Eigen::Vector3d& origin_m, 
 }
 
 RadialFront radial_deposit_front(const GrainSet& grains, const Eigen::Vector2d& axis_xy_m, double max_gap_m,
-                                 int sector_count) {
+                                 int sector_count, const AzimuthRange& range) {
   require_front_inputs(grains, max_gap_m);
-  REPOSE_DEMAND(sector_count >= 1);
+  REPOSE_DEMAND(sector_count >= 1 && range.span_rad > 0.0 && range.span_rad <= 2.0 * std::numbers::pi);
   std::vector<std::vector<std::pair<double, double>>> sectors(static_cast<std::size_t>(sector_count));
   for (Eigen::Index g = 0; g < grains.size(); ++g) {
     const Eigen::Vector2d v(grains.position_m(g, 0) - axis_xy_m.x(), grains.position_m(g, 1) - axis_xy_m.y());
-    const double azimuth = std::atan2(v.y(), v.x()) + std::numbers::pi;  // [0, 2 pi]
-    const int k = std::min(sector_count - 1, static_cast<int>(azimuth / (2 * std::numbers::pi) * sector_count));
+    const double azimuth = std::atan2(v.y(), v.x()) - range.begin_rad;
+    const int k = std::clamp(static_cast<int>(std::floor(azimuth / range.span_rad * sector_count)), 0, sector_count - 1);
     sectors[static_cast<std::size_t>(k)].emplace_back(v.norm(), grains.radius_m[g]);
   }
   RadialFront out;

@@ -5,6 +5,7 @@
 //   by an object, the runout front along a direction, the flank angles of a pile.
 // The surface height field itself is in surface_height.h.
 
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -69,11 +70,19 @@ struct RadialFront {
   double std_m = 0.0;                  // sample standard deviation over the sectors (0 for one)
 };
 
-// The same rule radially, per azimuth sector (sector_count equal sectors
-// around the vertical axis through axis_xy_m): distances in the xy plane
-// from the axis. For the runout of an axisymmetric collapse.
+// The azimuths, from the +x axis, that a radial front is measured over:
+// all of them by default, [0, pi/2] for a quarter column between its walls.
+struct AzimuthRange {
+  double begin_rad = -std::numbers::pi;
+  double span_rad = 2.0 * std::numbers::pi;
+};
+
+// The same rule radially, per azimuth sector (sector_count equal sectors of
+// the azimuth range around the vertical axis through axis_xy_m; a grain
+// outside the range counts in the nearer end sector): distances in the xy
+// plane from the axis. For the runout of an axisymmetric collapse.
 RadialFront radial_deposit_front(const GrainSet& grains, const Eigen::Vector2d& axis_xy_m, double max_gap_m,
-                                 int sector_count = 16);
+                                 int sector_count = 16, const AzimuthRange& range = {});
 
 // The top of the grains: the largest z + radius (m). InputError for no grains.
 double grain_top_m(const GrainSet& grains);

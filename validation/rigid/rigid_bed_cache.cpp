@@ -97,7 +97,7 @@ std::string rigid_bed_key_text(const RigidEngine& engine, const RigidInputs& in)
       d.settle_kinetic_energy_j, d.bed_depth_m);
   text += fmt::format("grid={} {} {} {} {}\nseed={}\n", g.nx, g.ny, g.cell_size_m, g.origin_x_m, g.origin_y_m, in.seed);
   if (in.column) {
-    text += fmt::format("column={} {} {}\n", in.column->shape == DemSpec::ColumnShape::kSlot ? "slot" : "cylinder",
+    text += fmt::format("column={} {} {}\n", column_shape_name(in.column->shape),
                         d.column_width_m, d.column_height_m);
   }
   return text;

@@ -122,6 +122,11 @@ RigidInputs rigid_inputs(const Scene& scene, const std::string& solver) {
     throw InputError(fmt::format("{}: dem: sides: periodic side walls are LIGGGHTS only; {} needs sides: walls",
                                  scene.source_path, solver));
   }
+  if (dem.initial == DemSpec::Initial::kColumn && dem.column_shape == DemSpec::ColumnShape::kQuarterCylinder) {
+    throw InputError(fmt::format("{}: dem: column_shape: a quarter cylinder needs frictionless symmetry walls, which "
+                                 "only LIGGGHTS has here; {} needs column_shape: cylinder or slot",
+                                 scene.source_path, solver));
+  }
   RigidInputs in{dem, scene.ground.grid, scene.objects, scene.time, scene.seed, std::nullopt};
   if (dem.initial == DemSpec::Initial::kColumn) in.column = column_geometry(dem, scene);
   return in;

@@ -36,8 +36,49 @@ TEST(ColumnScript, CylinderStandsOnTheGridsCentre) {
   EXPECT_DOUBLE_EQ(c.footprint_m2, std::numbers::pi * 0.012 * 0.012);
 }
 
+// A quarter column: its axis is the grid's (x_min, y_min) corner, its grains
+// a quarter of the cylinder's, its front measured over the quadrant.
+TEST(ColumnScript, QuarterCylinderStandsInTheGridsCorner) {
+  const Scene s = testing::column_dem_scene(Shape::kQuarterCylinder, 0.03);
+  const ColumnGeometry c = column_geometry(s);
+  EXPECT_EQ(c.axis_xy_m, Eigen::Vector2d(0.0, 0.0));
+  EXPECT_DOUBLE_EQ(c.footprint_m2, 0.25 * std::numbers::pi * 0.012 * 0.012);
+  EXPECT_DOUBLE_EQ(c.azimuth_begin_rad, 0.0);
+  EXPECT_DOUBLE_EQ(c.azimuth_span_rad, 0.5 * std::numbers::pi);
+  const Scene whole = testing::column_dem_scene(Shape::kCylinder, 0.03);
+  EXPECT_NEAR(static_cast<double>(bed_grain_count(s, {})), 0.25 * static_cast<double>(bed_grain_count(whole, {})), 1.0);
+  EXPECT_EQ(column_shape_name(c.shape), "quarter_cylinder");
+}
+
+// The quarter's two planes of symmetry are the x_min and y_min walls, of a
+// third atom type with neither sliding nor rolling friction against grains;
+// the far walls stay of the grains' material, the floor rough.
+TEST(ColumnScript, QuarterCylinderLeansOnFrictionlessSymmetryWalls) {
+  const Scene s = testing::column_dem_scene(Shape::kQuarterCylinder, 0.03);
+  for (const std::string& script : {bed_script(s), run_script(s).text}) {
+    EXPECT_NE(script.find("coefficientFriction peratomtypepair 3 0.5 0.5 0 0.5 0.5 0 0 0 0\n"), std::string::npos)
+        << script;
+    EXPECT_NE(script.find("coefficientRollingFriction peratomtypepair 3 0.1 1 0 1 1 0 0 0 0\n"), std::string::npos)
+        << script;
+    EXPECT_NE(script.find("youngsModulus peratomtype 5e+06 5e+06 5e+06\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("primitive type 3 xplane 0\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("primitive type 3 yplane 0\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("primitive type 1 xplane 0.12\n"), std::string::npos) << script;
+    EXPECT_NE(script.find("primitive type 2 zplane 0\n"), std::string::npos) << script;
+  }
+  const std::string bed = bed_script(s);
+  EXPECT_NE(bed.find("create_box 3 domain\n"), std::string::npos);
+  EXPECT_NE(bed.find("primitive type 1 zcylinder 0.012 0 0\n"), std::string::npos) << bed;
+  EXPECT_NE(bed.find("region fill intersect 2 fill_cylinder fill_quadrant units box\n"), std::string::npos) << bed;
+  EXPECT_NE(bed.find("region fill_quadrant block 0 0.012 0 0.012 0 "), std::string::npos) << bed;
+  // a whole cylinder keeps two types and walls of the grains' own material
+  const std::string whole = bed_script(testing::column_dem_scene(Shape::kCylinder, 0.03));
+  EXPECT_NE(whole.find("create_box 2 domain\n"), std::string::npos);
+  EXPECT_EQ(whole.find("primitive type 3"), std::string::npos);
+}
+
 TEST(ColumnScript, GrainCountFillsTheFootprintToTheColumnHeight) {
-  for (Shape shape : {Shape::kSlot, Shape::kCylinder}) {
+  for (Shape shape : {Shape::kSlot, Shape::kCylinder, Shape::kQuarterCylinder}) {
     const Scene s = testing::column_dem_scene(shape, 0.04);
     const BedScriptOptions o;
     const double expected = column_geometry(s).footprint_m2 * 0.04 * o.packing_fraction / mean_grain_volume_m3(*dem_of(s));
@@ -91,7 +132,7 @@ TEST(ColumnScript, CylinderBedHasACylinderGateAndInsertsInsideIt) {
 }
 
 TEST(ColumnScript, RunScriptHasNoGateAndRoomAboveTheColumn) {
-  for (Shape shape : {Shape::kSlot, Shape::kCylinder}) {
+  for (Shape shape : {Shape::kSlot, Shape::kCylinder, Shape::kQuarterCylinder}) {
     const Scene s = testing::column_dem_scene(shape, 0.05);
     const RunScript run = run_script(s);
     EXPECT_EQ(run.text.find("gate"), std::string::npos) << run.text;
@@ -148,6 +189,12 @@ TEST(ColumnScript, RefusesColumnsThatDoNotFitTheGrid) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("column_width_m"), std::string::npos) << e.what();
   }
+
+  Scene quarter = testing::column_dem_scene(Shape::kQuarterCylinder, 0.03);
+  quarter = with_dem_changed(std::move(quarter), [&](DemSpec& d) { d.column_width_m = 0.12; });  // as wide as the grid
+  EXPECT_THROW(bed_script(quarter), InputError);
+  quarter = with_dem_changed(std::move(quarter), [&](DemSpec& d) { d.column_width_m = 0.07; });  // fits in the corner
+  EXPECT_NO_THROW(bed_script(quarter));
 
   Scene narrow = testing::column_dem_scene(Shape::kSlot, 0.03);
   narrow.ground.grid = Grid{40, 1, 0.004, 0.0, 0.0};  // a slot 4 mm wide: one grain diameter

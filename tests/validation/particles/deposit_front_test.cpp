@@ -91,6 +91,25 @@ TEST(DepositFront, RadialFrontSpreadShowsALopsidedDeposit) {
               1e-12);
 }
 
+// A quarter column's deposit lies in one quadrant: measured over the whole
+// circle, three quarters of the sectors are empty and the finger along +x
+// weighs a quarter; over the quadrant every sector holds the quarter disc.
+TEST(DepositFront, RadialFrontOverAQuadrantUsesEverySectorOfTheQuarter) {
+  std::vector<Eigen::Vector3d> quarter;
+  for (const Eigen::Vector3d& c : disc(0.0, 0.0, 8)) {
+    if (c.x() > 0.0 && c.y() > 0.0) quarter.push_back(c);
+  }
+  const AzimuthRange quadrant{0.0, 0.5 * std::numbers::pi};
+  const RadialFront f = radial_deposit_front(grains_at(quarter), Eigen::Vector2d::Zero(), 4 * kR, 8, quadrant);
+  EXPECT_EQ(f.sector_front_m.size(), 8u);
+  for (double s : f.sector_front_m) EXPECT_NEAR(s, 17 * kR, 1e-12);
+  EXPECT_EQ(radial_deposit_front(grains_at(quarter), Eigen::Vector2d::Zero(), 4 * kR, 8).sector_front_m.size(), 2u);
+  // a grain a hair outside the range (on a wall) counts in the nearer end sector
+  quarter.emplace_back(2 * kR, -1e-9, kR);
+  EXPECT_EQ(radial_deposit_front(grains_at(quarter), Eigen::Vector2d::Zero(), 4 * kR, 8, quadrant).sector_front_m.size(),
+            8u);
+}
+
 TEST(DepositFront, GrainTopIsTheHighestGrainsTop) {
   const GrainSet g = grains_at(block(0.0, 2, 2, 5));
   EXPECT_NEAR(grain_top_m(g), 10 * kR, 1e-12);

@@ -137,5 +137,19 @@ TEST(RigidSetup, AColumnThatDoesNotFitTheGridIsRefused) {
   EXPECT_THROW(rigid_inputs(Scene{}, "test"), InputError);
 }
 
+// A quarter column needs frictionless symmetry walls, which the rigid
+// engines' ground box does not have: refused in one line naming the key.
+TEST(RigidSetup, AQuarterColumnIsRefusedNamingTheKey) {
+  try {
+    rigid_inputs(column_scene(DemSpec::ColumnShape::kQuarterCylinder), "bullet");
+    FAIL() << "a quarter column was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("column_shape"), std::string::npos) << what;
+    EXPECT_NE(what.find("bullet"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace repose
