@@ -18,8 +18,8 @@ struct TearRunOptions {
   // The step as a fraction of the explicit stable limit: in (0, 1] for the
   // explicit integrator, (0, 1000] for the implicit one.
   double time_step_fraction = 0.9;
-  // Stop early once the tear has reached this depth below the top edge (m);
-  // 0: run the whole duration.
+  // Stop at the end of the first step whose tear reaches this depth below
+  // the top edge (m); 0: run the whole duration.
   double stop_at_depth_m = 0.0;
   // The implicit integrator's linear solver (implicit_integrator.h); not
   // read from scenes: the benchmark compares preconditioners over whole tears.
