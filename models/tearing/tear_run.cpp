@@ -80,7 +80,10 @@ TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearR
   const bool from_notch = !model.notch_cells.empty() && run.path.holds_notch;
   const double notch_depth_m = from_notch ? static_cast<double>(model.notch_cells.size()) * model.cell_size_m : 0.0;
   run.tear_length_m = std::max(0.0, run.path.depth_m - notch_depth_m);
-  if (run.tear_length_m > 0.0) run.work_per_tear_length_j_per_m = run.grip_work_j / run.tear_length_m;
+  if (run.tear_length_m > 0.0) {
+    run.work_per_tear_length_j_per_m = run.grip_work_j / run.tear_length_m;
+    run.fracture_energy_per_tear_length_j_per_m = run.state.torn_energy_j / run.tear_length_m;
+  }
   run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -42,6 +42,11 @@ struct TearRun {
   // grip_work_j / tear_length_m (J/m), elastic energy still stored included;
   // 0 when the sheet did not tear.
   double work_per_tear_length_j_per_m = 0.0;
+  // state.torn_energy_j / tear_length_m (J/m): the energy the torn cells
+  // held when they tore, per unit tear length, i.e. the part of the work
+  // the tear rule dissipates (under the energy rule a fixed fraction of
+  // tear_energy_j_per_m, whatever the mesh); 0 when the sheet did not tear.
+  double fracture_energy_per_tear_length_j_per_m = 0.0;
   double wall_seconds = 0.0;
 };
 

@@ -38,6 +38,10 @@ TEST(TearRun, AUniformSheetTearsStraightAlongItsNotchUnderTheTwist) {
   EXPECT_GT(run.peak_grip_force_n, 0.0);
   EXPECT_GT(run.grip_work_j, 0.0);
   EXPECT_NEAR(run.work_per_tear_length_j_per_m, run.grip_work_j / run.tear_length_m, 1e-12);
+  // the tear's own share of the grips' work: positive, and less than all of it
+  EXPECT_NEAR(run.fracture_energy_per_tear_length_j_per_m, run.state.torn_energy_j / run.tear_length_m, 1e-12);
+  EXPECT_GT(run.fracture_energy_per_tear_length_j_per_m, 0.0);
+  EXPECT_LT(run.fracture_energy_per_tear_length_j_per_m, run.work_per_tear_length_j_per_m);
 }
 
 // The run stops on the very step whose tear first reaches the depth, not
