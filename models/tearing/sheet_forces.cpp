@@ -56,6 +56,16 @@ CellStretch stretch_of(const std::array<CellSpring, 6>& springs, const Eigen::Ma
   return s;
 }
 
+double cell_spring_energy(const std::array<CellSpring, 6>& springs, const CellStretch& s, const SpringConstants& k,
+                          double weight) {
+  double energy = 0.0;
+  for (int q = 0; q < 6; ++q) {
+    const double stretch = s.length[q] - springs[q].rest_length_m;
+    energy += 0.5 * spring_constant_n_per_m(k, springs[q], weight) * stretch * stretch;
+  }
+  return energy;
+}
+
 void add_cell_forces(const std::array<CellSpring, 6>& springs, const CellStretch& s, const SpringConstants& k,
                      double weight, Eigen::Matrix3Xd* forces) {
   for (int q = 0; q < 6; ++q) {
@@ -108,6 +118,7 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
     const CellStretch s = stretch_of(springs, state->positions, cell_tear_strain(model, params, c));
     if (s.over) {
       state->torn_step[static_cast<std::size_t>(c)] = step_number;
+      state->torn_energy_j += cell_spring_energy(springs, s, k, model.cell_stiffness[c]);
       ++torn;
     } else {
       add_cell_forces(springs, s, k, model.cell_stiffness[c], forces);

@@ -51,7 +51,8 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
 // The tear rule of tearing.h and internal_forces in one pass over the
 // springs (each cell's verdict depends on its own springs only, so tearing
 // a cell before the next is judged changes nothing): cells over their limit
-// are marked torn at step_number, the forces of the rest accumulated.
+// are marked torn at step_number, the energy their springs held added to
+// state->torn_energy_j, the forces of the rest accumulated.
 // Returns the number of cells torn.
 int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
                              Eigen::Matrix3Xd* forces);

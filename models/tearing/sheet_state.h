@@ -22,6 +22,11 @@ struct SheetState {
   // axes (N) during the last step, and the work the grips have done (J).
   Eigen::Matrix3Xd grip_force_n;
   double grip_work_j = 0.0;
+  // The elastic energy (J) the springs of each cell held at the moment it
+  // tore, summed over the run (the notch excluded): the energy the tear
+  // itself took out of the sheet, apart from what the grips put into the
+  // flaps' motion, drag and the strain still stored (tear_run.h).
+  double torn_energy_j = 0.0;
 
   bool intact(int cell) const { return torn_step[static_cast<std::size_t>(cell)] < 0; }
   int torn_count() const;

@@ -18,8 +18,8 @@ struct TearRunOptions {
   // The step as a fraction of the explicit stable limit: in (0, 1] for the
   // explicit integrator, (0, 1000] for the implicit one.
   double time_step_fraction = 0.9;
-  // Stop early once the tear has reached this depth below the top edge (m);
-  // 0: run the whole duration.
+  // Stop at the end of the first step whose tear reaches this depth below
+  // the top edge (m); 0: run the whole duration.
   double stop_at_depth_m = 0.0;
   // The implicit integrator's linear solver (implicit_integrator.h); not
   // read from scenes: the benchmark compares preconditioners over whole tears.
@@ -42,6 +42,11 @@ struct TearRun {
   // grip_work_j / tear_length_m (J/m), elastic energy still stored included;
   // 0 when the sheet did not tear.
   double work_per_tear_length_j_per_m = 0.0;
+  // state.torn_energy_j / tear_length_m (J/m): the energy the torn cells
+  // held when they tore, per unit tear length, i.e. the part of the work
+  // the tear rule dissipates (under the energy rule a fixed fraction of
+  // tear_energy_j_per_m, whatever the mesh); 0 when the sheet did not tear.
+  double fracture_energy_per_tear_length_j_per_m = 0.0;
   double wall_seconds = 0.0;
 };
 

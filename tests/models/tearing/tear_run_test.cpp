@@ -38,6 +38,35 @@ TEST(TearRun, AUniformSheetTearsStraightAlongItsNotchUnderTheTwist) {
   EXPECT_GT(run.peak_grip_force_n, 0.0);
   EXPECT_GT(run.grip_work_j, 0.0);
   EXPECT_NEAR(run.work_per_tear_length_j_per_m, run.grip_work_j / run.tear_length_m, 1e-12);
+  // the tear's own share of the grips' work: positive, and less than all of it
+  EXPECT_NEAR(run.fracture_energy_per_tear_length_j_per_m, run.state.torn_energy_j / run.tear_length_m, 1e-12);
+  EXPECT_GT(run.fracture_energy_per_tear_length_j_per_m, 0.0);
+  EXPECT_LT(run.fracture_energy_per_tear_length_j_per_m, run.work_per_tear_length_j_per_m);
+}
+
+// The run stops on the very step whose tear first reaches the depth, not
+// up to 1/200 of the duration later: the same run one step shorter, without
+// the stop, has not reached it. Over ~55,000 steps a check every 1/200 of
+// them would stop on a multiple of ~277 steps and fail this.
+TEST(TearRun, StopsOnTheStepTheTearReachesTheDepth) {
+  SheetSpec spec = free_sheet_spec(0.042, 21);
+  spec.damping_per_s = 2e3;
+  spec.grips = seed_twist_grips(0.042, 0.042, 0.006, 0.006, 4.0);
+  spec.notch_length_m = 0.004;
+  spec.notch_x_m = 0.021;
+  const SheetModel model = uniform_sheet(spec);
+  TearRunOptions options;
+  options.duration_s = 0.02;
+  options.stop_at_depth_m = 0.024;
+  const TearRun stopped = run_tear(model, SheetParams{}, options);
+  ASSERT_GE(stopped.path.depth_m, 0.024 - 1e-12);
+  ASSERT_GT(stopped.steps, 2);
+  ASSERT_LT(stopped.steps, static_cast<long>(options.duration_s / stopped.time_step_s) - 2);
+  options.stop_at_depth_m = 0.0;
+  options.duration_s = (static_cast<double>(stopped.steps) - 1.5) * stopped.time_step_s;
+  const TearRun shorter = run_tear(model, SheetParams{}, options);
+  EXPECT_EQ(shorter.steps, stopped.steps - 1);
+  EXPECT_LT(shorter.path.depth_m, 0.024 - 1e-12);
 }
 
 // The same with the implicit integrator at four times the explicit limit.

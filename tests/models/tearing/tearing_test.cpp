@@ -30,6 +30,32 @@ TEST(Tearing, NothingTearsBelowTheLimitAndEveryCellOverItTearsAtOnce) {
   EXPECT_EQ(above.positions.cols(), model.vertex_count());
 }
 
+// The energy a tear takes out of the sheet is the elastic energy its cells'
+// springs held: with no bending terms, the sheet's potential energy before
+// the tear less that after it, to rounding; cells that did not tear add
+// nothing, and the notch cut before the run is not counted.
+TEST(Tearing, TheTornEnergyIsWhatTheTornCellsSpringsHeld) {
+  SheetSpec spec = free_sheet_spec(0.05, 9);
+  spec.bending_stiffness_n_m = 0.0;
+  spec.notch_length_m = 0.012;
+  const SheetModel model = uniform_sheet(spec);
+  SheetParams params;
+  params.tear_strain = 0.02;
+  SheetState state = affinely_stretched(model, 0.005, -0.0017);
+  EXPECT_EQ(state.torn_energy_j, 0.0);
+  for (int i = 0; i < 4; ++i) state.positions(0, model.vertex(i + 1, 4)) += 0.01 * model.cell_size_m;  // cells (i..i+1, 3..4) over
+  Eigen::Matrix3Xd forces;
+  EXPECT_EQ(tear_and_internal_forces(model, params, 1, &state, &forces), 0) << "below the limit nothing tears";
+  EXPECT_EQ(state.torn_energy_j, 0.0);
+  for (int i = 0; i < 4; ++i) state.positions(0, model.vertex(i + 1, 4)) += 0.03 * model.cell_size_m;
+  const double before = potential_energy(model, params, state);
+  const int torn = tear_and_internal_forces(model, params, 2, &state, &forces);
+  ASSERT_GT(torn, 0);
+  ASSERT_LT(torn, model.cell_count() - static_cast<int>(model.notch_cells.size()));
+  EXPECT_GT(state.torn_energy_j, 0.0);
+  EXPECT_NEAR(state.torn_energy_j, before - potential_energy(model, params, state), 1e-12 * before);
+}
+
 // A pulled strip whose one soft cell is the first to go.
 TEST(Tearing, TearStartsWhereTheStrainFirstExceedsTheLimit) {
   SheetSpec spec = free_sheet_spec(0.02, 10);
