@@ -65,6 +65,14 @@ std::string per_type_pair(const DemSpec& dem, double grains, double floor) {
   return "2 " + n(grains) + " " + n(floor) + " " + n(floor) + " " + n(floor);
 }
 
+// "0 0 -1" on a level floor (every script's text before chutes), the
+// tilted direction on a chute (dem_section.h).
+std::string gravity_vector_text(const DemSpec& dem) {
+  if (dem.slope_deg == 0.0) return "0 0 -1";
+  const Eigen::Vector3d g = gravity_direction(dem);
+  return liggghts_number(g.x()) + " 0 " + liggghts_number(g.z());
+}
+
 bool periodic_sides(const DemSpec& dem) { return dem.sides == DemSpec::Sides::kPeriodic; }
 
 // The box's boundaries: fixed, or periodic in y for a periodic strip.
@@ -111,7 +119,7 @@ void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d
     << (cohesive ? " cohesion sjkr" : "") << "\n"
     << "pair_coeff * *\n"
     << "timestep " << n(dem.time_step_s) << "\n"
-    << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector 0 0 -1\n\n"
+    << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector " << gravity_vector_text(dem) << "\n\n"
     << "# floor and side walls on the ground grid's edges\n";
   const std::string wall = "all wall/gran " + wall_model(dem) + " primitive type 1";
   const std::string floor = "all wall/gran " + wall_model(dem) + " primitive type " + std::to_string(atom_type_count(dem));
@@ -317,6 +325,15 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
 
 namespace {
 
+// On a chute, grains that hit the wall at its foot splash up it: with no
+// losses they rise at most as far (normal to the floor) as they fell, the
+// settled height plus the grid's length times tan(slope). Half as much
+// again, for grains thrown up by others.
+double chute_splash_top_m(const Scene& scene, const DemSpec& dem) {
+  const double a = dem.slope_deg * std::numbers::pi / 180.0;
+  return 1.5 * (settled_height_m(dem) + scene.ground.grid.extent_x_m() * std::tan(a));
+}
+
 // The run's box (the grid's extent, up to the highest point any object
 // reaches) and each object's STL mesh at its start pose.
 void place_objects(const Scene& scene, const DemSpec& dem, const RunScriptOptions& options, RunScript* out) {
@@ -347,6 +364,7 @@ void place_objects(const Scene& scene, const DemSpec& dem, const RunScriptOption
     start.position_m = position_at(o, 0.0);
     out->meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, start)});
   }
+  if (dem.slope_deg > 0.0) top = std::max(top, chute_splash_top_m(scene, dem));
   d.z_max_m = top + (options.top_margin_m > 0 ? options.top_margin_m : 8.0 * dem.grain_radius_m);
 }
 
@@ -392,7 +410,7 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
     << "thermo " << thermo_every << "\n"
     << "thermo_modify lost error norm no\n"
     << "dump grains " << liggghts_dump_group(scene) << " custom " << out.dump_interval_steps << " " << kDumpDirectory
-    << "/dump.*.txt id type x y z radius\n"
+    << "/dump.*.txt id type x y z radius" << (measures_impact(dem) ? " vx vy vz" : "") << "\n"
     << "dump_modify grains sort id\n\n";
   std::vector<std::string> mesh_fix_ids;
   for (std::size_t k = 0, mesh = 0; k < scene.objects.size(); ++k) {  // a free sphere has no mesh: ""

@@ -96,7 +96,9 @@ struct RunScript {
   long dump_interval_steps = 0;
 };
 
-// Requires scene.dem. Objects move as ObjectSpec::pose_at says, per segment
+// Requires scene.dem. The box reaches above the highest object (and on a
+// chute, dem.slope_deg > 0, above the highest splash up the wall at its foot:
+// 1.5 (settled height + grid length * tan slope)). Objects move as ObjectSpec::pose_at says, per segment
 // between consecutive keyframe times of any object: a `fix move/mesh linear`
 // (the body origin's velocity) and, where the orientation changes, a
 // `fix move/mesh rotate` superposed on it (constant rate about the slerp's
