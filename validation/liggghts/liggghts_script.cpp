@@ -11,6 +11,7 @@
 
 #include "models/core/base/error.h"
 #include "validation/liggghts/liggghts_free_body.h"
+#include "validation/particles/chute_impact.h"
 #include "validation/liggghts/liggghts_motion.h"
 #include "validation/liggghts/liggghts_section.h"
 
@@ -65,10 +66,10 @@ std::string per_type_pair(const DemSpec& dem, double grains, double floor) {
   return "2 " + n(grains) + " " + n(floor) + " " + n(floor) + " " + n(floor);
 }
 
-// "0 0 -1" on a level floor (every script's text before chutes), the
-// tilted direction on a chute (dem_section.h).
-std::string gravity_vector_text(const DemSpec& dem) {
-  if (dem.slope_deg == 0.0) return "0 0 -1";
+// "0 0 -1" on a level floor (every script's text before chutes) and while
+// a chute's block settles, the tilted direction in a chute's run (dem_section.h).
+std::string gravity_vector_text(const DemSpec& dem, bool settling) {
+  if (dem.slope_deg == 0.0 || settling) return "0 0 -1";
   const Eigen::Vector3d g = gravity_direction(dem);
   return liggghts_number(g.x()) + " 0 " + liggghts_number(g.z());
 }
@@ -96,7 +97,8 @@ void write_neighbor_settings(std::ostringstream& s, const DemSpec& dem, const Li
 
 // Everything both scripts set after the box exists: contact law, materials,
 // time step, gravity, the floor and side walls, integration.
-void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d, const LiggghtsOptions& neighbor) {
+void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d, const LiggghtsOptions& neighbor,
+                   bool settling) {
   const auto n = [](double v) { return liggghts_number(v); };
   write_neighbor_settings(s, dem, neighbor);
   s << "# materials (Young's modulus softened, as DEM practice does)"
@@ -119,7 +121,7 @@ void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d
     << (cohesive ? " cohesion sjkr" : "") << "\n"
     << "pair_coeff * *\n"
     << "timestep " << n(dem.time_step_s) << "\n"
-    << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector " << gravity_vector_text(dem) << "\n\n"
+    << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector " << gravity_vector_text(dem, settling) << "\n\n"
     << "# floor and side walls on the ground grid's edges\n";
   const std::string wall = "all wall/gran " + wall_model(dem) + " primitive type 1";
   const std::string floor = "all wall/gran " + wall_model(dem) + " primitive type " + std::to_string(atom_type_count(dem));
@@ -302,7 +304,7 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
     << box_header(dem)
     << "region domain block " << box_block(d) << " units box\n"
     << "create_box " << atom_type_count(dem) << " domain\n";
-  write_physics(s, dem, d, LiggghtsOptions{});
+  write_physics(s, dem, d, LiggghtsOptions{}, true);
   s << "# grains: " << radii.size() << " radii, equal in number\n";
   for (std::size_t k = 0; k < radii.size(); ++k) {
     s << "fix pts" << k << " all particletemplate/sphere " << seeds[k] << " atom_type 1 density constant "
@@ -324,15 +326,6 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
 }
 
 namespace {
-
-// On a chute, grains that hit the wall at its foot splash up it: with no
-// losses they rise at most as far (normal to the floor) as they fell, the
-// settled height plus the grid's length times tan(slope). Half as much
-// again, for grains thrown up by others.
-double chute_splash_top_m(const Scene& scene, const DemSpec& dem) {
-  const double a = dem.slope_deg * std::numbers::pi / 180.0;
-  return 1.5 * (settled_height_m(dem) + scene.ground.grid.extent_x_m() * std::tan(a));
-}
 
 // The run's box (the grid's extent, up to the highest point any object
 // reaches) and each object's STL mesh at its start pose.
@@ -364,7 +357,7 @@ void place_objects(const Scene& scene, const DemSpec& dem, const RunScriptOption
     start.position_m = position_at(o, 0.0);
     out->meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, start)});
   }
-  if (dem.slope_deg > 0.0) top = std::max(top, chute_splash_top_m(scene, dem));
+  if (dem.slope_deg > 0.0) top = std::max(top, chute_splash_top_m(dem, scene.ground.grid));
   d.z_max_m = top + (options.top_margin_m > 0 ? options.top_margin_m : 8.0 * dem.grain_radius_m);
 }
 
@@ -397,7 +390,7 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
   s << "# repose: run of scene '" << scene.name << "' on a settled bed (generated; do not edit)\n"
     << box_header(dem)
     << "read_restart " << kBedRestartFile << "\n";
-  write_physics(s, dem, d, liggghts_options_of(scene));
+  write_physics(s, dem, d, liggghts_options_of(scene), false);
   s << "# per-atom restart data must be consumed by a run before the box may grow;\n"
     << "# after a restart, reset_timestep must come right before a run\n"
     << "reset_timestep 0\n"

@@ -73,6 +73,9 @@ inline constexpr const char* kBedDumpFile = "bed.dump";
 inline constexpr const char* kDumpDirectory = "dumps";  // run dumps: dumps/dump.<step>.txt
 
 // Requires scene.dem (InputError otherwise) and checks it (check_dem_spec).
+// A chute's block (dem.slope_deg > 0) settles under gravity along -z, so
+// every slope of a sweep shares one cached bed; its run tilts gravity at
+// t = 0, when the gate goes.
 std::string bed_script(const Scene& scene, const BedScriptOptions& options = {});
 
 // One object as the run script sees it: its STL file name (relative to the

@@ -9,6 +9,7 @@
 
 #include "models/core/base/error.h"
 #include "models/core/geometry/triangle_mesh.h"
+#include "validation/particles/column_geometry.h"
 
 namespace repose {
 
@@ -86,6 +87,11 @@ ChuteGeometry chute_geometry(const DemSpec& dem_spec, const Scene& scene) {
                                  grid.origin_x_m));
   }
   return g;
+}
+
+double chute_splash_top_m(const DemSpec& dem, const Grid& grid) {
+  if (dem.slope_deg == 0.0) return 0.0;
+  return 1.5 * (settled_height_m(dem) + grid.extent_x_m() * std::tan(dem.slope_deg / kDeg));
 }
 
 ChuteFlow window_flow(const GrainSet& grains, const ChuteGeometry& geometry, const ChuteImpactOptions& options) {

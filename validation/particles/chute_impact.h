@@ -60,6 +60,12 @@ struct ChuteGeometry {
 ChuteGeometry chute_geometry(const Scene& scene);
 ChuteGeometry chute_geometry(const DemSpec& dem, const Scene& scene);
 
+// How high (normal to the floor) grains may splash up a wall at the foot of
+// the chute: with no losses they rise at most as far as they fell, the
+// settled height plus the grid's length times tan(slope); half as much again
+// for grains thrown up by others. 0 on a level floor.
+double chute_splash_top_m(const DemSpec& dem, const Grid& grid);
+
 struct ChuteImpactOptions {
   double depth_quantile = 0.95;          // of the grains' tops: the flow depth (0, 1]
   double force_smoothing_s = 0.01;       // the force is averaged over this window

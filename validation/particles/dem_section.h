@@ -88,7 +88,9 @@ struct DemSpec {
   // stays bed-aligned (z normal to the floor, x down the slope) and gravity
   // is tilted instead, to g (sin slope, 0, -cos slope): the standard trick
   // that keeps an inclined floor's mesh out. 0: gravity along -z (the text
-  // of every script is then the one before this field existed).
+  // of every script is then the one before this field existed). The grains
+  // settle under gravity along -z (one bed for every slope) and gravity
+  // tilts at t = 0, when a column's gate is removed.
   double slope_deg = 0.0;  // [0, 80)
   // > 0: the run measures the impact of the flow on the scene's first object
   // (the wall at the chute's foot): flow depth and speed over the grains

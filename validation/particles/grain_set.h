@@ -14,7 +14,7 @@ namespace repose {
 struct GrainSet {
   MatrixX3dR position_m;
   Eigen::VectorXd radius_m;
-  MatrixX3dR velocity_m_s;  // empty: not known (a dump without vx vy vz)
+  MatrixX3dR velocity_m_s = MatrixX3dR(0, 3);  // empty: not known (a dump without vx vy vz)
 
   Eigen::Index size() const { return position_m.rows(); }
 };
