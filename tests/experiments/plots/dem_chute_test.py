@@ -1,9 +1,9 @@
-"""Tests of dem_chute.py's helpers: the design form and its fit."""
+"""experiments/plots/dem_chute.py: the design form and its fit."""
 import os
 import sys
 import unittest
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "experiments", "plots"))
 import dem_chute  # noqa: E402
 
 
