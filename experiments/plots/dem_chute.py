@@ -11,9 +11,9 @@ design form
 
     p = 1/2 k rho g h cos(slope) + alpha rho v^2,  i.e.  p/(rho v^2) = alpha + k / (2 Fr^2),
 
-drawn for k = 1 and alpha = 1 and 2 (the range of alpha quoted for
-granular and debris flows in the review of Faug 2015 and the design
-literature it cites; k ~ 1). Also writes dem_chute_fits.csv: per solver,
+drawn for k = 1 and alpha = 1 and 2 (the range quoted for granular and
+debris flows in the design literature; sources in experiments/dem_chute.yaml,
+the numbers not checked against them). Also writes dem_chute_fits.csv: per solver,
 k and alpha fitted by least squares to the runs' means (C is linear in
 alpha and k/(2 Fr^2)), the number of runs and the RMS residual.
 """

@@ -19,8 +19,8 @@
 //   Froude number        Fr = v / sqrt(g h cos slope)
 //   pressure coefficient C  = p / (rho v^2) = F / (w m_A v^2)
 // The hydrostatic + dynamic design form p = 1/2 k rho g h cos(slope) +
-// alpha rho v^2 (e.g. the review of Faug 2015; k ~ 1, alpha ~ 1-2) reads
-// C = alpha + k / (2 Fr^2).
+// alpha rho v^2 (k ~ 1, alpha ~ 1-2 in the design literature; see
+// experiments/dem_chute.yaml for the sources) reads C = alpha + k / (2 Fr^2).
 //
 // The impact phase: the frames in which the window holds at least
 // min_grains grains moving at flowing_speed_fraction of the window's largest
