@@ -101,6 +101,47 @@ inline double rebound_height_m(const RigidEngine& engine, double r_m, double dro
 }
 
 
+// A grain resting on a kinematic plate (an object) pushes it down by its
+// weight: the object's force is (0, 0, -m g) once the grain is at rest; and
+// a grain falling freely under gravity tilted by 30 degrees (a chute) gains
+// g t along the tilted direction, its velocity read back by grains().
+inline void expect_object_force_and_tilted_gravity(const RigidEngine& engine) {
+  const double r = 0.005, g = 9.81, rho = 2500.0;
+  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
+  RigidWorldSpec spec = one_grain(r, {0.0, 0.0, 0.11 + r + 0.001}, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                  RigidContactLaw{0.5, 0.1, 0.1});
+  ObjectSpec plate;
+  plate.name = "plate";
+  plate.shape = ObjectSpec::Shape::kBox;
+  plate.half_extents_m = Eigen::Vector3d(0.05, 0.05, 0.01);
+  plate.body = make_box(plate.half_extents_m);
+  plate.keyframes = {{0.0, Pose{Eigen::Vector3d(0, 0, 0.1), Eigen::Quaterniond::Identity()}}};
+  spec.objects = {plate};
+  const auto world = engine.make_world(spec);
+  const long steps = std::lround(0.5 / world->time_step_s());
+  for (long k = 0; k < steps; ++k) {
+    world->set_object_poses({plate.keyframes.front().pose});
+    world->step();
+  }
+  const std::vector<Eigen::Vector3d> f = world->object_forces_n();
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_NEAR(f[0].z(), -m * g, 0.05 * m * g);
+  EXPECT_NEAR(f[0].x(), 0.0, 0.01 * m * g);
+  ASSERT_EQ(world->grains().velocity_m_s.rows(), 1);
+  EXPECT_LT(world->grains().velocity_m_s.row(0).norm(), 0.01);
+
+  RigidWorldSpec fall = one_grain(r, {0.0, 0.0, 0.5}, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                  RigidContactLaw{0.5, 0.1, 0.1});
+  const double a = M_PI / 6.0;
+  fall.gravity_direction = Eigen::Vector3d(std::sin(a), 0.0, -std::cos(a));
+  const auto falling = engine.make_world(fall);
+  const long n = std::lround(0.1 / falling->time_step_s());
+  for (long k = 0; k < n; ++k) falling->step();
+  const Eigen::Vector3d v = falling->grains().velocity_m_s.row(0).transpose();
+  const Eigen::Vector3d expected = g * static_cast<double>(n) * falling->time_step_s() * fall.gravity_direction;
+  EXPECT_NEAR((v - expected).norm(), 0.0, 1e-6 + 0.01 * expected.norm());
+}
+
 inline bool same_bits(const GrainSet& a, const GrainSet& b) {
   return a.size() == b.size() && a.position_m == b.position_m && a.radius_m == b.radius_m;
 }

@@ -59,6 +59,7 @@ class BulletWorld final : public RigidWorld {
   GrainSet grains() const override;
   double kinetic_energy_j() const override;
   std::vector<FreeBodyState> free_bodies() const override;
+  std::vector<Eigen::Vector3d> object_forces_n() const override;
 
  private:
   void add_free_body(const ObjectSpec& object, const RigidContactLaw& law);
@@ -87,6 +88,7 @@ class BulletWorld final : public RigidWorld {
   std::vector<std::unique_ptr<btRigidBody>> bodies_;  // grains first, in spec order
   std::vector<btRigidBody*> grains_;
   std::vector<btRigidBody*> objects_;
+  std::map<const btCollisionObject*, std::size_t> object_index_;
   std::vector<btRigidBody*> free_;
   std::vector<btVector3> free_torque_n_m_;  // per free body, applied before every step
 };
@@ -97,7 +99,7 @@ BulletWorld::BulletWorld(const RigidWorldSpec& spec, const BulletOptions& option
   REPOSE_DEMAND(spec.angular_velocity_rad_s.rows() == 0 || spec.angular_velocity_rad_s.rows() == spec.grains.size());
   set_globals();
   dispatcher_.setDispatcherFlags(0);  // the absolute breaking threshold, not one relative to each shape
-  world_.setGravity(btVector3(0, 0, -spec.gravity_m_s2));
+  world_.setGravity(bt(Eigen::Vector3d(spec.gravity_m_s2 * spec.gravity_direction)));
   btContactSolverInfo& info = world_.getSolverInfo();
   info.m_numIterations = options.rigid.solver_iterations;
   info.m_erp2 = options.erp;
@@ -139,6 +141,7 @@ BulletWorld::BulletWorld(const RigidWorldSpec& spec, const BulletOptions& option
     body->setRollingFriction(spec.law.rolling_friction);
     world_.addRigidBody(body);
     objects_.push_back(body);
+    object_index_[body] = objects_.size() - 1;
   }
   for (const ObjectSpec& object : spec.bodies) add_free_body(object, spec.law);
 }
@@ -243,7 +246,35 @@ GrainSet BulletWorld::grains() const {
     out.position_m.row(static_cast<Eigen::Index>(g)) << p.x(), p.y(), p.z();
     out.radius_m(static_cast<Eigen::Index>(g)) = grain_radius(grains_[g]);
   }
+  out.velocity_m_s.resize(out.size(), 3);
+  for (std::size_t g = 0; g < grains_.size(); ++g) {
+    const btVector3& v = grains_[g]->getLinearVelocity();
+    out.velocity_m_s.row(static_cast<Eigen::Index>(g)) << v.x(), v.y(), v.z();
+  }
   return out;
+}
+
+// The solver applies +impulse along the normal on B to body A and its
+// opposite to B, and the friction impulses along their directions to A.
+std::vector<Eigen::Vector3d> BulletWorld::object_forces_n() const {
+  std::vector<Eigen::Vector3d> force(objects_.size(), Eigen::Vector3d::Zero());
+  const double dt = options_.rigid.time_step_s;
+  btCollisionDispatcher& dispatcher = const_cast<btCollisionDispatcher&>(dispatcher_);
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    const auto a = object_index_.find(manifold->getBody0());
+    const auto b = object_index_.find(manifold->getBody1());
+    if (a == object_index_.end() && b == object_index_.end()) continue;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& pt = manifold->getContactPoint(p);
+      const btVector3 on_a = pt.m_normalWorldOnB * pt.m_appliedImpulse + pt.m_lateralFrictionDir1 * pt.m_appliedImpulseLateral1 +
+                             pt.m_lateralFrictionDir2 * pt.m_appliedImpulseLateral2;
+      const Eigen::Vector3d f(on_a.x() / dt, on_a.y() / dt, on_a.z() / dt);
+      if (a != object_index_.end()) force[a->second] += f;
+      if (b != object_index_.end()) force[b->second] -= f;
+    }
+  }
+  return force;
 }
 
 double BulletWorld::kinetic_energy_j() const {

@@ -131,12 +131,15 @@ DumpFrame read_frame(DumpReader& r, const std::string& timestep_line) {
   }
   const int ci = index["id"], cx = index["x"], cy = index["y"], cz = index["z"], cr = index["radius"];
   const int ct = index.contains("type") ? index["type"] : -1;
+  const bool velocity = index.contains("vx") && index.contains("vy") && index.contains("vz");
+  const int cvx = velocity ? index["vx"] : -1, cvy = velocity ? index["vy"] : -1, cvz = velocity ? index["vz"] : -1;
   check_atom_count(r, count, columns.size());
 
   f.id.resize(count);
   f.type.assign(count, 1);
   f.grains.position_m.resize(count, 3);
   f.grains.radius_m.resize(count);
+  if (velocity) f.grains.velocity_m_s.resize(count, 3);
   for (long k = 0; k < count; ++k) {
     const auto w = split(r.require(fmt::format("{} atom rows (got {})", count, k).c_str()));
     if (w.size() != columns.size()) {
@@ -148,6 +151,7 @@ DumpFrame read_frame(DumpReader& r, const std::string& timestep_line) {
     f.grains.position_m.row(k) << r.number(w[cx], "x"), r.number(w[cy], "y"), r.number(w[cz], "z");
     f.grains.radius_m[k] = r.number(w[cr], "radius");
     if (f.grains.radius_m[k] <= 0.0) r.fail(fmt::format("radius: expected a positive value, got {}", w[cr]));
+    if (velocity) f.grains.velocity_m_s.row(k) << r.number(w[cvx], "vx"), r.number(w[cvy], "vy"), r.number(w[cvz], "vz");
   }
   return f;
 }

@@ -3,7 +3,8 @@
 //   ITEM: TIMESTEP / N / ITEM: NUMBER OF ATOMS / N / ITEM: BOX BOUNDS ff ff ff /
 //   3 lines "lo hi" / ITEM: ATOMS id type x y z radius ... / N lines
 // one or more such frames per file. Columns may come in any order; id, x, y,
-// z and radius are required, type is optional (1 when absent), others are ignored.
+// z and radius are required, type is optional (1 when absent), vx vy vz are
+// read into the grains' velocities when all three are there, others are ignored.
 
 #include <string>
 #include <vector>

@@ -68,6 +68,29 @@ void measure_column(LiggghtsReferenceResult& r, const Scene& scene, const std::v
   }
 }
 
+// The impact on the wall (the first object, mesh 0) of a chute's flow, from
+// the dumps' grains and velocities and the thermo lines' force on it.
+void measure_chute(LiggghtsReferenceResult& r, const Scene& scene, const std::vector<std::string>& dumps,
+                   const ThermoTable& thermo, const RunScript& script, const fs::path& dir) {
+  const double step_s = dem_of(scene)->time_step_s;
+  std::vector<GrainSet> frames;
+  std::vector<double> times;
+  for (const std::string& path : dumps) {
+    DumpFrame f = read_last_dump_frame(path);
+    times.push_back(static_cast<double>(f.timestep) * step_s);
+    frames.push_back(std::move(f.grains));
+  }
+  const int column = thermo.column(fmt::format("{}[1]", script.meshes.front().fix_id));
+  REPOSE_DEMAND(column >= 0);
+  std::vector<double> force_time, force_x;
+  for (const auto& row : thermo.rows) {
+    force_time.push_back(row[0] * step_s);
+    force_x.push_back(row[static_cast<std::size_t>(column)]);
+  }
+  r.chute = measure_chute_impact(chute_geometry(scene), frames, times, force_time, force_x);
+  write_chute_impact_csv((dir / "chute_impact.csv").string(), *r.chute);
+}
+
 // The free spheres' tracks (printed by LIGGGHTS), their rest, their CSV files.
 void measure_free_bodies(LiggghtsReferenceResult& r, const Scene& scene, const fs::path& dir) {
   const DemSpec& dem = *dem_of(scene);
@@ -124,6 +147,7 @@ nlohmann::json liggghts_results_json(const LiggghtsReferenceResult& r) {
   json["particle_steps_per_cpu_s"] =
       r.run.cpu_time_s > 0 ? static_cast<double>(r.grain_count) * static_cast<double>(r.steps) / r.run.cpu_time_s : 0.0;
   json.update(column_results_json(r.column, r.pile));
+  json.update(chute_results_json(r.chute));
   for (const auto& [name, kg] : r.mass_held_kg) json["mass_held_kg"][name] = kg;
   if (!r.free_bodies.empty()) json["free_bodies"] = free_bodies_json(r.free_bodies, r.free_body_rests);
   return json;
@@ -179,9 +203,10 @@ LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::st
   r.material_per_area_final = material_per_area(last.grains, grid);
   write_npy_2d((dir / "material_per_area_final.npy").string(), r.material_per_area_final.heights());
   write_field_csv((dir / "material_per_area_final.csv").string(), r.material_per_area_final, "grain_volume_per_area_m");
-  write_forces_csv(dir / "forces.csv", read_thermo_table((dir / "log.liggghts").string()), script,
-                   dem_of(scene)->time_step_s);
+  const ThermoTable thermo = read_thermo_table((dir / "log.liggghts").string());
+  write_forces_csv(dir / "forces.csv", thermo, script, dem_of(scene)->time_step_s);
   if (dem_of(scene)->initial == DemSpec::Initial::kColumn) measure_column(r, scene, dumps, options, dir);
+  if (measures_impact(*dem_of(scene))) measure_chute(r, scene, dumps, thermo, script, dir);
   measure_free_bodies(r, scene, dir);
   for (std::size_t k = 0, b = 0; k < scene.objects.size(); ++k) {
     const ObjectSpec& o = scene.objects[k];

@@ -17,6 +17,8 @@
 //   and for a scene that starts from a column (dem.initial: column):
 //        runout.csv                  time_s, front_m: the deposit front over the dumps
 //        pile_flank_angles.csv       cylinder and quarter columns: the final pile's flank angle per azimuth (degrees)
+//   and for a chute (dem.impact_window_m > 0; chute_impact.h):
+//        chute_impact.csv            per dump: the flow upstream of the wall, the force on it, p, Fr, p/(rho v^2)
 // run_dir must exist and should be empty (the caller makes it atomic, e.g.
 // with OutputDirectory); the run's own files (run.in, log.liggghts, dumps/) stay there.
 
@@ -29,6 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/core/config/scene.h"
+#include "validation/particles/chute_impact.h"
 #include "validation/particles/column_collapse.h"
 #include "validation/particles/free_body_track.h"
 #include "validation/liggghts/liggghts_bed.h"
@@ -62,6 +65,7 @@ struct LiggghtsReferenceResult {
   HeightField material_per_area_final;  // grain volume per unit area (m), particle_observables.h
   std::optional<ColumnCollapse> column;  // a column scene: its runout
   std::optional<FlankAngles> pile;       // a cylinder column: the final pile's flank angles
+  std::optional<ChuteImpact> chute;      // a chute: the flow's impact on the wall (chute_impact.h)
   // Per object (scene order): its name and the mass (kg) of the grains it
   // holds at the end of the run (mass_held_by_object_kg, observables.h), the
   // object at ObjectSpec::pose_at(scene duration), grains of the scene's density.
@@ -77,7 +81,7 @@ LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::st
 
 // The run's results as one JSON object: LIGGGHTS version, script hash, bed
 // cache key, grain count, steps, costs, and when present "column" and "pile"
-// (angles in degrees, as in files) and "mass_held_kg": {"<object>": kg}.
+// (angles in degrees, as in files), "chute" and "mass_held_kg": {"<object>": kg}.
 // Written into liggghts_manifest.json; the solver turns its numbers into measures.
 nlohmann::json liggghts_results_json(const LiggghtsReferenceResult& r);
 

@@ -11,6 +11,7 @@
 
 #include "models/core/base/error.h"
 #include "validation/liggghts/liggghts_free_body.h"
+#include "validation/particles/chute_impact.h"
 #include "validation/liggghts/liggghts_motion.h"
 #include "validation/liggghts/liggghts_section.h"
 
@@ -83,6 +84,14 @@ std::string per_type_pair(const DemSpec& dem, double grains, double floor, doubl
   return out;
 }
 
+// "0 0 -1" on a level floor (every script's text before chutes) and while
+// a chute's block settles, the tilted direction in a chute's run (dem_section.h).
+std::string gravity_vector_text(const DemSpec& dem, bool settling) {
+  if (dem.slope_deg == 0.0 || settling) return "0 0 -1";
+  const Eigen::Vector3d g = gravity_direction(dem);
+  return liggghts_number(g.x()) + " 0 " + liggghts_number(g.z());
+}
+
 bool periodic_sides(const DemSpec& dem) { return dem.sides == DemSpec::Sides::kPeriodic; }
 
 // The box's boundaries: fixed, or periodic in y for a periodic strip.
@@ -106,7 +115,8 @@ void write_neighbor_settings(std::ostringstream& s, const DemSpec& dem, const Li
 
 // Everything both scripts set after the box exists: contact law, materials,
 // time step, gravity, the floor and side walls, integration.
-void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d, const LiggghtsOptions& neighbor) {
+void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d, const LiggghtsOptions& neighbor,
+                   bool settling) {
   const auto n = [](double v) { return liggghts_number(v); };
   write_neighbor_settings(s, dem, neighbor);
   s << "# materials (Young's modulus softened, as DEM practice does)"
@@ -131,7 +141,7 @@ void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d
     << (cohesive ? " cohesion sjkr" : "") << "\n"
     << "pair_coeff * *\n"
     << "timestep " << n(dem.time_step_s) << "\n"
-    << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector 0 0 -1\n\n"
+    << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector " << gravity_vector_text(dem, settling) << "\n\n"
     << "# floor and side walls on the ground grid's edges\n";
   const std::string wall = "all wall/gran " + wall_model(dem) + " primitive type 1";
   const std::string floor = "all wall/gran " + wall_model(dem) + " primitive type " + std::to_string(floor_type(dem));
@@ -328,7 +338,7 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
     << box_header(dem)
     << "region domain block " << box_block(d) << " units box\n"
     << "create_box " << atom_type_count(dem) << " domain\n";
-  write_physics(s, dem, d, LiggghtsOptions{});
+  write_physics(s, dem, d, LiggghtsOptions{}, true);
   s << "# grains: " << radii.size() << " radii, equal in number\n";
   for (std::size_t k = 0; k < radii.size(); ++k) {
     s << "fix pts" << k << " all particletemplate/sphere " << seeds[k] << " atom_type 1 density constant "
@@ -381,6 +391,7 @@ void place_objects(const Scene& scene, const DemSpec& dem, const RunScriptOption
     start.position_m = position_at(o, 0.0);
     out->meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, start)});
   }
+  if (dem.slope_deg > 0.0) top = std::max(top, chute_splash_top_m(dem, scene.ground.grid));
   d.z_max_m = top + (options.top_margin_m > 0 ? options.top_margin_m : 8.0 * dem.grain_radius_m);
 }
 
@@ -413,7 +424,7 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
   s << "# repose: run of scene '" << scene.name << "' on a settled bed (generated; do not edit)\n"
     << box_header(dem)
     << "read_restart " << kBedRestartFile << "\n";
-  write_physics(s, dem, d, liggghts_options_of(scene));
+  write_physics(s, dem, d, liggghts_options_of(scene), false);
   s << "# per-atom restart data must be consumed by a run before the box may grow;\n"
     << "# after a restart, reset_timestep must come right before a run\n"
     << "reset_timestep 0\n"
@@ -426,7 +437,7 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
     << "thermo " << thermo_every << "\n"
     << "thermo_modify lost error norm no\n"
     << "dump grains " << liggghts_dump_group(scene) << " custom " << out.dump_interval_steps << " " << kDumpDirectory
-    << "/dump.*.txt id type x y z radius\n"
+    << "/dump.*.txt id type x y z radius" << (measures_impact(dem) ? " vx vy vz" : "") << "\n"
     << "dump_modify grains sort id\n\n";
   std::vector<std::string> mesh_fix_ids;
   for (std::size_t k = 0, mesh = 0; k < scene.objects.size(); ++k) {  // a free sphere has no mesh: ""

@@ -73,6 +73,9 @@ inline constexpr const char* kBedDumpFile = "bed.dump";
 inline constexpr const char* kDumpDirectory = "dumps";  // run dumps: dumps/dump.<step>.txt
 
 // Requires scene.dem (InputError otherwise) and checks it (check_dem_spec).
+// A chute's block (dem.slope_deg > 0) settles under gravity along -z, so
+// every slope of a sweep shares one cached bed; its run tilts gravity at
+// t = 0, when the gate goes.
 std::string bed_script(const Scene& scene, const BedScriptOptions& options = {});
 
 // One object as the run script sees it: its STL file name (relative to the
@@ -96,7 +99,9 @@ struct RunScript {
   long dump_interval_steps = 0;
 };
 
-// Requires scene.dem. Objects move as ObjectSpec::pose_at says, per segment
+// Requires scene.dem. The box reaches above the highest object (and on a
+// chute, dem.slope_deg > 0, above the highest splash up the wall at its foot:
+// 1.5 (settled height + grid length * tan slope)). Objects move as ObjectSpec::pose_at says, per segment
 // between consecutive keyframe times of any object: a `fix move/mesh linear`
 // (the body origin's velocity) and, where the orientation changes, a
 // `fix move/mesh rotate` superposed on it (constant rate about the slerp's

@@ -63,6 +63,7 @@ class CompiledLiggghts final : public CompiledSolver {
       for (const FreeBodyTrack& t : r.free_bodies) run.files.push_back("free_body_" + t.name + ".csv");
       if (r.column) run.files.push_back("runout.csv");
       if (r.pile) run.files.push_back("pile_flank_angles.csv");
+      if (r.chute) run.files.push_back("chute_impact.csv");
     }
     return run;
   }

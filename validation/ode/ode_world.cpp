@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <mutex>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct GeomInfo {
   double rolling_mu = 0.0;    // mu_r against grains
   bool free = false;          // a free body: meets walls, objects and other free bodies too
   double cfm_scale = 1.0;     // its contacts' CFM relative to the grains' (free bodies: grain mass / its mass)
+  int object = -1;            // a kinematic object: its index (its contacts' forces are recorded)
 };
 
 void init_ode_once() {
@@ -43,6 +45,7 @@ class OdeWorld final : public RigidWorld {
   GrainSet grains() const override;
   double kinetic_energy_j() const override;
   std::vector<FreeBodyState> free_bodies() const override;
+  std::vector<Eigen::Vector3d> object_forces_n() const override;
 
  private:
   void add_free_body(const ObjectSpec& object, const RigidContactLaw& law);
@@ -74,6 +77,10 @@ class OdeWorld final : public RigidWorld {
   std::vector<std::vector<double>> mesh_vertices_;
   std::vector<std::vector<dTriIndex>> mesh_indices_;
   std::vector<dContactGeom> scratch_;
+  // The feedback of this step's grain-object contacts (stable addresses) and
+  // each one's object and the grain's side (1 or 2).
+  std::deque<dJointFeedback> feedback_;
+  std::vector<std::pair<int, int>> feedback_object_side_;
 };
 
 OdeWorld::OdeWorld(const RigidWorldSpec& spec, const OdeOptions& options) : options_(options), law_(spec.law) {
@@ -81,7 +88,8 @@ OdeWorld::OdeWorld(const RigidWorldSpec& spec, const OdeOptions& options) : opti
   REPOSE_DEMAND(spec.angular_velocity_rad_s.rows() == 0 || spec.angular_velocity_rad_s.rows() == spec.grains.size());
   init_ode_once();
   world_ = dWorldCreate();
-  dWorldSetGravity(world_, 0, 0, -spec.gravity_m_s2);
+  const Eigen::Vector3d gravity = spec.gravity_m_s2 * spec.gravity_direction;
+  dWorldSetGravity(world_, gravity.x(), gravity.y(), gravity.z());
   dWorldSetERP(world_, options.erp);
   dWorldSetCFM(world_, options.cfm);
   dWorldSetQuickStepNumIterations(world_, options.rigid.solver_iterations);
@@ -112,7 +120,9 @@ OdeWorld::OdeWorld(const RigidWorldSpec& spec, const OdeOptions& options) : opti
     dBodySetKinematic(body);
     dGeomID geom = object_geom(object);
     dGeomSetBody(geom, body);
-    attach(geom, {false, 0.0, spec.law.rolling_friction});
+    GeomInfo info{false, 0.0, spec.law.rolling_friction};
+    info.object = static_cast<int>(objects_.size());
+    attach(geom, info);
     const Pose p = object.pose_at(0.0);
     dBodySetPosition(body, p.position_m.x(), p.position_m.y(), p.position_m.z());
     const dQuaternion q = {p.orientation.w(), p.orientation.x(), p.orientation.y(), p.orientation.z()};
@@ -243,6 +253,11 @@ void OdeWorld::collide_pair(dGeomID a, dGeomID b) {
     c.surface.rhoN = 0.0;
     dJointID joint = dJointCreateContact(world_, contacts_, &c);
     dJointAttach(joint, dGeomGetBody(a), dGeomGetBody(b));
+    // the force on an object is the opposite of the grain's (a kinematic body's own is not reliable)
+    if ((ia->object >= 0 && ib->grain) || (ib->object >= 0 && ia->grain)) {
+      dJointSetFeedback(joint, &feedback_.emplace_back());
+      feedback_object_side_.emplace_back(ia->object >= 0 ? ia->object : ib->object, ia->grain ? 1 : 2);
+    }
   }
 }
 
@@ -268,6 +283,8 @@ void OdeWorld::step() {
     const Eigen::Vector3d& t = free_torque_n_m_[k];
     dBodyAddTorque(free_[k], t.x(), t.y(), t.z());
   }
+  feedback_.clear();
+  feedback_object_side_.clear();
   dSpaceCollide(space_, this, &OdeWorld::near_callback);
   dWorldQuickStep(world_, options_.rigid.time_step_s);
   dJointGroupEmpty(contacts_);
@@ -285,12 +302,26 @@ GrainSet OdeWorld::grains() const {
   GrainSet out;
   out.position_m.resize(static_cast<Eigen::Index>(grains_.size()), 3);
   out.radius_m.resize(static_cast<Eigen::Index>(grains_.size()));
+  out.velocity_m_s.resize(out.size(), 3);
   for (std::size_t g = 0; g < grains_.size(); ++g) {
     const dReal* p = dBodyGetPosition(grains_[g]);
+    const dReal* v = dBodyGetLinearVel(grains_[g]);
     out.position_m.row(static_cast<Eigen::Index>(g)) << p[0], p[1], p[2];
+    out.velocity_m_s.row(static_cast<Eigen::Index>(g)) << v[0], v[1], v[2];
     out.radius_m(static_cast<Eigen::Index>(g)) = grain_radius_m_[g];
   }
   return out;
+}
+
+std::vector<Eigen::Vector3d> OdeWorld::object_forces_n() const {
+  std::vector<Eigen::Vector3d> force(objects_.size(), Eigen::Vector3d::Zero());
+  std::size_t k = 0;
+  for (const dJointFeedback& fb : feedback_) {
+    const auto [object, side] = feedback_object_side_[k++];
+    const dReal* on_grain = side == 1 ? fb.f1 : fb.f2;
+    force[static_cast<std::size_t>(object)] -= Eigen::Vector3d(on_grain[0], on_grain[1], on_grain[2]);
+  }
+  return force;
 }
 
 double OdeWorld::kinetic_energy_j() const {

@@ -7,6 +7,7 @@
 
 #include "models/core/base/error.h"
 #include "models/core/config/fields.h"
+#include "validation/particles/chute_impact.h"
 #include "validation/particles/column_geometry.h"
 
 namespace repose {
@@ -59,6 +60,9 @@ void validate(const DemSpec& d) {
   require_positive(d.column_height_m, "column_height_m");
   require_non_negative(d.floor_rolling_friction, "floor_rolling_friction");
   require_non_negative(d.surface_probe_radius_m, "surface_probe_radius_m");
+  require_in(d.slope_deg, 0.0, false, 80.0, true, "slope_deg");
+  require_non_negative(d.impact_window_m, "impact_window_m");
+  require_non_negative(d.impact_window_gap_m, "impact_window_gap_m");
   const double max_step = kMaxRayleighFraction * rayleigh_time_s(d);
   if (d.time_step_s > max_step) {
     throw FieldError("time_step_s",
@@ -72,6 +76,16 @@ void validate(const DemSpec& d) {
 void validate(const DemSpec& dem, const Scene& scene) {
   validate(dem);
   if (dem.initial == DemSpec::Initial::kColumn) column_geometry(dem, scene);
+  if (measures_impact(dem) && (scene.objects.empty() || scene.objects.front().dynamic)) {
+    throw InputError("dem: impact_window_m > 0 measures the impact on the scene's first object (the wall at the "
+                     "chute's foot); add it as the first object, not a free body");
+  }
+  if (measures_impact(dem)) chute_geometry(dem, scene);  // the window must lie on the grid
+}
+
+Eigen::Vector3d gravity_direction(const DemSpec& dem) {
+  const double a = dem.slope_deg * std::numbers::pi / 180.0;
+  return dem.slope_deg == 0.0 ? Eigen::Vector3d(0, 0, -1) : Eigen::Vector3d(std::sin(a), 0.0, -std::cos(a));
 }
 
 void DemSection::write_yaml(YAML::Emitter& out) const { write_fields_map(out, spec, kDemFields); }
@@ -115,7 +129,7 @@ SectionType dem_section_type() {
     try {
       validate(section->spec, common);
     } catch (const InputError& e) {
-      value.fail("a column that fits the ground grid", e.what());
+      value.fail("a column that fits the ground grid and a wall for an impact window", e.what());
     }
     return section;
   };

@@ -15,6 +15,8 @@
 #include <memory>
 #include <string>
 
+#include <Eigen/Core>
+
 #include "models/core/base/error.h"
 #include "models/core/config/scene.h"
 #include "models/core/config/scene_section.h"
@@ -87,6 +89,22 @@ struct DemSpec {
   // surface whose cells are not each one grain's top. Scale-separated
   // references use about a grain diameter.
   double surface_probe_radius_m = 0.0;
+
+  // A chute (chute_impact.h): the floor is inclined by slope_deg. The scene
+  // stays bed-aligned (z normal to the floor, x down the slope) and gravity
+  // is tilted instead, to g (sin slope, 0, -cos slope): the standard trick
+  // that keeps an inclined floor's mesh out. 0: gravity along -z (the text
+  // of every script is then the one before this field existed). The grains
+  // settle under gravity along -z (one bed for every slope) and gravity
+  // tilts at t = 0, when a column's gate is removed.
+  double slope_deg = 0.0;  // [0, 80)
+  // > 0: the run measures the impact of the flow on the scene's first object
+  // (the wall at the chute's foot): flow depth and speed over the grains
+  // whose centres lie in the window [face - gap - window, face - gap] along
+  // x upstream of the object's upstream face, the force on the object over
+  // time, the pressure and its coefficient against the Froude number.
+  double impact_window_m = 0.0;
+  double impact_window_gap_m = 0.0;  // from the object's upstream face to the window's downstream end
 };
 
 
@@ -101,7 +119,8 @@ inline constexpr double kMaxRayleighFraction = 0.2;
 // the Rayleigh time (naming the largest allowed step).
 void validate(const DemSpec& dem);
 // The rules that involve the common scene too: a column must fit the grid
-// and be at least two grains across (column_geometry.h). InputError.
+// and be at least two grains across (column_geometry.h); an impact window
+// needs a first object that is not a free body. InputError.
 void validate(const DemSpec& dem, const Scene& scene);
 
 template <class Visitor>
@@ -136,7 +155,15 @@ void dem_fields(Visitor& v, DemSpec& d) {
   using S = DemSpec::Sides;
   v.choice("sides", d.sides, std::vector<std::pair<std::string, S>>{{"walls", S::kWalls}, {"periodic", S::kPeriodic}});
   v.number("surface_probe_radius_m", d.surface_probe_radius_m, Range::any());
+  v.number("slope_deg", d.slope_deg, Range::any());
+  v.number("impact_window_m", d.impact_window_m, Range::any());
+  v.number("impact_window_gap_m", d.impact_window_gap_m, Range::any());
 }
+
+// Gravity's direction (unit): (sin slope, 0, -cos slope); (0, 0, -1) on a level floor.
+Eigen::Vector3d gravity_direction(const DemSpec& dem);
+// Does the run measure a chute impact (impact_window_m > 0)?
+inline bool measures_impact(const DemSpec& dem) { return dem.impact_window_m > 0.0; }
 
 class DemSection final : public SceneSection {
  public:

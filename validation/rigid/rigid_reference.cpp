@@ -59,6 +59,7 @@ void write_manifest(const std::string& path, const RigidReferenceResult& r) {
   for (const auto& [name, kg] : r.mass_held_kg) json["mass_held_kg"][name] = kg;
   if (!r.free_bodies.empty()) json["free_bodies"] = free_bodies_json(r.free_bodies, r.free_body_rests);
   json.update(column_results_json(r.column, r.pile));
+  json.update(chute_results_json(r.chute));
   std::ofstream out(path);
   out << json.dump(2) << "\n";
   if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
@@ -80,6 +81,32 @@ void measure_column(RigidReferenceResult& r, const RigidInputs& in, const std::v
   }
 }
 
+// The impact on the wall (the first object) from the frames and its force every step.
+void measure_chute(RigidReferenceResult& r, const ChuteGeometry& geometry, const std::vector<RigidFrame>& frames) {
+  std::vector<GrainSet> grains;
+  std::vector<double> times;
+  for (const RigidFrame& f : frames) {
+    times.push_back(f.time_s);
+    grains.push_back(f.grains);
+  }
+  std::vector<double> force_x;
+  for (const auto& sample : r.object_forces.force_n) force_x.push_back(sample.front().x());
+  r.chute = measure_chute_impact(geometry, grains, times, r.object_forces.time_s, force_x);
+}
+
+void write_forces_csv(const std::string& path, const RigidForceTrack& track, const std::vector<std::string>& names) {
+  std::ofstream out(path);
+  out << "time_s";
+  for (const std::string& name : names) out << fmt::format(",{0}_fx_n,{0}_fy_n,{0}_fz_n", name);
+  out << "\n";
+  for (std::size_t k = 0; k < track.time_s.size(); ++k) {
+    out << fmt::format("{}", track.time_s[k]);
+    for (const Eigen::Vector3d& f : track.force_n[k]) out << fmt::format(",{},{},{}", f.x(), f.y(), f.z());
+    out << "\n";
+  }
+  if (!out) throw std::runtime_error(fmt::format("{}: write failed", path));
+}
+
 }  // namespace
 
 RigidReferenceResult run_rigid_reference(const RigidEngine& engine, const RigidInputs& in,
@@ -96,8 +123,10 @@ RigidReferenceResult run_rigid_reference(const RigidEngine& engine, const RigidI
   const auto world = engine.make_world(spec);
   std::vector<RigidFrame> frames;
   r.free_bodies = start_free_body_tracks(spec.bodies);
-  const RigidRecording recording{in.dem.dump_interval_s, &frames, &r.free_bodies, in.dem.gravity_m_s2};
+  const RigidRecording recording{in.dem.dump_interval_s, &frames, &r.free_bodies, &r.object_forces,
+                                 in.dem.gravity_m_s2};
   r.run = run_motion(*world, spec.objects, in.time.duration_s, recording);
+  for (const ObjectSpec& o : spec.objects) r.object_forces.names.push_back(o.name);
   r.grains_final = world->grains();
   demand_no_grain_lost(r.grains_final, spec.bounds, engine.name, "the run");
 
@@ -122,6 +151,7 @@ RigidReferenceResult run_rigid_reference(const RigidEngine& engine, const RigidI
     r.mass_held_kg.emplace_back(o.name, mass_held_by_object_kg(r.grains_final, world_mesh, in.dem.density_kg_m3));
   }
   if (in.column) measure_column(r, in, frames, options);
+  if (in.chute) measure_chute(r, *in.chute, frames);
   return r;
 }
 
@@ -135,6 +165,10 @@ void write_rigid_reference(const RigidReferenceResult& r, const std::string& run
   for (const FreeBodyTrack& t : r.free_bodies) write_free_body_csv((dir / ("free_body_" + t.name + ".csv")).string(), t);
   if (r.column) write_runout_csv((dir / "runout.csv").string(), *r.column);
   if (r.pile) write_flank_angles_csv((dir / "pile_flank_angles.csv").string(), *r.pile);
+  if (!r.object_forces.force_n.empty() && !r.object_forces.force_n.front().empty()) {
+    write_forces_csv((dir / "forces.csv").string(), r.object_forces, r.object_forces.names);
+  }
+  if (r.chute) write_chute_impact_csv((dir / "chute_impact.csv").string(), *r.chute);
   write_manifest((dir / fmt::format("{}_manifest.json", r.engine)).string(), r);
 }
 

@@ -17,7 +17,10 @@
 //   and contact force every step, free_body_track.h) and their rest in the
 //   manifest's free_bodies;
 //   a column scene also writes runout.csv (the front every dem.dump_interval_s)
-//   and, for a cylinder, pile_flank_angles.csv.
+//   and, for a cylinder, pile_flank_angles.csv;
+//   a scene with kinematic objects writes forces.csv (time_s and the force
+//   on each, N, every step, as LIGGGHTS's), and a chute (dem.impact_window_m
+//   > 0) chute_impact.csv and the manifest's chute (chute_impact.h).
 
 #include <optional>
 #include <string>
@@ -33,6 +36,7 @@
 #include "validation/rigid/rigid_bed_cache.h"
 #include "validation/rigid/rigid_engine.h"
 #include "validation/rigid/rigid_setup.h"
+#include "validation/rigid/rigid_simulation.h"
 
 namespace repose {
 
@@ -63,6 +67,8 @@ struct RigidReferenceResult {
   std::vector<FreeBodyRest> free_body_rests;
   std::optional<ColumnCollapse> column;  // a column scene: its runout
   std::optional<FlankAngles> pile;       // a cylinder column: the final pile's flank angles
+  RigidForceTrack object_forces;         // the force on each kinematic object after every step
+  std::optional<ChuteImpact> chute;      // a chute: the flow's impact on the wall (chute_impact.h)
 };
 
 // Throws InputError for options that break their rules and

@@ -127,8 +127,9 @@ RigidInputs rigid_inputs(const Scene& scene, const std::string& solver) {
                                  "only LIGGGHTS has here; {} needs column_shape: cylinder or slot",
                                  scene.source_path, solver));
   }
-  RigidInputs in{dem, scene.ground.grid, scene.objects, scene.time, scene.seed, std::nullopt};
+  RigidInputs in{dem, scene.ground.grid, scene.objects, scene.time, scene.seed, std::nullopt, std::nullopt};
   if (dem.initial == DemSpec::Initial::kColumn) in.column = column_geometry(dem, scene);
+  if (measures_impact(dem)) in.chute = chute_geometry(dem, scene);
   return in;
 }
 
@@ -177,9 +178,11 @@ RigidWorldSpec settling_world(const RigidInputs& in, const RigidOptions& options
 RigidWorldSpec run_world(const RigidInputs& in, const GrainSet& settled) {
   double top = grains_top_m(settled);
   for (const ObjectSpec& o : in.objects) top = std::max(top, object_top_m(o));
+  top = std::max(top, chute_splash_top_m(in.dem, in.grid));  // side walls high enough that no splash leaves the chute
   RigidWorldSpec w = world_of(in, settled, top + 4.0 * largest_radius_m(in.dem));
   w.objects = kinematic_objects(in.objects);
   w.bodies = free_body_objects(in.objects);
+  w.gravity_direction = gravity_direction(in.dem);
   return w;
 }
 

@@ -17,6 +17,7 @@
 
 #include "models/core/config/scene.h"
 #include "models/core/geometry/grid.h"
+#include "validation/particles/chute_impact.h"
 #include "validation/particles/column_geometry.h"
 #include "validation/particles/dem_section.h"
 #include "validation/particles/grain_set.h"
@@ -34,6 +35,7 @@ struct RigidInputs {
   TimeSpec time;
   std::uint64_t seed = 0;
   std::optional<ColumnGeometry> column;  // dem.initial: column
+  std::optional<ChuteGeometry> chute;    // dem.impact_window_m > 0: the wall and window (chute_impact.h)
 };
 
 // Throws InputError naming `solver` for a scene without a dem section, or a
@@ -55,7 +57,8 @@ GrainSet grain_lattice(const RigidInputs& in, const RigidOptions& options);
 // cylinder, removed at t = 0 as in LIGGGHTS), no objects.
 RigidWorldSpec settling_world(const RigidInputs& in, const RigidOptions& options);
 // The world of the run: settled grains, the ground box (high enough for
-// the objects), the objects kinematic.
+// the objects), the objects kinematic, gravity tilted on a chute (the bed
+// settles under gravity along -z, as LIGGGHTS's does).
 RigidWorldSpec run_world(const RigidInputs& in, const GrainSet& settled);
 
 }  // namespace repose

@@ -73,6 +73,10 @@ RigidPhaseSummary run_motion(RigidWorld& world, const std::vector<ObjectSpec>& o
       rec.frames->push_back({t_end, world.grains()});
     }
     if (rec.free_bodies) record_free_bodies(*rec.free_bodies, t_end, world.free_bodies(), rec.gravity_m_s2);
+    if (rec.object_forces) {
+      rec.object_forces->time_s.push_back(t_end);
+      rec.object_forces->force_n.push_back(world.object_forces_n());
+    }
   }
   s.simulated_s = static_cast<double>(s.steps) * dt;
   s.kinetic_energy_j = world.kinetic_energy_j();

@@ -35,11 +35,19 @@ struct RigidFrame {
 std::vector<ObjectSpec> kinematic_objects(const std::vector<ObjectSpec>& objects);
 std::vector<ObjectSpec> free_body_objects(const std::vector<ObjectSpec>& objects);
 
+// The force on each kinematic object (scene order) after every step.
+struct RigidForceTrack {
+  std::vector<std::string> names;  // the objects' (set by the caller, for files)
+  std::vector<double> time_s;
+  std::vector<std::vector<Eigen::Vector3d>> force_n;  // per sample, per object
+};
+
 // What a run records besides its summary (each optional).
 struct RigidRecording {
   double frame_interval_s = 0.0;          // grains every this (to the nearest step) and at the end
   std::vector<RigidFrame>* frames = nullptr;
   std::vector<FreeBodyTrack>* free_bodies = nullptr;  // started tracks (free_body_track.h): a sample every step
+  RigidForceTrack* object_forces = nullptr;           // a sample every step
   double gravity_m_s2 = 9.81;             // for the free bodies' contact force
 };
 

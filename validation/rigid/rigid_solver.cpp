@@ -22,6 +22,15 @@ std::vector<ParameterInfo> contact_parameters(const DemSpec& dem) {
   };
 }
 
+// Every number of a JSON object as a measure (dotted names).
+void set_json_measures(const nlohmann::json& json, const std::string& prefix, Run& run) {
+  for (const auto& [key, value] : json.items()) {
+    const std::string name = prefix.empty() ? key : prefix + "." + key;
+    if (value.is_object()) set_json_measures(value, name, run);
+    if (value.is_number()) run.set(name, value.get<double>(), "");
+  }
+}
+
 void set_measures(const RigidReferenceResult& r, const RigidEngine& engine, Run& run) {
   run.set("grain_count", static_cast<double>(r.grain_count), "count");
   run.set("steps", static_cast<double>(r.run.steps), "count");
@@ -57,6 +66,7 @@ void set_measures(const RigidReferenceResult& r, const RigidEngine& engine, Run&
     run.set("pile.flank_angle_mean_deg", r.pile->mean_rad * 180.0 / std::numbers::pi, "deg");
     run.set("pile.flank_angle_std_deg", r.pile->std_rad * 180.0 / std::numbers::pi, "deg");
   }
+  set_json_measures(chute_results_json(r.chute), "", run);
   run.details["engine_version"] = r.engine_version;
   run.details["bed_cache_key"] = r.bed.key;
 }
@@ -90,6 +100,8 @@ class CompiledRigid final : public CompiledSolver {
       for (const FreeBodyTrack& t : r.free_bodies) run.files.push_back("free_body_" + t.name + ".csv");
       if (r.column) run.files.push_back("runout.csv");
       if (r.pile) run.files.push_back("pile_flank_angles.csv");
+      if (!r.object_forces.time_s.empty()) run.files.push_back("forces.csv");
+      if (r.chute) run.files.push_back("chute_impact.csv");
     }
     return run;
   }

@@ -57,7 +57,8 @@ struct RigidWorldSpec {
   MatrixX3dR velocity_m_s;
   MatrixX3dR angular_velocity_rad_s;
   double density_kg_m3 = 2500.0;
-  double gravity_m_s2 = 9.81;       // along -z
+  double gravity_m_s2 = 9.81;
+  Eigen::Vector3d gravity_direction = Eigen::Vector3d(0, 0, -1);  // unit; tilted on a chute (dem_section.h)
   RigidContactLaw law;
   std::vector<StaticBox> walls;     // floor first, then the side walls
   RigidBounds bounds;
@@ -77,11 +78,15 @@ class RigidWorld {
   // One fixed internal step.
   virtual void step() = 0;
   virtual double time_step_s() const = 0;
+  // Centres, radii and velocities.
   virtual GrainSet grains() const = 0;
   // Translational plus rotational kinetic energy of the grains (J).
   virtual double kinetic_energy_j() const = 0;
   // The free bodies' states (spec.bodies order); empty without free bodies.
   virtual std::vector<FreeBodyState> free_bodies() const { return {}; }
+  // The force (N) the grains exerted on each kinematic object (spec.objects
+  // order) during the last step: the contact impulses on it over the step.
+  virtual std::vector<Eigen::Vector3d> object_forces_n() const = 0;
 };
 
 using RigidWorldFactory = std::function<std::unique_ptr<RigidWorld>(const RigidWorldSpec&)>;

@@ -42,6 +42,10 @@ TEST(BulletWorld, ABedSettlesWithNoGrainLostAndItsKineticEnergyBelowTheThreshold
   expect_bed_settles(bullet_engine({}));
 }
 
+TEST(BulletWorld, AGrainOnAnObjectPushesItByItsWeightAndGravityTiltsOnAChute) {
+  expect_object_force_and_tilted_gravity(bullet_engine({}));
+}
+
 TEST(BulletWorld, TheSameSeedGivesBitIdenticalBeds) { expect_repeats_bit_identically(bullet_engine({})); }
 
 TEST(BulletWorld, AKinematicSpherePressedIntoTheBedLeavesADentAndLosesNoGrain) {

@@ -41,6 +41,10 @@ TEST(OdeWorld, ABedSettlesWithNoGrainLostAndItsKineticEnergyBelowTheThreshold) {
   expect_bed_settles(ode_engine({}));
 }
 
+TEST(OdeWorld, AGrainOnAnObjectPushesItByItsWeightAndGravityTiltsOnAChute) {
+  expect_object_force_and_tilted_gravity(ode_engine({}));
+}
+
 TEST(OdeWorld, TheSameSeedGivesBitIdenticalBeds) { expect_repeats_bit_identically(ode_engine({})); }
 
 TEST(OdeWorld, AKinematicSpherePressedIntoTheBedLeavesADentAndLosesNoGrain) {

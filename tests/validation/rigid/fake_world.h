@@ -17,7 +17,7 @@ struct FakeWorldLog {
 class FakeWorld final : public RigidWorld {
  public:
   FakeWorld(const RigidWorldSpec& spec, double decay, bool lose_one, FakeWorldLog* log)
-      : grains_(spec.grains), decay_(decay), lose_one_(lose_one), log_(log) {}
+      : grains_(spec.grains), objects_(spec.objects.size()), decay_(decay), lose_one_(lose_one), log_(log) {}
   void set_object_poses(const std::vector<Pose>& p) override {
     if (log_) log_->poses.push_back(p);
   }
@@ -28,9 +28,13 @@ class FakeWorld final : public RigidWorld {
   double time_step_s() const override { return 0.01; }
   GrainSet grains() const override { return grains_; }
   double kinetic_energy_j() const override { return energy_; }
+  std::vector<Eigen::Vector3d> object_forces_n() const override {
+    return std::vector<Eigen::Vector3d>(objects_, Eigen::Vector3d::Zero());
+  }
 
  private:
   GrainSet grains_;
+  std::size_t objects_;
   double energy_ = 1.0;
   double decay_;
   bool lose_one_;
