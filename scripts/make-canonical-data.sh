@@ -68,6 +68,16 @@ for engine in bullet ode; do
   solvers[ref_indent_deep_$engine/seed1]=$engine
   order+=("ref_indent_deep_$engine/seed1")
 done
+# the scoop references (issue 12): LIGGGHTS and Bullet on three beds each,
+# and the calibration's held-out shallower scoop in LIGGGHTS on the same beds
+for seed in "${seeds[@]}"; do
+  scenes[ref_scoop/seed$seed]=experiments/scenes/ref_scoop.yaml
+  scenes[ref_scoop_shallow/seed$seed]=experiments/scenes/ref_scoop_shallow.yaml
+  scenes[ref_scoop_bullet/seed$seed]=experiments/scenes/ref_scoop.yaml
+  solvers[ref_scoop_bullet/seed$seed]=bullet
+  order+=("ref_scoop/seed$seed")
+done
+for seed in "${seeds[@]}"; do order+=("ref_scoop_shallow/seed$seed" "ref_scoop_bullet/seed$seed"); done
 if [[ $# -gt 0 ]]; then order=("$@"); fi
 
 # the files kept in data/NAME (the rest of the run folder is large or

@@ -71,6 +71,12 @@ void add_measures(const HeightSpanModel& model, const HeightSpanRun& r, Run* run
     run->set("mass_held_kg." + name, final_m3 * model.options.bulk_density_kg_m3, "kg");
     run->set("mass_held_max_kg." + name, max_m3 * model.options.bulk_density_kg_m3, "kg");
   }
+  for (std::size_t k = 0; k < model.held.size(); ++k) {
+    TimeSeries& mass = run->series["mass_held_kg." + object_name(model, model.held[k].object)];
+    mass.unit = "kg";
+    mass.time_s = r.time_s;
+    for (const double m3 : r.held_m3[k]) mass.value.push_back(m3 * model.options.bulk_density_kg_m3);
+  }
   run->set("volume.initial_m3", r.initial_m3, "m^3");
   run->set("volume.ground_final_m3", r.final_height.volume_m3(), "m^3");
   run->set("volume.held_final_m3", held, "m^3");

@@ -15,7 +15,8 @@
 // mass_held_kg.<object> (at the end, bulk_density_kg_m3 times the volume on
 // its spans, named as the particle references name theirs),
 // mass_held_max_kg.<object> and volume_held_m3.<object>, and particles.*
-// (counts) and flows.* (m^3). Run::details["built"] lists what was built:
+// (counts) and flows.* (m^3), and the series mass_held_kg.<object> (kg, at
+// every step: the held_mass.csv column <object>_mass_kg). Run::details["built"] lists what was built:
 // span maps (and by which path: heightspan.span_maps, cpu or osmesa depth
 // peeling), the objects left on the ground path, whether particles were
 // made; Run::stages the modules ("span-maps:cpu", "span-erosion",

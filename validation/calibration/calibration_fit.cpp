@@ -156,8 +156,10 @@ SceneError scene_error(const CalibrationProblem& problem, const PreparedScene& s
   e.name = scene.entry.name;
   e.fit = scene.fit();
   e.grain_diameter_m = scene.grain_diameter_m;
-  e.heuristic_initial_params = problem.run(scene, initial_values);
-  e.heuristic_fitted = problem.run(scene, fitted_values);
+  const Run initial = problem.run_whole(scene, initial_values), fitted = problem.run_whole(scene, fitted_values);
+  e.heuristic_initial_params = initial.field("height_final");
+  e.heuristic_fitted = fitted.field("height_final");
+  e.series = compare_series(scene, initial, fitted);
   e.rmse_initial_m = surface_rmse_m(e.heuristic_initial_params, scene.reference_final, region);
   e.rmse_fitted_m = surface_rmse_m(e.heuristic_fitted, scene.reference_final, region);
   e.scores_initial_params = score_change(scene.initial, e.heuristic_initial_params, scene.reference_final, region);

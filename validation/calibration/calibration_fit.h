@@ -17,6 +17,7 @@
 #include "models/core/base/progress.h"
 #include "validation/calibration/calibration_problem.h"
 #include "validation/calibration/calibration_uncertainty.h"
+#include "validation/calibration/series_comparison.h"
 #include "validation/observables/surface_change.h"
 
 namespace repose {
@@ -47,6 +48,7 @@ struct SceneError {
   // (leave one scene out), scored here (cross_validation.h).
   std::optional<ChangeScores> cross_validated;
   std::vector<double> cross_validated_values;  // every parameter (SI) of that fit
+  std::vector<SeriesComparison> series;        // its series observables (series_comparison.h)
 };
 
 struct CalibrationFit {

@@ -102,6 +102,16 @@ json cross_validation_json(const CalibrationProblem& problem, const CalibrationF
   return folds;
 }
 
+json series_json(const std::vector<SeriesComparison>& series) {
+  json out = json::array();
+  for (const SeriesComparison& c : series) {
+    out.push_back({{"name", c.series}, {"unit", c.unit}, {"times_s", c.times_s}, {"seeds", c.seeds},
+                   {"reference", c.reference}, {"initial", c.initial}, {"fitted", c.fitted},
+                   {"fitted_relative_error", c.fitted_relative_error()}});
+  }
+  return out;
+}
+
 json scenes_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
   json scenes = json::array();
   for (std::size_t k = 0; k < fit.scenes.size(); ++k) {
@@ -124,7 +134,8 @@ json scenes_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
                                                          ? json(e.cross_validated->rmse_m / e.noise->rmse_m)
                                                          : json()},
                       {"features", {{"reference", features_json(e.reference_features)},
-                                    {"fitted", features_json(e.fitted_features)}}}});
+                                    {"fitted", features_json(e.fitted_features)}}},
+                      {"series", series_json(e.series)}});
   }
   return scenes;
 }

@@ -73,22 +73,36 @@ CalibrationRegion read_region(const YamlValue& value) {
   return {x[0], x[1], y[0], y[1]};
 }
 
+// A series observable's name and its increasing times (s).
+void read_series_observable(const YamlMap& map, ObservableSpec* o) {
+  o->series = map.string("name");
+  const YamlValue times = map.required("times_s", "a list of times (s) at which to compare the series");
+  for (const YamlValue& t : times.list(1)) {
+    o->times_s.push_back(t.number(Range::closed(0.0, 1.0e6)));
+    if (o->times_s.size() > 1 && !(o->times_s.back() > o->times_s[o->times_s.size() - 2])) {
+      t.fail("a time later than the one before it");
+    }
+  }
+}
+
 ObservableSpec read_observable(const YamlValue& value) {
   using K = ObservableSpec::Kind;
-  const std::vector<std::string> kinds = {"height_field", "transect", "crater_depth", "rim_height", "pile_angle", "furrow_area"};
+  const std::vector<std::string> kinds = {"height_field", "transect",    "crater_depth", "rim_height",
+                                          "pile_angle",   "furrow_area", "series"};
   const std::vector<std::vector<std::string>> keys = {
       {"kind", "weight", "region_m"},
       {"kind", "weight", "from_m", "to_m", "samples"},
       {"kind", "weight", "region_m"},
       {"kind", "weight", "region_m"},
       {"kind", "weight", "centre_m"},
-      {"kind", "weight", "from_m", "to_m", "samples"}};
+      {"kind", "weight", "from_m", "to_m", "samples"},
+      {"kind", "weight", "name", "times_s"}};
   // the allowed keys depend on the kind: read it first, then check the map against its kind
   if (!value.is_map()) value.fail("a map with a kind");
   const YAML::Node kind_node = value.node()["kind"];
   if (!kind_node) {
-    value.map({"kind", "weight", "region_m", "from_m", "to_m", "samples", "centre_m"})
-        .fail_missing("kind", "one of height_field, transect, crater_depth, rim_height, pile_angle, furrow_area");
+    value.map({"kind", "weight", "region_m", "from_m", "to_m", "samples", "centre_m", "name", "times_s"})
+        .fail_missing("kind", "one of height_field, transect, crater_depth, rim_height, pile_angle, furrow_area, series");
   }
   const std::size_t kind = YamlValue(value.file(), kind_node, value.path() + ".kind").choice(kinds);
   const YamlMap map = value.map(keys[kind]);
@@ -103,6 +117,7 @@ ObservableSpec read_observable(const YamlValue& value) {
     o.samples = static_cast<int>(map.integer_or("samples", IntRange{2, 100000}, o.samples));
   }
   if (o.kind == K::kPileAngle) o.centre_m = map.vec2("centre_m", kCoordinate);
+  if (o.kind == K::kSeries) read_series_observable(map, &o);
   return o;
 }
 

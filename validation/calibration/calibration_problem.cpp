@@ -18,6 +18,7 @@
 #include "validation/calibration/reference_cost.h"
 #include "validation/observables/calibration_observables.h"
 #include "validation/observables/surface_change.h"
+#include "validation/particles/held_mass_series.h"
 #include "validation/particles/dem_section.h"
 
 namespace repose {
@@ -70,6 +71,30 @@ std::vector<double> named_values(const CompiledSolver& solver, const std::string
   return values;
 }
 
+// A reference run's time series: its held_mass.csv (held_mass_series.h) as
+// mass_held_kg.<object>, when it has one.
+SeriesByName read_reference_series(const std::string& dir) {
+  SeriesByName out;
+  const fs::path path = fs::path(dir) / "held_mass.csv";
+  if (!fs::exists(path)) return out;
+  for (auto& [object, track] : read_held_mass_csv(path.string())) {
+    out["mass_held_kg." + object] = TimeSeries{"kg", std::move(track.time_s), std::move(track.mass_kg)};
+  }
+  return out;
+}
+
+// The reference's values of an observable: of the mean surfaces, or for a
+// series the mean over seeds of each seed's values.
+std::vector<double> reference_values(const ObservableSpec& o, const PreparedScene& s) {
+  if (o.kind != ObservableSpec::Kind::kSeries) return observe(o, s.initial, s.reference_final);
+  std::vector<double> mean(o.times_s.size(), 0.0);
+  for (const SeriesByName& seed : s.seed_series) {
+    const std::vector<double> v = observe(o, s.initial, s.reference_final, seed);
+    for (std::size_t k = 0; k < v.size(); ++k) mean[k] += v[k] / static_cast<double>(s.seed_series.size());
+  }
+  return mean;
+}
+
 void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solver& fitted,
                     const ProgressFn& progress) {
   const Grid& grid = s.scene.ground.grid;
@@ -79,6 +104,7 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
     const Run run = solver->run(named_values(*solver, fitted.name(), ref), RunOptions{});
     s.initial = run.field("height_initial");
     s.reference_final = run.field("height_final");
+    s.seed_series.push_back(run.series);
     return;
   }
   if (ref.kind == ReferenceSpec::Kind::kLiggghts && !fs::exists(fs::path(ref.directories.front()) / "height_final.npy")) {
@@ -93,6 +119,7 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
   for (const std::string& dir : ref.directories) {
     s.seed_initial.push_back(read_height_field((fs::path(dir) / "height_initial.npy").string(), grid, "the reference's initial surface"));
     s.seed_final.push_back(read_height_field((fs::path(dir) / "height_final.npy").string(), grid, "the reference's final surface"));
+    s.seed_series.push_back(read_reference_series(dir));
     const auto cost = read_run_cost(dir);
     costed = costed && cost.has_value();
     if (cost) {
@@ -161,7 +188,7 @@ CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistr
     s.scene = starting_from(std::move(s.scene), s.initial);
     s.solver = solver_->compile(s.scene);
     for (const ObservableSpec& o : s.entry.observables) {
-      s.reference_values.push_back(observe(o, s.initial, s.reference_final));
+      s.reference_values.push_back(reference_values(o, s));
       s.residual_count += s.reference_values.back().size();
     }
     cells_in(s.entry.rmse_region, s.scene.ground.grid);  // a region without cells is refused now
@@ -261,15 +288,28 @@ std::vector<double> CalibrationProblem::solver_values(const PreparedScene& scene
 }
 
 HeightField CalibrationProblem::run(const PreparedScene& scene, const std::vector<double>& values) const {
-  return scene.solver->run(solver_values(scene, values), RunOptions{}).field("height_final");
+  return run_whole(scene, values).field("height_final");
 }
 
-std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const HeightField& final_height) const {
+Run CalibrationProblem::run_whole(const PreparedScene& scene, const std::vector<double>& values) const {
+  return scene.solver->run(solver_values(scene, values), RunOptions{});
+}
+
+std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScene& scene, const Run& run) const {
+  std::vector<std::vector<double>> out;
+  for (const ObservableSpec& o : scene.entry.observables) {
+    out.push_back(observe(o, scene.initial, run.field("height_final"), run.series));
+  }
+  return out;
+}
+
+std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const HeightField& final_height,
+                                                  const SeriesByName& series) const {
   std::vector<double> r;
   r.reserve(scene.residual_count);
   for (std::size_t o = 0; o < scene.entry.observables.size(); ++o) {
     const ObservableSpec& spec = scene.entry.observables[o];
-    const std::vector<double> values = observe(spec, scene.initial, final_height);
+    const std::vector<double> values = observe(spec, scene.initial, final_height, series);
     const std::vector<double>& reference = scene.reference_values[o];
     REPOSE_DEMAND(values.size() == reference.size());
     const double scale = spec.weight / std::sqrt(static_cast<double>(values.size()));
@@ -290,7 +330,8 @@ std::vector<std::vector<double>> CalibrationProblem::fit_residuals(const std::ve
   const int threads = solver_->thread_safe() ? spec_.solver.threads : 1;
   parallel_for(free_points.size() * fit.size(), threads, [&](std::size_t task) {
     const std::size_t point = task / fit.size(), scene = task % fit.size();
-    parts[point][scene] = residuals(*fit[scene], run(*fit[scene], values[point]));
+    const Run whole = run_whole(*fit[scene], values[point]);
+    parts[point][scene] = residuals(*fit[scene], whole.field("height_final"), whole.series);
   });
   runs_ += static_cast<long long>(free_points.size() * fit.size());
   std::vector<std::vector<double>> out(free_points.size());

@@ -21,6 +21,7 @@
 #include "models/core/config/scene.h"
 #include "models/core/solver/solver_registry.h"
 #include "validation/calibration/calibration_spec.h"
+#include "validation/observables/calibration_observables.h"
 
 namespace repose {
 
@@ -35,6 +36,10 @@ struct PreparedScene {
   HeightField reference_final;     // mean over seeds
   // Each seed's surfaces (one entry for a single reference run; none for a heuristic reference).
   std::vector<HeightField> seed_initial, seed_final;
+  // Each seed's time series (a data reference's held_mass.csv, as
+  // mass_held_kg.<object>; a heuristic reference's Run::series): what series
+  // observables compare with, as the mean over seeds at their times.
+  std::vector<SeriesByName> seed_series;
   std::vector<std::vector<double>> reference_values;  // per observable
   std::size_t residual_count = 0;
   double grain_diameter_m = 0.0;   // of the scene's dem section (0 without one)
@@ -77,8 +82,13 @@ class CalibrationProblem {
   std::vector<double> solver_values(const PreparedScene& scene, const std::vector<double>& values) const;
   // A run of the calibrated solver on the scene; its height_final.
   HeightField run(const PreparedScene& scene, const std::vector<double>& values) const;
+  // The same run, whole (its time series too).
+  Run run_whole(const PreparedScene& scene, const std::vector<double>& values) const;
   // weight * (heuristic - reference) / sqrt(count), observable after observable.
-  std::vector<double> residuals(const PreparedScene& scene, const HeightField& final_height) const;
+  std::vector<double> residuals(const PreparedScene& scene, const HeightField& final_height,
+                                const SeriesByName& series = {}) const;
+  // Each observable's values in a run of the calibrated solver (as reference_values).
+  std::vector<std::vector<double>> observed(const PreparedScene& scene, const Run& run) const;
 
   // Residuals of all fit scenes (concatenated in scene order) at each point
   // (free parameter values), computed on spec().solver.threads threads.

@@ -48,6 +48,29 @@ std::vector<ObservableSpec> transects_of(const PreparedScene& s) {
   return lines;
 }
 
+// The series observables (held mass at the stages of a scoop): per time the
+// reference's seeds and mean, the solver with the initial and fitted values.
+void write_series_table(std::ostream& out, const CalibrationFit& fit) {
+  bool any = false;
+  for (const SceneError& e : fit.scenes) any = any || !e.series.empty();
+  if (!any) return;
+  out << "\n## Series per scene (reference: the seeds' mean)\n\n"
+         "| scene | role | series | t (s) | seeds | reference | initial | fitted | fitted − reference | relative |\n"
+         "|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const SceneError& e : fit.scenes) {
+    for (const SeriesComparison& c : e.series) {
+      const std::vector<double> error = c.fitted_relative_error();
+      for (std::size_t k = 0; k < c.times_s.size(); ++k) {
+        std::string seeds;
+        for (const auto& seed : c.seeds) seeds += (seeds.empty() ? "" : ", ") + fmt::format("{:.4g}", seed[k]);
+        out << fmt::format("| {} | {} | {} ({}) | {:.3g} | {} | {:.4g} | {:.4g} | {:.4g} | {:+.3g} | {:+.1f} % |\n",
+                           e.name, role_name(e.fit), c.series, c.unit, c.times_s[k], seeds, c.reference[k],
+                           c.initial[k], c.fitted[k], c.fitted[k] - c.reference[k], 100.0 * error[k]);
+      }
+    }
+  }
+}
+
 std::string ratio(double a, double b) { return b > 0.0 ? fmt::format("{:.2f}", a / b) : "-"; }
 
 // The table a report leads with: per scene, the reference's noise floor, the
@@ -201,6 +224,7 @@ void write_calibration_report(const CalibrationOutputs& o, const std::vector<std
                        e.grain_diameter_m > 0 ? mm(e.grain_diameter_m) : "-",
                        e.grain_diameter_m > 0 ? fmt::format("{:.2f}", e.rmse_fitted_m / e.grain_diameter_m) : "-");
   }
+  write_series_table(out, fit);
   if (o.ladder) {
     const Ladder& l = *o.ladder;
     out << fmt::format("\n## Speed/accuracy ladder ({}; yardstick: {}; its noise floor {})\n\n"

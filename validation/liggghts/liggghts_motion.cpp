@@ -1,5 +1,6 @@
 #include "validation/liggghts/liggghts_motion.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -34,6 +35,26 @@ bool rotates(const ObjectSpec& object) {
     if (std::abs(std::abs(q0.dot(k.pose.orientation.normalized())) - 1.0) > 1e-12) return true;
   }
   return false;
+}
+
+Aabb swept_bounds(const ObjectSpec& object) {
+  Aabb box;
+  if (rotates(object)) {
+    double reach = 0.0;
+    for (Eigen::Index v = 0; v < object.body.V.rows(); ++v) reach = std::max(reach, object.body.V.row(v).norm());
+    for (const Keyframe& key : object.keyframes) {
+      box.extend(key.pose.position_m - Eigen::Vector3d::Constant(reach));
+      box.extend(key.pose.position_m + Eigen::Vector3d::Constant(reach));
+    }
+    return box;
+  }
+  const Aabb body =
+      bounding_box(transformed(object.body, Pose{Eigen::Vector3d::Zero(), object.keyframes.front().pose.orientation}));
+  for (const Keyframe& key : object.keyframes) {
+    box.extend(key.pose.position_m + body.min);
+    box.extend(key.pose.position_m + body.max);
+  }
+  return box;
 }
 
 namespace {

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "models/core/config/scene.h"
+#include "models/core/geometry/triangle_mesh.h"
 #include "validation/particles/dem_section.h"
 
 namespace repose {
@@ -22,6 +23,13 @@ Eigen::Vector3d position_at(const ObjectSpec& object, double t);
 
 // Does any keyframe turn the object away from its first orientation?
 bool rotates(const ObjectSpec& object);
+
+// A box the keyframed object's body stays in over its whole motion: the
+// body's box at its (fixed) orientation carried through the keyframe
+// positions, or for a turning object the ball of its farthest vertex from
+// the body origin about each keyframe position (positions are linear
+// between keyframes, so either covers every time in between).
+Aabb swept_bounds(const ObjectSpec& object);
 
 // Writes every segment's fixes, its `run N` and the unfixes; object k's mesh
 // is the fix mesh_fix_ids[k] (free bodies are skipped). Returns the steps of the whole run.

@@ -1,5 +1,6 @@
 #include "validation/liggghts/liggghts_reference.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -105,6 +106,20 @@ void measure_free_bodies(LiggghtsReferenceResult& r, const Scene& scene, const f
   }
 }
 
+// The mass each keyframed object holds at every dump (none without such an object).
+void measure_held_mass(LiggghtsReferenceResult& r, const Scene& scene, const std::vector<std::string>& dumps,
+                       const fs::path& dir) {
+  if (std::none_of(scene.objects.begin(), scene.objects.end(), [](const ObjectSpec& o) { return !o.dynamic; })) return;
+  const DemSpec& dem = *dem_of(scene);
+  std::vector<GrainFrame> frames;
+  for (const std::string& path : dumps) {
+    DumpFrame f = read_last_dump_frame(path);
+    frames.push_back({static_cast<double>(f.timestep) * dem.time_step_s, std::move(f.grains)});
+  }
+  r.held_mass = held_mass_series(scene.objects, frames, dem.density_kg_m3);
+  write_held_mass_csv((dir / "held_mass.csv").string(), r.held_mass);
+}
+
 void write_manifest(const fs::path& path, const LiggghtsReferenceResult& r, const Scene& scene) {
   const DemSpec& dem = *dem_of(scene);
   nlohmann::json json = liggghts_results_json(r);
@@ -208,6 +223,7 @@ LiggghtsReferenceResult run_liggghts_reference(const Scene& scene, const std::st
   if (dem_of(scene)->initial == DemSpec::Initial::kColumn) measure_column(r, scene, dumps, options, dir);
   if (measures_impact(*dem_of(scene))) measure_chute(r, scene, dumps, thermo, script, dir);
   measure_free_bodies(r, scene, dir);
+  measure_held_mass(r, scene, dumps, dir);
   for (std::size_t k = 0, b = 0; k < scene.objects.size(); ++k) {
     const ObjectSpec& o = scene.objects[k];
     const Pose end = o.dynamic ? r.free_bodies[b++].samples.back().state.pose : o.pose_at(scene.time.duration_s);

@@ -13,6 +13,8 @@
 //        bed_manifest.json           the settled bed's manifest (its cost)
 //        free_body_NAME.csv          a free sphere's trajectory and contact force (free_body_track.h;
 //                                    LIGGGHTS prints free_body_NAME.txt, liggghts_free_body.h)
+//        held_mass.csv               time_s, <object>_mass_kg: the mass each keyframed object holds
+//                                    at every dump (held_mass_series.h), when the scene has one
 //   the manifest also holds free_bodies (each one's rest: depth, force, final state) and mass_held_kg: the mass of grains each object holds at the end
 //   and for a scene that starts from a column (dem.initial: column):
 //        runout.csv                  time_s, front_m: the deposit front over the dumps
@@ -34,6 +36,7 @@
 #include "validation/particles/chute_impact.h"
 #include "validation/particles/column_collapse.h"
 #include "validation/particles/free_body_track.h"
+#include "validation/particles/held_mass_series.h"
 #include "validation/liggghts/liggghts_bed.h"
 #include "validation/liggghts/liggghts_neighbor_stats.h"
 #include "validation/liggghts/liggghts_runner.h"
@@ -70,6 +73,7 @@ struct LiggghtsReferenceResult {
   // holds at the end of the run (mass_held_by_object_kg, observables.h), the
   // object at ObjectSpec::pose_at(scene duration), grains of the scene's density.
   std::vector<std::pair<std::string, double>> mass_held_kg;
+  HeldMassSeries held_mass;                // per keyframed object, per dump (held_mass_series.h)
   std::vector<FreeBodyTrack> free_bodies;  // per free sphere (scene order)
   std::vector<FreeBodyRest> free_body_rests;
 };

@@ -361,8 +361,11 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
 
 namespace {
 
-// The run's box (the grid's extent, up to the highest point any object
-// reaches) and each object's STL mesh at its start pose.
+// The run's walls (the grid's extent, up to the highest point any object
+// reaches), its box (the walls' extent grown in x and y to hold every
+// object's whole motion: LIGGGHTS deletes the mesh elements whose centre
+// lies outside the box, "mesh elements have been lost / left the domain")
+// and each object's STL mesh at its start pose.
 void place_objects(const Scene& scene, const DemSpec& dem, const RunScriptOptions& options, RunScript* out) {
   const Grid& g = scene.ground.grid;
   DemDomain& d = out->domain;
@@ -373,26 +376,42 @@ void place_objects(const Scene& scene, const DemSpec& dem, const RunScriptOption
   // a column, once its gate is gone, only falls; a bed may be heaped up by the objects
   if (is_column(dem)) column_geometry(scene);  // refuses a column that does not fit, before any run
   double top = is_column(dem) ? 1.25 * dem.column_height_m : dem.bed_depth_m * 2.0;
+  Aabb reached;  // by the keyframed objects
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     const ObjectSpec& o = scene.objects[k];
     if (o.dynamic) top = std::max(top, free_sphere_top_m(o, dem.gravity_m_s2));  // an atom (liggghts_free_body.h)
     if (o.dynamic) continue;
-    if (rotates(o)) {
-      // any orientation in between: the body's farthest vertex from its origin bounds its top
-      double reach = 0.0;
-      for (Eigen::Index v = 0; v < o.body.V.rows(); ++v) reach = std::max(reach, o.body.V.row(v).norm());
-      for (const Keyframe& key : o.keyframes) top = std::max(top, key.pose.position_m.z() + reach);
-      out->meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, o.pose_at(0.0))});
-      continue;
-    }
-    const Aabb body = bounding_box(transformed(o.body, Pose{Eigen::Vector3d::Zero(), o.keyframes.front().pose.orientation}));
-    for (const Keyframe& key : o.keyframes) top = std::max(top, key.pose.position_m.z() + body.max.z());
-    Pose start = o.keyframes.front().pose;
-    start.position_m = position_at(o, 0.0);
+    const Aabb swept = swept_bounds(o);
+    reached.extend(swept.min);
+    reached.extend(swept.max);
+    top = std::max(top, swept.max.z());
+    Pose start = o.pose_at(0.0);
+    if (!rotates(o)) start = Pose{position_at(o, 0.0), o.keyframes.front().pose.orientation};
     out->meshes.push_back({fmt::format("object_{}.stl", k), fmt::format("obj{}", k), transformed(o.body, start)});
   }
   if (dem.slope_deg > 0.0) top = std::max(top, chute_splash_top_m(dem, scene.ground.grid));
-  d.z_max_m = top + (options.top_margin_m > 0 ? options.top_margin_m : 8.0 * dem.grain_radius_m);
+  const double margin = options.top_margin_m > 0 ? options.top_margin_m : 8.0 * dem.grain_radius_m;
+  d.z_max_m = top + margin;
+  out->box = d;
+  if (reached.empty()) return;
+  // a side grows (by the margin beyond the object) only where an object crosses it
+  if (reached.min.x() < d.x_min_m) out->box.x_min_m = reached.min.x() - margin;
+  if (reached.max.x() > d.x_max_m) out->box.x_max_m = reached.max.x() + margin;
+  if (reached.min.y() < d.y_min_m) out->box.y_min_m = reached.min.y() - margin;
+  if (reached.max.y() > d.y_max_m) out->box.y_max_m = reached.max.y() + margin;
+}
+
+// The box after the restart: z up to the walls' top; x and y grown only
+// when an object reaches beyond the walls (otherwise the line every run has had).
+std::string change_box_line(const RunScript& out) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  const DemDomain& d = out.domain;
+  const DemDomain& b = out.box;
+  std::string xy;
+  if (b.x_min_m != d.x_min_m || b.x_max_m != d.x_max_m || b.y_min_m != d.y_min_m || b.y_max_m != d.y_max_m) {
+    xy = fmt::format("x final {} {} y final {} {} ", n(b.x_min_m), n(b.x_max_m), n(b.y_min_m), n(b.y_max_m));
+  }
+  return fmt::format("change_box all {}z final {} {} units box\n", xy, n(d.z_min_m), n(d.z_max_m));
 }
 
 // The objects as granular walls; their force columns join the thermo line.
@@ -413,7 +432,6 @@ void write_object_walls(std::ostringstream& s, const RunScript& out, const DemSp
 
 RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
   const DemSpec& dem = require_dem(scene, "LIGGGHTS");
-  const auto n = [](double v) { return liggghts_number(v); };
   RunScript out;
   place_objects(scene, dem, options, &out);
   const DemDomain& d = out.domain;
@@ -429,7 +447,7 @@ RunScript run_script(const Scene& scene, const RunScriptOptions& options) {
     << "# after a restart, reset_timestep must come right before a run\n"
     << "reset_timestep 0\n"
     << "run 0\n"
-    << "change_box all z final " << n(d.z_min_m) << " " << n(d.z_max_m) << " units box\n\n";
+    << change_box_line(out) << "\n";
   s << free_sphere_commands(scene, dem);
   std::string thermo = "thermo_style custom step atoms ke";
   write_object_walls(s, out, dem, &thermo);

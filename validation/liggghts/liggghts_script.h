@@ -34,7 +34,7 @@ std::vector<double> grain_radii_m(const DemSpec& dem);
 // Mean grain volume of that distribution (m^3).
 double mean_grain_volume_m3(const DemSpec& dem);
 
-// The simulation box (m). x and y are the ground grid's extent; the floor is z = 0.
+// A box (m). The walls: x and y the ground grid's extent, the floor z = 0.
 struct DemDomain {
   double x_min_m = 0, x_max_m = 0, y_min_m = 0, y_max_m = 0, z_min_m = 0, z_max_m = 0;
 };
@@ -94,7 +94,8 @@ struct RunScriptOptions {
 struct RunScript {
   std::string text;
   std::vector<LiggghtsMeshFile> meshes;  // to be written (binary STL) next to the script
-  DemDomain domain;
+  DemDomain domain;  // the walls: the grid's extent, the floor at z = 0, up to above every object
+  DemDomain box;     // the simulation box: the walls' extent grown in x and y to hold every object's motion
   long total_steps = 0;       // steps after reset_timestep 0 (for progress)
   long dump_interval_steps = 0;
 };

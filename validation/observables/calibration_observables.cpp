@@ -44,6 +44,19 @@ double pile_angle_rad(const HeightField& h, const Eigen::Vector2d& centre) {
   }
 }
 
+std::vector<double> series_values(const ObservableSpec& o, const SeriesByName& series) {
+  const auto it = series.find(o.series);
+  if (it == series.end()) {
+    std::string names;
+    for (const auto& [name, s] : series) names += (names.empty() ? "" : ", ") + name;
+    throw InputError(fmt::format("series observable: the run has no series '{}' (it has: {})", o.series,
+                                 names.empty() ? "none" : names));
+  }
+  std::vector<double> out;
+  for (const double t : o.times_s) out.push_back(it->second.at(t));
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::size_t> cells_in(const std::optional<CalibrationRegion>& region, const Grid& grid) {
@@ -62,7 +75,8 @@ std::vector<std::size_t> cells_in(const std::optional<CalibrationRegion>& region
   return cells;
 }
 
-std::vector<double> observe(const ObservableSpec& o, const HeightField& initial, const HeightField& final_height) {
+std::vector<double> observe(const ObservableSpec& o, const HeightField& initial, const HeightField& final_height,
+                            const SeriesByName& series) {
   using K = ObservableSpec::Kind;
   switch (o.kind) {
     case K::kHeightField:
@@ -96,6 +110,8 @@ std::vector<double> observe(const ObservableSpec& o, const HeightField& initial,
       }
       return {area};
     }
+    case K::kSeries:
+      return series_values(o, series);
   }
   REPOSE_DEMAND(false);
   return {};

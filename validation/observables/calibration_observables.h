@@ -3,17 +3,25 @@
 // from a run's initial and final surfaces, the same way for the heuristic and
 // the reference, so that they can be subtracted value by value.
 
+#include <map>
+#include <string>
 #include <vector>
 
 #include "models/core/geometry/height_field.h"
+#include "models/core/solver/time_series.h"
 #include "validation/observables/observable_spec.h"
 
 namespace repose {
 
+// A run's time series by name (Run::series).
+using SeriesByName = std::map<std::string, TimeSeries>;
+
 // The values of one observable (SI units, radians): the cells of a region
-// (row-major), the samples of a transect, or one scalar. Throws InputError
-// when a region holds no cell centre of the grid.
-std::vector<double> observe(const ObservableSpec& observable, const HeightField& initial, const HeightField& final_height);
+// (row-major), the samples of a transect, one scalar, or a series at its
+// times (TimeSeries::at). Throws InputError when a region holds no cell
+// centre of the grid, or for a series the run does not have (naming those it has).
+std::vector<double> observe(const ObservableSpec& observable, const HeightField& initial, const HeightField& final_height,
+                            const SeriesByName& series = {});
 
 // Indices (row-major) of the cells whose centre lies in region (all cells without one).
 std::vector<std::size_t> cells_in(const std::optional<CalibrationRegion>& region, const Grid& grid);

@@ -1,8 +1,11 @@
 #pragma once
 // What is compared between a solver's run and a reference's: one measured
-// quantity of a run's final surface (SI units, radians).
+// quantity of a run's final surface, or of a quantity over the run at given
+// times (SI units, radians).
 
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -29,6 +32,7 @@ struct ObservableSpec {
     kRimHeight,    // highest final height in region minus the mean initial height there (m)
     kPileAngle,    // mean flank angle (rad) of the final surface around centre_m (0 without a flank)
     kFurrowArea,   // cross-section (m^2) below the initial surface along from_m..to_m
+    kSeries,       // a run's time series (Run::series, time_series.h) `series` at each of times_s
   };
   Kind kind = Kind::kHeightField;
   double weight = 1.0;  // > 0; residuals are in SI units times this
@@ -37,6 +41,11 @@ struct ObservableSpec {
   Eigen::Vector2d to_m = Eigen::Vector2d::Zero();
   int samples = 32;                                  // transect, furrow_area: points along the line (>= 2)
   Eigen::Vector2d centre_m = Eigen::Vector2d::Zero();  // pile_angle
+  // series: its name ("mass_held_kg.bucket": the mass an object holds, which
+  // a particle reference reads from its held_mass.csv) and the times (s) it
+  // is compared at, >= 1, increasing
+  std::string series;
+  std::vector<double> times_s;
 };
 
 const char* observable_kind_name(ObservableSpec::Kind kind);

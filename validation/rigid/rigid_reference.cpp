@@ -150,6 +150,7 @@ RigidReferenceResult run_rigid_reference(const RigidEngine& engine, const RigidI
     const TriangleMesh world_mesh = transformed(o.body, end);
     r.mass_held_kg.emplace_back(o.name, mass_held_by_object_kg(r.grains_final, world_mesh, in.dem.density_kg_m3));
   }
+  r.held_mass = held_mass_series(in.objects, frames, in.dem.density_kg_m3);
   if (in.column) measure_column(r, in, frames, options);
   if (in.chute) measure_chute(r, *in.chute, frames);
   return r;
@@ -164,6 +165,7 @@ void write_rigid_reference(const RigidReferenceResult& r, const std::string& run
   write_grains_npy((dir / "grains_final.npy").string(), r.grains_final);
   for (const FreeBodyTrack& t : r.free_bodies) write_free_body_csv((dir / ("free_body_" + t.name + ".csv")).string(), t);
   if (r.column) write_runout_csv((dir / "runout.csv").string(), *r.column);
+  if (!r.held_mass.objects.empty()) write_held_mass_csv((dir / "held_mass.csv").string(), r.held_mass);
   if (r.pile) write_flank_angles_csv((dir / "pile_flank_angles.csv").string(), *r.pile);
   if (!r.object_forces.force_n.empty() && !r.object_forces.force_n.front().empty()) {
     write_forces_csv((dir / "forces.csv").string(), r.object_forces, r.object_forces.names);

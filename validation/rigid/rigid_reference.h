@@ -16,6 +16,8 @@
 //   a scene with free bodies writes free_body_NAME.csv per body (trajectory
 //   and contact force every step, free_body_track.h) and their rest in the
 //   manifest's free_bodies;
+//   a scene with keyframed objects writes held_mass.csv (the mass each one
+//   holds in every frame, every dem.dump_interval_s: held_mass_series.h);
 //   a column scene also writes runout.csv (the front every dem.dump_interval_s)
 //   and, for a cylinder, pile_flank_angles.csv;
 //   a scene with kinematic objects writes forces.csv (time_s and the force
@@ -63,6 +65,7 @@ struct RigidReferenceResult {
   // Per object (scene order): its name and the mass (kg) of the grains it
   // holds at the end (mass_held_by_object_kg), the object at pose_at(duration).
   std::vector<std::pair<std::string, double>> mass_held_kg;
+  HeldMassSeries held_mass;  // per keyframed object, per frame (every dem.dump_interval_s; held_mass_series.h)
   std::vector<FreeBodyTrack> free_bodies;  // per free body (scene order): a sample every step
   std::vector<FreeBodyRest> free_body_rests;
   std::optional<ColumnCollapse> column;  // a column scene: its runout

@@ -9,6 +9,7 @@
 
 #include "models/core/config/scene.h"
 #include "validation/particles/grain_set.h"
+#include "validation/particles/held_mass_series.h"
 #include "validation/rigid/rigid_world.h"
 
 namespace repose {
@@ -26,10 +27,8 @@ struct RigidPhaseSummary {
 // threshold_j, or max_time_s has passed (settled = false then).
 RigidPhaseSummary settle(RigidWorld& world, double threshold_j, double check_interval_s, double max_time_s);
 
-struct RigidFrame {
-  double time_s = 0.0;
-  GrainSet grains;
-};
+// A frame of the run: the grains at a time (held_mass_series.h).
+using RigidFrame = GrainFrame;
 
 // The objects moved along keyframes (dynamic unset) and the free bodies, each in scene order.
 std::vector<ObjectSpec> kinematic_objects(const std::vector<ObjectSpec>& objects);

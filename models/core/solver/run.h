@@ -1,6 +1,7 @@
 #pragma once
 // What a solver returns: a typed run. The fields it produced (height fields
 // and other grids on the scene's grid), named scalar measures with units,
+// quantities over time (time_series.h),
 // the modules it built, its timings and the files it wrote. The command
 // line, the experiment runner and calibration read runs, never JSON text.
 
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/core/geometry/height_field.h"
+#include "models/core/solver/time_series.h"
 
 namespace repose {
 
@@ -28,6 +30,9 @@ struct Run {
   std::map<std::string, HeightField> fields;
   // Scalars by dotted name ("steps", "volume.imbalance_m3", "mass_held_kg.ball").
   std::map<std::string, Measure> measures;
+  // Quantities over the run by dotted name ("mass_held_kg.bucket"), as
+  // each solver documents; like fields, not written into the manifest.
+  std::map<std::string, TimeSeries> series;
   // Text and structured results that are not measures (versions, hashes);
   // written into the manifest's results beside the measures.
   nlohmann::json details = nlohmann::json::object();

@@ -1,5 +1,6 @@
 #include "models/heightspan/heightspan_solver.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -48,6 +49,12 @@ TEST(HeightSpanSolver, RunsReportTheLedgerTheHeldMassAndWhatWasBuilt) {
   EXPECT_EQ(run.details["built"]["span_maps"], nlohmann::json::array({"bucket"}));
   EXPECT_TRUE(run.files.empty());  // no output folder: no files
   EXPECT_NO_THROW(run.field("height_final"));
+  // the held mass at every step: its last value and its largest are the measures
+  const TimeSeries& held = run.series.at("mass_held_kg.bucket");
+  EXPECT_EQ(held.unit, "kg");
+  ASSERT_EQ(held.time_s.size(), static_cast<std::size_t>(run.measure("steps").value));
+  EXPECT_EQ(held.value.back(), run.measure("mass_held_kg.bucket").value);
+  EXPECT_EQ(*std::max_element(held.value.begin(), held.value.end()), run.measure("mass_held_max_kg.bucket").value);
 }
 
 TEST(HeightSpanSolver, ASceneWithNothingToHoldRunsTheGroundModel) {

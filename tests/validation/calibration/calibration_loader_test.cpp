@@ -79,6 +79,18 @@ TEST(CalibrationLoader, ReadsTheDefaultCalibration) {
   EXPECT_EQ(spec.scenes[0].reference.kind, ReferenceSpec::Kind::kData);
 }
 
+TEST(CalibrationLoader, ReadsTheScoopCalibrationsSeriesObservables) {
+  const CalibrationSpec spec =
+      load_calibration(std::string(REPOSE_SOURCE_DIR) + "/experiments/heightspan_scoop_fit.yaml");
+  EXPECT_EQ(spec.fitted_solver, "heightspan");
+  ASSERT_GE(spec.scenes.size(), 2u);
+  const ObservableSpec& held = spec.scenes[0].observables[0];
+  EXPECT_EQ(held.kind, ObservableSpec::Kind::kSeries);
+  EXPECT_EQ(held.series, "mass_held_kg.bucket");
+  EXPECT_EQ(held.times_s, (std::vector<double>{1.0, 1.3, 1.6, 2.3}));
+  EXPECT_EQ(spec.scenes[1].role, CalibrationScene::Role::kHeldOut);
+}
+
 // Every file in bad/ starts with "# expect: TEXT": loading it (and making it
 // ready, which checks its parameters against the solver's declarations) must
 // fail with one line that names the file and contains TEXT.

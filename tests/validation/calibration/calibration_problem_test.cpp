@@ -5,11 +5,15 @@
 #include "validation/calibration/calibration_problem.h"
 
 #include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <unistd.h>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "experiments/solvers/solver_registry.h"
+#include "models/core/base/error.h"
 #include "models/core/io/npy_io.h"
 #include "validation/calibration/calibration_fit.h"
 #include "validation/calibration/calibration_loader.h"
@@ -65,6 +69,63 @@ TEST(CalibrationProblem, HoldingOutASceneMovesItOutOfTheFitResiduals) {
   EXPECT_FALSE(held.scene_named(name).fit());
   EXPECT_TRUE(problem.scene_named(name).fit());
   EXPECT_EQ(held.fit_residual_count(), problem.fit_residual_count() - problem.scene_named(name).residual_count);
+}
+
+
+// A series observable (the mass a bucket holds at given times) against a
+// heuristic reference: the reference's values are its run's series at those
+// times, and the residuals vanish at the reference's parameters and not away
+// from them.
+TEST(CalibrationProblem, ASeriesObservableComparesTheHeldMassAtItsTimes) {
+  const std::string yaml = "scenes:\n  - scene: " + kDir + "/scenes/scoop.yaml\n"
+                           "    reference: {heuristic: {heightspan.sand.repose_angle_deg: 40}}\n"
+                           "    observables: [{kind: series, name: mass_held_kg.bucket, times_s: [0.6, 0.8, 1.2]}]\n"
+                           "parameters:\n  - {name: heightspan.sand.repose_angle_deg, initial: 25}\n";
+  const CalibrationProblem problem(load_calibration_from_string(yaml, kDir + "/inline.yaml"), solver_registry());
+  const PreparedScene& s = problem.scenes().front();
+  ASSERT_EQ(s.reference_values.size(), 1u);
+  ASSERT_EQ(s.reference_values[0].size(), 3u);
+  EXPECT_GT(s.reference_values[0][0], 0.0) << "the dragged bucket holds sand";
+  std::vector<double> at_reference = problem.initial_values();
+  at_reference[0] = 40.0 * std::numbers::pi / 180.0;
+  const repose::Run run = problem.run_whole(s, at_reference);
+  const TimeSeries& held = run.series.at("mass_held_kg.bucket");
+  EXPECT_EQ(held.unit, "kg");
+  EXPECT_DOUBLE_EQ(s.reference_values[0][1], held.at(0.8));
+  for (const double r : problem.residuals(s, run.field("height_final"), run.series)) EXPECT_EQ(r, 0.0);
+  const repose::Run away = problem.run_whole(s, problem.initial_values());
+  double sum = 0.0;
+  for (const double r : problem.residuals(s, away.field("height_final"), away.series)) sum += r * r;
+  EXPECT_GT(sum, 0.0);
+  // a run without the series is refused by name
+  EXPECT_THROW(problem.residuals(s, run.field("height_final")), InputError);
+}
+
+// A data reference's series come from each seed's held_mass.csv
+// (held_mass_series.h) and are averaged over the seeds.
+TEST(CalibrationProblem, DataSeriesAreEachSeedsHeldMassCsvAveraged) {
+  const fs::path root = fs::temp_directory_path() / ("repose_series_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  std::vector<std::string> dirs;
+  for (const auto& [name, scale] : {std::pair{"seed1", 1.0}, std::pair{"seed2", 3.0}}) {
+    const fs::path dir = root / name;
+    fs::create_directories(dir);
+    ArrayXXdR flat = ArrayXXdR::Constant(24, 40, 0.03);
+    write_npy_2d((dir / "height_initial.npy").string(), flat);
+    write_npy_2d((dir / "height_final.npy").string(), flat);
+    std::ofstream(dir / "held_mass.csv") << "time_s,bucket_mass_kg\n0,0\n1," << 0.1 * scale << "\n";
+    dirs.push_back(dir.string());
+  }
+  const std::string yaml = "scenes:\n  - scene: " + kDir + "/scenes/scoop.yaml\n    reference: {data: [" + dirs[0] +
+                           ", " + dirs[1] +
+                           "]}\n    observables: [{kind: series, name: mass_held_kg.bucket, times_s: [0.5, 1.0]}]\n"
+                           "parameters:\n  - {name: heightspan.sand.sigma, initial: 0.1}\n";
+  const CalibrationProblem problem(load_calibration_from_string(yaml, kDir + "/inline.yaml"), solver_registry());
+  const PreparedScene& s = problem.scenes().front();
+  ASSERT_EQ(s.seed_series.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.reference_values[0][0], 0.5 * (0.05 + 0.15));  // linear between the samples, then the mean
+  EXPECT_DOUBLE_EQ(s.reference_values[0][1], 0.5 * (0.1 + 0.3));
+  fs::remove_all(root);
 }
 
 }  // namespace

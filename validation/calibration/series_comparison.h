@@ -1,0 +1,29 @@
+#pragma once
+// A series observable (observable_spec.h, kind series: the mass a bucket
+// holds at the stages of a scoop) compared at its times between the
+// reference's seeds and the calibrated solver with the initial and the
+// fitted parameters, for the report and calibration.json.
+
+#include <string>
+#include <vector>
+
+#include "models/core/solver/run.h"
+#include "validation/calibration/calibration_problem.h"
+
+namespace repose {
+
+struct SeriesComparison {
+  std::string series;                      // "mass_held_kg.bucket"
+  std::string unit;                        // of the solver's series ("kg"), "" when unknown
+  std::vector<double> times_s;
+  std::vector<std::vector<double>> seeds;  // per reference seed, per time
+  std::vector<double> reference;           // the seeds' mean, per time
+  std::vector<double> initial, fitted;     // the solver's, per time
+  // (fitted - reference) / reference per time (0 where the reference is 0 and so is the fit)
+  std::vector<double> fitted_relative_error() const;
+};
+
+// One comparison per series observable of the scene, in its order.
+std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const Run& initial, const Run& fitted);
+
+}  // namespace repose
