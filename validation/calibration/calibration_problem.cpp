@@ -78,10 +78,11 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
     const auto solver = fitted.compile(s.scene);
     const Run run = solver->run(named_values(*solver, fitted.name(), ref), RunOptions{});
     s.initial = run.field("height_initial");
-    s.reference_final = run.field("height_final");
+    s.reference_final = run.field(s.entry.field);
     return;
   }
-  if (ref.kind == ReferenceSpec::Kind::kLiggghts && !fs::exists(fs::path(ref.directories.front()) / "height_final.npy")) {
+  const std::string final_file = s.entry.field + ".npy";
+  if (ref.kind == ReferenceSpec::Kind::kLiggghts && !fs::exists(fs::path(ref.directories.front()) / final_file)) {
     const std::string& dir = ref.directories.front();
     report(progress, 0.0, fmt::format("LIGGGHTS reference of {} into {} (minutes)", s.entry.name, dir));
     fs::create_directories(dir);
@@ -92,7 +93,7 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
   bool costed = true;
   for (const std::string& dir : ref.directories) {
     s.seed_initial.push_back(read_height_field((fs::path(dir) / "height_initial.npy").string(), grid, "the reference's initial surface"));
-    s.seed_final.push_back(read_height_field((fs::path(dir) / "height_final.npy").string(), grid, "the reference's final surface"));
+    s.seed_final.push_back(read_height_field((fs::path(dir) / final_file).string(), grid, "the reference's final surface"));
     const auto cost = read_run_cost(dir);
     costed = costed && cost.has_value();
     if (cost) {
@@ -261,7 +262,7 @@ std::vector<double> CalibrationProblem::solver_values(const PreparedScene& scene
 }
 
 HeightField CalibrationProblem::run(const PreparedScene& scene, const std::vector<double>& values) const {
-  return scene.solver->run(solver_values(scene, values), RunOptions{}).field("height_final");
+  return scene.solver->run(solver_values(scene, values), RunOptions{}).field(scene.entry.field);
 }
 
 std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const HeightField& final_height) const {

@@ -75,7 +75,7 @@ class CalibrationProblem {
   const Solver& solver() const { return *solver_; }
   // The compiled solver's values for a calibration parameter set (SI).
   std::vector<double> solver_values(const PreparedScene& scene, const std::vector<double>& values) const;
-  // A run of the calibrated solver on the scene; its height_final.
+  // A run of the calibrated solver on the scene; its field the scene compares (height_final by default).
   HeightField run(const PreparedScene& scene, const std::vector<double>& values) const;
   // weight * (heuristic - reference) / sqrt(count), observable after observable.
   std::vector<double> residuals(const PreparedScene& scene, const HeightField& final_height) const;

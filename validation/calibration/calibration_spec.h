@@ -44,6 +44,10 @@ struct CalibrationScene {
   Role role = Role::kFit;
   ReferenceSpec reference;
   std::vector<ObservableSpec> observables;  // at least one
+  // The surface compared: the solver run's field of this name and the
+  // reference folder's NAME.npy (e.g. snow_depth_final.table for the snow
+  // model's depth on one snow map); its initial surface is height_initial either way.
+  std::string field = "height_final";
   // Region of the reported surface RMSE (default: whole grid).
   std::optional<CalibrationRegion> rmse_region;
 };

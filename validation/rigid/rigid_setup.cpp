@@ -122,6 +122,9 @@ RigidInputs rigid_inputs(const Scene& scene, const std::string& solver) {
     throw InputError(fmt::format("{}: dem: sides: periodic side walls are LIGGGHTS only; {} needs sides: walls",
                                  scene.source_path, solver));
   }
+  if (dem.initial == DemSpec::Initial::kSnowfall) {
+    throw InputError(fmt::format("{}: dem: initial: snowfall is LIGGGHTS only; {} needs bed or column", scene.source_path, solver));
+  }
   RigidInputs in{dem, scene.ground.grid, scene.objects, scene.time, scene.seed, std::nullopt};
   if (dem.initial == DemSpec::Initial::kColumn) in.column = column_geometry(dem, scene);
   return in;
