@@ -68,12 +68,28 @@ for engine in bullet ode; do
   solvers[ref_indent_deep_$engine/seed1]=$engine
   order+=("ref_indent_deep_$engine/seed1")
 done
+# the cohesive DEM snowfall references of the snow calibration (issue 13):
+# the fit scene (a table top and a step) and the held-out one (a house under
+# an overhanging roof), each on three seeds, at three cohesion levels
+# (J/m^3, `--set dem.cohesion_energy_density_j_m3=C`): NAME_cC/seedN
+declare -A sets=()
+for cohesion in 0 1e5 3e5; do
+  for scene in snowfall_table snowfall_roof; do
+    for seed in "${seeds[@]}"; do
+      name="${scene}_c$cohesion/seed$seed"
+      scenes[$name]=experiments/scenes/$scene.yaml
+      sets[$name]="dem.cohesion_energy_density_j_m3=$cohesion"
+      order+=("$name")
+    done
+  done
+done
 if [[ $# -gt 0 ]]; then order=("$@"); fi
 
 # the files kept in data/NAME (the rest of the run folder is large or
 # regenerable): the records every LIGGGHTS run writes, and a rigid-body
 # engine's manifest (bullet_manifest.json or ode_manifest.json)
 keep_liggghts=(manifest.json liggghts_manifest.json bed_manifest.json run.in log.liggghts)
+keep_snowfall=(manifest.json liggghts_manifest.json snowfall.in log.liggghts)  # no settled bed: the grains rain
 shopt -s nullglob
 
 for name in "${order[@]}"; do
@@ -86,13 +102,16 @@ for name in "${order[@]}"; do
   mkdir -p "$runs"
   set_seed=()
   if [[ "$name" == */seed* ]]; then set_seed=(--set "seed=${name##*/seed}"); fi
+  if [[ -n "${sets[$name]:-}" ]]; then set_seed+=(--set "${sets[$name]}"); fi
   solver="${solvers[$name]:-liggghts}"
   nice -n 19 "$repose" run "$repo/$scene" --solver "$solver" --out "$runs/$name" --force "${set_seed[@]}"
   target="$repo/data/$name"
   mkdir -p "$(dirname "$target")"
   rm -rf "$target.tmp"
   mkdir -p "$target.tmp"
-  if [[ "$solver" == liggghts ]]; then
+  if [[ "$solver" == liggghts && -f "$runs/$name/snowfall.in" ]]; then
+    for f in "${keep_snowfall[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done
+  elif [[ "$solver" == liggghts ]]; then
     for f in "${keep_liggghts[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done
   else
     cp "$runs/$name/manifest.json" "$runs/$name/${solver}_manifest.json" "$target.tmp/"

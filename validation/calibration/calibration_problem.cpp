@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <thread>
 
@@ -26,7 +27,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr std::size_t kRunMemoryLimit = 64;  // runs remembered before the memory is emptied
+
 }  // namespace
+
+struct CalibrationProblem::RunMemory {
+  std::mutex mutex;
+  std::map<std::pair<std::string, std::vector<double>>, std::map<std::string, HeightField>> fields;
+};
 
 HeightField read_height_field(const std::string& path, const Grid& grid, const std::string& what) {
   // the header's shape is checked before any data is read (npy_io.h)
@@ -140,7 +148,8 @@ void parallel_for(std::size_t count, int threads, const std::function<void(std::
 }  // namespace
 
 CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistry& registry, const ProgressFn& progress)
-    : spec_(std::move(spec)), registry_(&registry), solver_(registry.find(spec_.fitted_solver)) {
+    : spec_(std::move(spec)), registry_(&registry), solver_(registry.find(spec_.fitted_solver)),
+      memory_(std::make_shared<RunMemory>()) {
   if (solver_ == nullptr) {
     throw InputError(fmt::format("{}: parameters: {} names an unknown solver '{}' (known: {})",
                                  spec_.parameters.front().location, spec_.parameters.front().label(),
@@ -262,7 +271,22 @@ std::vector<double> CalibrationProblem::solver_values(const PreparedScene& scene
 }
 
 HeightField CalibrationProblem::run(const PreparedScene& scene, const std::vector<double>& values) const {
-  return scene.solver->run(solver_values(scene, values), RunOptions{}).field(scene.entry.field);
+  // the scene file and its reference folders fix the scene the solver was compiled for
+  std::string key = scene.entry.scene_path;
+  for (const std::string& dir : scene.entry.reference.directories) key += "\n" + dir;
+  const std::vector<double> solver_in = solver_values(scene, values);
+  const auto id = std::make_pair(key, solver_in);
+  {
+    std::lock_guard lock(memory_->mutex);
+    const auto it = memory_->fields.find(id);
+    if (it != memory_->fields.end() && it->second.count(scene.entry.field)) return it->second.at(scene.entry.field);
+  }
+  const Run run = scene.solver->run(solver_in, RunOptions{});
+  const HeightField& field = run.field(scene.entry.field);
+  std::lock_guard lock(memory_->mutex);
+  if (memory_->fields.size() >= kRunMemoryLimit) memory_->fields.clear();
+  memory_->fields[id] = run.fields;
+  return field;
 }
 
 std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const HeightField& final_height) const {
