@@ -14,6 +14,7 @@
 # environment: REPOSE  the repose program (default: REPO/build-dem/bin/repose,
 #                      else REPO/build/bin/repose)
 #              RUNS    where full run folders go (default: REPO/runs/canonical)
+#              NICE    niceness of repose (default 19; LIGGGHTS runs 10 above it, at most 19)
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -104,7 +105,7 @@ for name in "${order[@]}"; do
   if [[ "$name" == */seed* ]]; then set_seed=(--set "seed=${name##*/seed}"); fi
   if [[ -n "${sets[$name]:-}" ]]; then set_seed+=(--set "${sets[$name]}"); fi
   solver="${solvers[$name]:-liggghts}"
-  nice -n 19 "$repose" run "$repo/$scene" --solver "$solver" --out "$runs/$name" --force "${set_seed[@]}"
+  nice -n "${NICE:-19}" "$repose" run "$repo/$scene" --solver "$solver" --out "$runs/$name" --force "${set_seed[@]}"
   target="$repo/data/$name"
   mkdir -p "$(dirname "$target")"
   rm -rf "$target.tmp"

@@ -52,6 +52,7 @@ void solver_fields(Visitor& v, CalibrationSolverSpec& s) {
   v.integer("max_iterations", s.max_iterations, IntRange{1, 10000});
   v.seed("seed", s.seed);
   v.integer("threads", s.threads, IntRange{1, 64});
+  v.boolean("cross_validation", s.cross_validation);
   v.number("min_reciprocal_condition", s.min_reciprocal_condition, Range::open(0.0, 1.0));
 }
 

@@ -86,6 +86,9 @@ struct CalibrationSolverSpec {
   int max_iterations = 30;     // per start
   std::uint64_t seed = 1;      // scrambles the Halton starts
   int threads = 2;             // parallel heuristic runs (results do not depend on it)
+  // Leave-one-scene-out refits after the fit (cross_validation.h): one more
+  // fit per fit scene; false leaves them out (the held-out scenes still score the fit).
+  bool cross_validation = true;
   // Reciprocal condition number of the range-scaled Jacobian below which a
   // direction counts as undetermined.
   double min_reciprocal_condition = 1.0e-3;
