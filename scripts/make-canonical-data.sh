@@ -14,6 +14,7 @@
 # environment: REPOSE  the repose program (default: REPO/build-dem/bin/repose,
 #                      else REPO/build/bin/repose)
 #              RUNS    where full run folders go (default: REPO/runs/canonical)
+#              NICE    niceness of repose (default 19; LIGGGHTS runs 10 above it, at most 19)
 set -euo pipefail
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -78,12 +79,31 @@ for seed in "${seeds[@]}"; do
   order+=("ref_scoop/seed$seed")
 done
 for seed in "${seeds[@]}"; do order+=("ref_scoop_shallow/seed$seed" "ref_scoop_bullet/seed$seed"); done
+# the cohesive DEM snowfall references of the snow calibration (issue 13):
+# the fit scene (a table top and a step) and the held-out one (a house under
+# an overhanging roof), each on three seeds, at three cohesion levels
+# (J/m^3, `--set dem.cohesion_energy_density_j_m3=C`): NAME_cC/seedN.
+# Cohesive grains keep a jitter of ~1e-6 J after their shape is set (sjkr
+# cohesion is undamped), so they count as settled below 3e-6 J.
+declare -A sets=()
+for cohesion in 0 1e5 3e5; do
+  for scene in snowfall_table snowfall_roof; do
+    for seed in "${seeds[@]}"; do
+      name="${scene}_c$cohesion/seed$seed"
+      scenes[$name]=experiments/scenes/$scene.yaml
+      sets[$name]="dem.cohesion_energy_density_j_m3=$cohesion"
+      if [[ "$cohesion" != 0 ]]; then sets[$name]+=" dem.settle_kinetic_energy_j=3e-6"; fi
+      order+=("$name")
+    done
+  done
+done
 if [[ $# -gt 0 ]]; then order=("$@"); fi
 
 # the files kept in data/NAME (the rest of the run folder is large or
 # regenerable): the records every LIGGGHTS run writes, and a rigid-body
 # engine's manifest (bullet_manifest.json or ode_manifest.json)
 keep_liggghts=(manifest.json liggghts_manifest.json bed_manifest.json run.in log.liggghts)
+keep_snowfall=(manifest.json liggghts_manifest.json snowfall.in log.liggghts)  # no settled bed: the grains rain
 shopt -s nullglob
 
 for name in "${order[@]}"; do
@@ -96,13 +116,16 @@ for name in "${order[@]}"; do
   mkdir -p "$runs"
   set_seed=()
   if [[ "$name" == */seed* ]]; then set_seed=(--set "seed=${name##*/seed}"); fi
+  for assignment in ${sets[$name]:-}; do set_seed+=(--set "$assignment"); done
   solver="${solvers[$name]:-liggghts}"
-  nice -n 19 "$repose" run "$repo/$scene" --solver "$solver" --out "$runs/$name" --force "${set_seed[@]}"
+  nice -n "${NICE:-19}" "$repose" run "$repo/$scene" --solver "$solver" --out "$runs/$name" --force "${set_seed[@]}"
   target="$repo/data/$name"
   mkdir -p "$(dirname "$target")"
   rm -rf "$target.tmp"
   mkdir -p "$target.tmp"
-  if [[ "$solver" == liggghts ]]; then
+  if [[ "$solver" == liggghts && -f "$runs/$name/snowfall.in" ]]; then
+    for f in "${keep_snowfall[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done
+  elif [[ "$solver" == liggghts ]]; then
     for f in "${keep_liggghts[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done
   else
     cp "$runs/$name/manifest.json" "$runs/$name/${solver}_manifest.json" "$target.tmp/"

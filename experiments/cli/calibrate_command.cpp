@@ -53,7 +53,9 @@ void calibrate(const CalibrateOptions& options, int argc, char** argv, const Sol
   OutputDirectory out = OutputDirectory::open(options.out_dir, options.force);
   CalibrationFit fit;
   manifest.time_stage("fit", [&] { fit = fit_calibration(*problem, progress.callback()); });
-  manifest.time_stage("cross_validation", [&] { cross_validate(*problem, &fit, progress.callback()); });
+  if (problem->spec().solver.cross_validation) {
+    manifest.time_stage("cross_validation", [&] { cross_validate(*problem, &fit, progress.callback()); });
+  }
   std::optional<Ladder> ladder;
   if (problem->spec().ladder) {
     manifest.time_stage("ladder", [&] { ladder = measure_ladder(*problem, fit.values, progress.callback()); });

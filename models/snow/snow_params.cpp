@@ -16,6 +16,8 @@ void validate(const SnowParams& params) {
   if (!(std::isfinite(s) && s >= 0.0 && s <= std::numbers::pi)) {
     throw FieldError("spread_deg", "an angle in [0, 180] deg", yaml_degrees(s / kRadPerDeg));
   }
+  const double f = params.snowfall_scale;
+  if (!(std::isfinite(f) && f > 0.0 && f <= 100.0)) throw FieldError("snowfall_scale", "a number in (0, 100]", yaml_number(f));
 }
 
 }  // namespace repose

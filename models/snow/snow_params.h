@@ -6,14 +6,17 @@
 //   direction_spread_rad: standard deviation of each of the two angular
 //     deviations of a snowfall direction from the main direction (the
 //     paper's 2-D normal distribution, snowfall_directions.h). [0, pi]
-// Both are fitted: the angle to cohesive DEM snow, the spread to how far
-// snow reaches under an obstacle.
+//   snowfall_scale: the depth of settled snow per depth of the scene's
+//     snowfall M(t) (how loosely it packs); 1 takes M as the settled depth. (0, 100]
+// All are fitted: the angle to cohesive DEM snow, the spread to how far
+// snow reaches under an obstacle, the scale to the depth on open ground.
 
 namespace repose {
 
 struct SnowParams {
   double repose_angle_rad = 0.7853981633974483;       // 45 deg, the paper's Fig. 8 and 9 scenes
   double direction_spread_rad = 0.17453292519943295;  // 10 deg
+  double snowfall_scale = 1.0;
 };
 
 // Throws FieldError (an InputError) naming the scene key (repose_angle_deg,

@@ -10,6 +10,7 @@
 //     direction_azimuth_deg: 0      #   drifting towards this azimuth (from +x towards +y)
 //     spread_deg: 10                # fitted: std dev of each angular deviation, [0, 180]
 //     repose_angle_deg: 45          # fitted: the snow angle of repose, [0, 90]
+//     snowfall_scale: 1             # fitted: settled depth per depth of snowfall, (0, 100]
 //     direction_count: 64           # shadow maps per probability, [1, 65536]
 //     cell_size_m: 0                # snow-map cell; 0: the ground's
 //     shadow_oversampling: 1        # shadow-map pixels per map cell, [1, 16]
@@ -48,6 +49,7 @@ void snow_fields(Visitor& v, SnowSpec& s) {
   v.angle_deg("direction_azimuth_deg", s.options.main_direction.azimuth_rad, Range::any());
   v.angle_deg("spread_deg", s.params.direction_spread_rad, Range::any());
   v.angle_deg("repose_angle_deg", s.params.repose_angle_rad, Range::any());
+  v.number("snowfall_scale", s.params.snowfall_scale, Range::any());
   v.integer("direction_count", s.options.direction_count, IntRange{});
   v.number("cell_size_m", s.options.cell_size_m, Range::any());
   v.integer("shadow_oversampling", s.options.shadow_oversampling, IntRange{});

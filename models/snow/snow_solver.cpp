@@ -56,6 +56,8 @@ class CompiledSnow final : public CompiledSolver {
          "the snow angle of repose: steeper snow slopes move"},
         {"spread_deg", "deg", kDeg, 0.0, 180.0 * kDeg, spec.params.direction_spread_rad,
          "standard deviation of each angular deviation of a snowfall direction"},
+        {"snowfall_scale", "1", 1.0, 0.01, 100.0, spec.params.snowfall_scale,
+         "settled snow depth per depth of the scene's snowfall (how loosely snow packs)"},
     };
   }
 
@@ -64,7 +66,7 @@ class CompiledSnow final : public CompiledSolver {
   Run run(const std::vector<double>& values_si, const RunOptions& options) const override {
     check_values(parameters_, values_si, "snow");
     const Stopwatch clock;
-    const SnowParams params{values_si[0], values_si[1]};
+    const SnowParams params{values_si[0], values_si[1], values_si[2]};
     SnowState state;
     const SnowRunSummary summary = simulate_snow(model_, params, &state);
     Run run;

@@ -1,8 +1,9 @@
 #pragma once
 // `--solver snow`: the snow-cover heuristic (models/snow) as a repose Solver.
 // Compiling builds the snow maps once (SnowModel); the parameters are
-// repose_angle_deg (the snow angle of repose) and spread_deg (the spread of
-// the snowfall directions), the ones a fit changes. A run returns
+// repose_angle_deg (the snow angle of repose), spread_deg (the spread of
+// the snowfall directions) and snowfall_scale (settled depth per depth of
+// snowfall), the ones a fit changes. A run returns
 //   fields:   snow_depth_final.<group> (m, per snow map, 0 outside its area),
 //             snow_probability.<group> (1), and for a scene with a ground
 //             group height_initial (the ground) and height_final (ground +

@@ -22,7 +22,7 @@ SnowStepResult step_snow(const SnowModel& model, const SnowParams& params, const
   const double t0 = state->time_s;
   const double t1 = std::min(t0 + model.time.step_s, model.time.duration_s);
   SnowStepResult result;
-  result.snowfall_depth_m = model.options.snowfall.depth_between_m(t0, std::max(t0, t1));
+  result.snowfall_depth_m = params.snowfall_scale * model.options.snowfall.depth_between_m(t0, std::max(t0, t1));
   accumulate_snow(probability, result.snowfall_depth_m, model.grid, state);
   result.stabilisation = stabilise(model, params, state);
   state->time_s = std::max(t0, t1);

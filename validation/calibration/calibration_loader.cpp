@@ -52,6 +52,7 @@ void solver_fields(Visitor& v, CalibrationSolverSpec& s) {
   v.integer("max_iterations", s.max_iterations, IntRange{1, 10000});
   v.seed("seed", s.seed);
   v.integer("threads", s.threads, IntRange{1, 64});
+  v.boolean("cross_validation", s.cross_validation);
   v.number("min_reciprocal_condition", s.min_reciprocal_condition, Range::open(0.0, 1.0));
 }
 
@@ -135,7 +136,7 @@ std::pair<std::string, std::string> split_parameter_name(const YamlValue& value)
   return {full.substr(0, dot), full.substr(dot + 1)};
 }
 
-ReferenceSpec read_reference(const Context& ctx, const YamlValue& value) {
+ReferenceSpec read_reference(const Context& ctx, const YamlValue& value, const std::string& field) {
   const YamlMap map = value.map({"data", "liggghts", "heuristic"});
   int count = 0;
   for (const char* key : {"data", "liggghts", "heuristic"}) count += map.has(key) ? 1 : 0;
@@ -148,7 +149,7 @@ ReferenceSpec read_reference(const Context& ctx, const YamlValue& value) {
     const std::vector<YamlValue> folders = data->is_list() ? data->list(1) : std::vector<YamlValue>{*data};
     for (const YamlValue& folder : folders) {
       const std::string dir = existing(ctx, folder, true, "a folder of a reference run (height_initial.npy, height_final.npy)");
-      for (const char* file : {"height_initial.npy", "height_final.npy"}) {
+      for (const std::string& file : {std::string("height_initial.npy"), field + ".npy"}) {
         if (!fs::exists(fs::path(dir) / file)) folder.fail(fmt::format("a folder holding {}", file), dir);
       }
       r.directories.push_back(dir);
@@ -171,13 +172,15 @@ ReferenceSpec read_reference(const Context& ctx, const YamlValue& value) {
 }
 
 CalibrationScene read_scene_entry(const Context& ctx, const YamlValue& value) {
-  const YamlMap map = value.map({"scene", "name", "role", "reference", "observables", "rmse_region_m"});
+  const YamlMap map = value.map({"scene", "name", "role", "reference", "observables", "rmse_region_m", "field"});
   CalibrationScene s;
   s.scene_path = existing(ctx, map.required("scene", "a scene file"), false, "a scene file");
   s.name = map.string_or("name", "");
+  s.field = map.string_or("field", s.field);
+  if (s.field.empty() || s.field.find('/') != std::string::npos) map.get("field")->fail("a field name (e.g. height_final)");
   if (auto role = map.get("role")) s.role = role->choice({"fit", "held_out"}) == 0 ? CalibrationScene::Role::kFit
                                                                                   : CalibrationScene::Role::kHeldOut;
-  s.reference = read_reference(ctx, map.required("reference", "a map with one of data, liggghts, heuristic"));
+  s.reference = read_reference(ctx, map.required("reference", "a map with one of data, liggghts, heuristic"), s.field);
   for (const YamlValue& o : map.required("observables", "a list of observables").list(1)) {
     s.observables.push_back(read_observable(o));
   }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <thread>
 
@@ -27,7 +28,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr std::size_t kRunMemoryLimit = 64;  // runs remembered before the memory is emptied
+
 }  // namespace
+
+struct CalibrationProblem::RunMemory {
+  std::mutex mutex;
+  std::map<std::pair<std::string, std::vector<double>>, Run> runs;
+};
 
 HeightField read_height_field(const std::string& path, const Grid& grid, const std::string& what) {
   // the header's shape is checked before any data is read (npy_io.h)
@@ -103,11 +111,12 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
     const auto solver = fitted.compile(s.scene);
     const Run run = solver->run(named_values(*solver, fitted.name(), ref), RunOptions{});
     s.initial = run.field("height_initial");
-    s.reference_final = run.field("height_final");
+    s.reference_final = run.field(s.entry.field);
     s.seed_series.push_back(run.series);
     return;
   }
-  if (ref.kind == ReferenceSpec::Kind::kLiggghts && !fs::exists(fs::path(ref.directories.front()) / "height_final.npy")) {
+  const std::string final_file = s.entry.field + ".npy";
+  if (ref.kind == ReferenceSpec::Kind::kLiggghts && !fs::exists(fs::path(ref.directories.front()) / final_file)) {
     const std::string& dir = ref.directories.front();
     report(progress, 0.0, fmt::format("LIGGGHTS reference of {} into {} (minutes)", s.entry.name, dir));
     fs::create_directories(dir);
@@ -118,7 +127,7 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
   bool costed = true;
   for (const std::string& dir : ref.directories) {
     s.seed_initial.push_back(read_height_field((fs::path(dir) / "height_initial.npy").string(), grid, "the reference's initial surface"));
-    s.seed_final.push_back(read_height_field((fs::path(dir) / "height_final.npy").string(), grid, "the reference's final surface"));
+    s.seed_final.push_back(read_height_field((fs::path(dir) / final_file).string(), grid, "the reference's final surface"));
     s.seed_series.push_back(read_reference_series(dir));
     const auto cost = read_run_cost(dir);
     costed = costed && cost.has_value();
@@ -166,7 +175,8 @@ void parallel_for(std::size_t count, int threads, const std::function<void(std::
 }  // namespace
 
 CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistry& registry, const ProgressFn& progress)
-    : spec_(std::move(spec)), registry_(&registry), solver_(registry.find(spec_.fitted_solver)) {
+    : spec_(std::move(spec)), registry_(&registry), solver_(registry.find(spec_.fitted_solver)),
+      memory_(std::make_shared<RunMemory>()) {
   if (solver_ == nullptr) {
     throw InputError(fmt::format("{}: parameters: {} names an unknown solver '{}' (known: {})",
                                  spec_.parameters.front().location, spec_.parameters.front().label(),
@@ -288,17 +298,31 @@ std::vector<double> CalibrationProblem::solver_values(const PreparedScene& scene
 }
 
 HeightField CalibrationProblem::run(const PreparedScene& scene, const std::vector<double>& values) const {
-  return run_whole(scene, values).field("height_final");
+  return run_whole(scene, values).field(scene.entry.field);
 }
 
 Run CalibrationProblem::run_whole(const PreparedScene& scene, const std::vector<double>& values) const {
-  return scene.solver->run(solver_values(scene, values), RunOptions{});
+  // the scene file and its reference folders fix the scene the solver was compiled for
+  std::string key = scene.entry.scene_path;
+  for (const std::string& dir : scene.entry.reference.directories) key += "\n" + dir;
+  const std::vector<double> solver_in = solver_values(scene, values);
+  const auto id = std::make_pair(key, solver_in);
+  {
+    std::lock_guard lock(memory_->mutex);
+    const auto it = memory_->runs.find(id);
+    if (it != memory_->runs.end()) return it->second;
+  }
+  Run run = scene.solver->run(solver_in, RunOptions{});
+  std::lock_guard lock(memory_->mutex);
+  if (memory_->runs.size() >= kRunMemoryLimit) memory_->runs.clear();
+  memory_->runs[id] = run;
+  return run;
 }
 
 std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScene& scene, const Run& run) const {
   std::vector<std::vector<double>> out;
   for (const ObservableSpec& o : scene.entry.observables) {
-    out.push_back(observe(o, scene.initial, run.field("height_final"), run.series));
+    out.push_back(observe(o, scene.initial, run.field(scene.entry.field), run.series));
   }
   return out;
 }
@@ -331,7 +355,7 @@ std::vector<std::vector<double>> CalibrationProblem::fit_residuals(const std::ve
   parallel_for(free_points.size() * fit.size(), threads, [&](std::size_t task) {
     const std::size_t point = task / fit.size(), scene = task % fit.size();
     const Run whole = run_whole(*fit[scene], values[point]);
-    parts[point][scene] = residuals(*fit[scene], whole.field("height_final"), whole.series);
+    parts[point][scene] = residuals(*fit[scene], whole.field(fit[scene]->entry.field), whole.series);
   });
   runs_ += static_cast<long long>(free_points.size() * fit.size());
   std::vector<std::vector<double>> out(free_points.size());

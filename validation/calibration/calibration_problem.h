@@ -80,7 +80,10 @@ class CalibrationProblem {
   const Solver& solver() const { return *solver_; }
   // The compiled solver's values for a calibration parameter set (SI).
   std::vector<double> solver_values(const PreparedScene& scene, const std::vector<double>& values) const;
-  // A run of the calibrated solver on the scene; its height_final.
+  // A run of the calibrated solver on the scene; its field the scene compares
+  // (height_final by default). Entries of one scene file and one reference
+  // that compare different fields (the snow model's maps) share the run: the
+  // fields of the last runs are remembered (runs are deterministic).
   HeightField run(const PreparedScene& scene, const std::vector<double>& values) const;
   // The same run, whole (its time series too).
   Run run_whole(const PreparedScene& scene, const std::vector<double>& values) const;
@@ -105,6 +108,8 @@ class CalibrationProblem {
   std::vector<std::size_t> free_;
   std::size_t fit_residual_count_ = 0;
   mutable long long runs_ = 0;
+  struct RunMemory;
+  std::shared_ptr<RunMemory> memory_;  // shared by copies (holding_out): the same runs
 };
 
 }  // namespace repose

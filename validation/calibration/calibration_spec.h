@@ -44,6 +44,10 @@ struct CalibrationScene {
   Role role = Role::kFit;
   ReferenceSpec reference;
   std::vector<ObservableSpec> observables;  // at least one
+  // The surface compared: the solver run's field of this name and the
+  // reference folder's NAME.npy (e.g. snow_depth_final.table for the snow
+  // model's depth on one snow map); its initial surface is height_initial either way.
+  std::string field = "height_final";
   // Region of the reported surface RMSE (default: whole grid).
   std::optional<CalibrationRegion> rmse_region;
 };
@@ -82,6 +86,9 @@ struct CalibrationSolverSpec {
   int max_iterations = 30;     // per start
   std::uint64_t seed = 1;      // scrambles the Halton starts
   int threads = 2;             // parallel heuristic runs (results do not depend on it)
+  // Leave-one-scene-out refits after the fit (cross_validation.h): one more
+  // fit per fit scene; false leaves them out (the held-out scenes still score the fit).
+  bool cross_validation = true;
   // Reciprocal condition number of the range-scaled Jacobian below which a
   // direction counts as undetermined.
   double min_reciprocal_condition = 1.0e-3;

@@ -113,12 +113,11 @@ void write_neighbor_settings(std::ostringstream& s, const DemSpec& dem, const Li
   s << "\n";
 }
 
-// Everything both scripts set after the box exists: contact law, materials,
-// time step, gravity, the floor and side walls, integration.
-void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d, const LiggghtsOptions& neighbor,
-                   bool settling) {
+}  // namespace
+
+std::string liggghts_contact_commands(const DemSpec& dem) {
+  std::ostringstream s;
   const auto n = [](double v) { return liggghts_number(v); };
-  write_neighbor_settings(s, dem, neighbor);
   s << "# materials (Young's modulus softened, as DEM practice does)"
     << (rough_floor(dem) ? "; type 2: the rough floor" : "")
     << (symmetry_walls(dem) ? fmt::format("; type {}: the frictionless symmetry walls", symmetry_type(dem)) : "")
@@ -136,11 +135,26 @@ void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d
     s << "fix m6 all property/global cohesionEnergyDensity peratomtypepair "
       << per_type_pair(dem, dem.cohesion_energy_density_j_m3, 0.0, 0.0) << "\n";
   }
+  // LIGGGHTS takes the sub-models in this order: model, tangential, cohesion, rolling_friction
   s << "\n# Hertz-Mindlin with tangential history and rolling friction\n"
-    << "pair_style gran model hertz tangential history rolling_friction " << rolling_model_name(dem)
-    << (cohesive ? " cohesion sjkr" : "") << "\n"
+    << "pair_style gran model hertz tangential history" << (cohesive ? " cohesion sjkr" : "")
+    << " rolling_friction " << rolling_model_name(dem) << "\n"
     << "pair_coeff * *\n"
-    << "timestep " << n(dem.time_step_s) << "\n"
+    << "timestep " << n(dem.time_step_s) << "\n";
+  return s.str();
+}
+
+std::string liggghts_wall_model(const DemSpec& dem) { return wall_model(dem); }
+
+namespace {
+
+// Everything both scripts set after the box exists: contact law, materials,
+// time step, gravity, the floor and side walls, integration.
+void write_physics(std::ostringstream& s, const DemSpec& dem, const DemDomain& d, const LiggghtsOptions& neighbor,
+                   bool settling) {
+  const auto n = [](double v) { return liggghts_number(v); };
+  write_neighbor_settings(s, dem, neighbor);
+  s << liggghts_contact_commands(dem)
     << "fix gravity all gravity " << n(dem.gravity_m_s2) << " vector " << gravity_vector_text(dem, settling) << "\n\n"
     << "# floor and side walls on the ground grid's edges\n";
   const std::string wall = "all wall/gran " + wall_model(dem) + " primitive type 1";

@@ -110,6 +110,13 @@ struct RunScript {
 // keyframed pose. Reads kBedRestartFile from the run directory.
 RunScript run_script(const Scene& scene, const RunScriptOptions& options = {});
 
+// The grains' materials, contact law (with sjkr cohesion when
+// dem.cohesion_energy_density_j_m3 > 0; none with walls) and time step: the
+// commands every script gives once the box exists (no gravity, no walls).
+std::string liggghts_contact_commands(const DemSpec& dem);
+// The grain-wall contact law of `fix wall/gran` (the grains' own, no cohesion).
+std::string liggghts_wall_model(const DemSpec& dem);
+
 // Round-trip exact, locale-independent number text ("%.17g" trimmed by std::to_chars).
 std::string liggghts_number(double v);
 

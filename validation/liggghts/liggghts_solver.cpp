@@ -8,6 +8,9 @@
 #include "models/core/base/error.h"
 #include "validation/liggghts/liggghts_reference.h"
 #include "validation/liggghts/liggghts_section.h"
+#include "validation/liggghts/snowfall_reference.h"
+#include "validation/liggghts/snowfall_script.h"
+#include "validation/liggghts/snowfall_section.h"
 #include "validation/particles/dem_section.h"
 
 namespace repose {
@@ -45,6 +48,13 @@ class CompiledLiggghts final : public CompiledSolver {
     const fs::path dir = temporary ? fs::temp_directory_path() / fmt::format("repose-liggghts-{}", ::getpid())
                                    : fs::path(options.output_dir);
     fs::create_directories(dir);
+    if (dem_of(scene_)->initial == DemSpec::Initial::kSnowfall) {
+      LiggghtsRunOptions snowfall = reference.run;
+      Run run = run_liggghts_snowfall(scene_, dir.string(), snowfall);
+      if (temporary) fs::remove_all(dir);
+      if (!temporary) run.files = {"liggghts_manifest.json", "snowfall.in", "log.liggghts"};
+      return run;
+    }
     const LiggghtsReferenceResult r = run_liggghts_reference(scene_, dir.string(), reference);
     if (temporary) fs::remove_all(dir);
 
@@ -75,7 +85,7 @@ class CompiledLiggghts final : public CompiledSolver {
 
 }  // namespace
 
-std::vector<SectionType> LiggghtsSolver::sections() const { return {dem_section_type(), liggghts_section_type()}; }
+std::vector<SectionType> LiggghtsSolver::sections() const { return {dem_section_type(), liggghts_section_type(), snowfall_section_type()}; }
 
 bool LiggghtsSolver::can_run(const Scene& scene, std::string* why) const {
   if (dem_of(scene) != nullptr) return true;
@@ -84,7 +94,11 @@ bool LiggghtsSolver::can_run(const Scene& scene, std::string* why) const {
 }
 
 std::unique_ptr<CompiledSolver> LiggghtsSolver::compile(const Scene& scene) const {
-  require_dem(scene, "LIGGGHTS");
+  const DemSpec& dem = require_dem(scene, "LIGGGHTS");
+  if (dem.initial == DemSpec::Initial::kSnowfall) {
+    snowfall_script(scene);  // the snowfall's checks (snow section, flat ground, grain count) before any run
+    return std::make_unique<CompiledLiggghts>(scene);
+  }
   run_script(scene, RunScriptOptions{});  // the script's checks (objects, column geometry) before any run
   return std::make_unique<CompiledLiggghts>(scene);
 }

@@ -93,8 +93,9 @@ void DemSection::write_yaml(YAML::Emitter& out) const { write_fields_map(out, sp
 std::string DemSection::summary() const {
   return fmt::format("dem: grains of {} m (spread {}), {}, time step {} s ({:.2g} of the Rayleigh time)",
                      spec.grain_radius_m, spec.radius_spread,
-                     spec.initial == DemSpec::Initial::kBed ? fmt::format("a bed {} m deep", spec.bed_depth_m)
-                                                            : std::string("a column"),
+                     spec.initial == DemSpec::Initial::kBed      ? fmt::format("a bed {} m deep", spec.bed_depth_m)
+                     : spec.initial == DemSpec::Initial::kColumn ? std::string("a column")
+                                                                 : std::string("snowfall"),
                      spec.time_step_s, spec.time_step_s / rayleigh_time_s(spec));
 }
 

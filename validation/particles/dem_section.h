@@ -9,7 +9,7 @@
 //     grain_radius_m: 0.002        # mean radius; radius_spread: relative half-width of a uniform spread
 //     youngs_modulus_pa: 5.0e6     # softened, as DEM practice does
 //     time_step_s: 1.0e-5          # refused above 20 % of the Rayleigh time of the smallest grain
-//     initial: bed                 # bed | column (column_shape slot | cylinder, column_width_m, column_height_m)
+//     initial: bed                 # bed | column | snowfall (LIGGGHTS) (column_shape slot | cylinder, column_width_m, column_height_m)
 //     ...                          # see DemSpec
 
 #include <memory>
@@ -48,6 +48,9 @@ struct DemSpec {
   // The grains the run starts from. bed: a settled layer of bed_depth_m over
   // the whole grid. column: a column of grains settled behind a gate that is
   // removed at t = 0 (column collapse, piles); bed_depth_m is then unused.
+  // snowfall: no grains at first; grains rain onto the scene's objects from
+  //   the directions of its snow: section and settle (LIGGGHTS only, the
+  //   cohesive snow reference: validation/liggghts/snowfall_script.h).
   //   slot: quasi-2-D; the column fills x from the grid's x_min edge to
   //     x_min + column_width_m across the grid's whole y extent (the grid's
   //     y extent is the gap between the two side walls); the gate is the
@@ -60,7 +63,7 @@ struct DemSpec {
   //     frictionless (no sliding or rolling friction), so they act as the
   //     column's two planes of symmetry. LIGGGHTS only; the rigid engines
   //     refuse it.
-  enum class Initial { kBed, kColumn };
+  enum class Initial { kBed, kColumn, kSnowfall };
   Initial initial = Initial::kBed;
   enum class ColumnShape { kSlot, kCylinder, kQuarterCylinder };
   ColumnShape column_shape = ColumnShape::kCylinder;
@@ -142,7 +145,7 @@ void dem_fields(Visitor& v, DemSpec& d) {
   v.number("gravity_m_s2", d.gravity_m_s2, Range::any());
   v.number("dump_interval_s", d.dump_interval_s, Range::any());
   using I = DemSpec::Initial;
-  v.choice("initial", d.initial, std::vector<std::pair<std::string, I>>{{"bed", I::kBed}, {"column", I::kColumn}});
+  v.choice("initial", d.initial, std::vector<std::pair<std::string, I>>{{"bed", I::kBed}, {"column", I::kColumn}, {"snowfall", I::kSnowfall}});
   using C = DemSpec::ColumnShape;
   v.choice("column_shape", d.column_shape,
            std::vector<std::pair<std::string, C>>{

@@ -127,6 +127,9 @@ RigidInputs rigid_inputs(const Scene& scene, const std::string& solver) {
                                  "only LIGGGHTS has here; {} needs column_shape: cylinder or slot",
                                  scene.source_path, solver));
   }
+  if (dem.initial == DemSpec::Initial::kSnowfall) {
+    throw InputError(fmt::format("{}: dem: initial: snowfall is LIGGGHTS only; {} needs bed or column", scene.source_path, solver));
+  }
   RigidInputs in{dem, scene.ground.grid, scene.objects, scene.time, scene.seed, std::nullopt, std::nullopt};
   if (dem.initial == DemSpec::Initial::kColumn) in.column = column_geometry(dem, scene);
   if (measures_impact(dem)) in.chute = chute_geometry(dem, scene);

@@ -30,6 +30,8 @@ TEST(SnowParams, RefusalNamesTheField) {
   EXPECT_NE(error_of(SnowParams{1.6, 0.1}).find("repose_angle_deg"), std::string::npos);
   EXPECT_NE(error_of(SnowParams{0.5, -1e-9}).find("spread_deg"), std::string::npos);
   EXPECT_NE(error_of(SnowParams{0.5, std::nan("")}).find("spread_deg"), std::string::npos);
+  EXPECT_NE(error_of(SnowParams{0.5, 0.1, 0.0}).find("snowfall_scale"), std::string::npos);
+  EXPECT_NE(error_of(SnowParams{0.5, 0.1, 101.0}).find("snowfall_scale"), std::string::npos);
 }
 
 }  // namespace

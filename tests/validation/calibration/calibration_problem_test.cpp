@@ -7,8 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-#include <unistd.h>
 #include <string>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 
@@ -125,6 +126,51 @@ TEST(CalibrationProblem, DataSeriesAreEachSeedsHeldMassCsvAveraged) {
   ASSERT_EQ(s.seed_series.size(), 2u);
   EXPECT_DOUBLE_EQ(s.reference_values[0][0], 0.5 * (0.05 + 0.15));  // linear between the samples, then the mean
   EXPECT_DOUBLE_EQ(s.reference_values[0][1], 0.5 * (0.1 + 0.3));
+// The snow model's parameters through the generic binding: two entries of
+// one scene compare two snow maps (field:), share their runs, and the fit
+// recovers the angle of repose a synthetic reference was made with.
+TEST(CalibrationProblem, SnowMapsAreComparedByFieldAndTheAngleIsRecovered) {
+  const fs::path root = fs::temp_directory_path() / ("repose_snow_field_" + std::to_string(::getpid()));
+  fs::create_directories(root);
+  const fs::path scene = root / "table.yaml";
+  std::ofstream(scene) << R"(name: tiny_table
+seed: 2
+time: {step_s: 1.0, duration_s: 6.0}
+ground: {extent_m: [0.4, 0.4], cell_size_m: 0.02, initial_height: {kind: flat, height_m: 0.0}}
+objects:
+  - {name: top, shape: box, half_extents_m: [0.1, 0.1, 0.01], motion: [{time_s: 0, position_m: [0, 0, 0.1]}]}
+snow:
+  groups: [{name: ground, ground: true}, {name: table, objects: [top]}]
+  spread_deg: 5
+  direction_count: 8
+  snowfall_rate_m_s: 0.01
+)";
+  const std::string entry = "  - scene: " + scene.string() + "\n    reference: {heuristic: {snow.repose_angle_deg: 40}}\n" +
+                            "    observables: [{kind: height_field}]\n";
+  const std::string yaml = "scenes:\n" + entry + "    name: top\n    field: snow_depth_final.table\n" + entry +
+                           "    name: ground\n    field: snow_depth_final.ground\n"
+                           "parameters:\n  - {name: snow.repose_angle_deg, initial: 25, bounds: [5, 85], step: 2}\n"
+                           "solver: {starts: 1, max_iterations: 20, threads: 1}\n";
+  const CalibrationProblem problem(load_calibration_from_string(yaml, root.string() + "/inline.yaml"), solver_registry());
+  ASSERT_EQ(problem.scenes().size(), 2u);
+  EXPECT_EQ(problem.scenes()[0].entry.field, "snow_depth_final.table");
+  // the reference's table snow is not its ground snow: the fields are told apart
+  EXPECT_GT((problem.scenes()[0].reference_final.heights() - problem.scenes()[1].reference_final.heights()).abs().maxCoeff(),
+            1e-3);
+  const CalibrationFit fit = fit_calibration(problem);
+  EXPECT_NEAR(fit.values[0] * 180.0 / 3.141592653589793, 40.0, 2.0);
+  EXPECT_LT(fit.final_cost, 1e-3 * fit.initial_cost);
+  // a data reference must hold the compared field
+  const fs::path folder = seed_folder(root, "seed1", 0.0, 0.0);
+  const std::string bad = "scenes:\n  - scene: " + scene.string() + "\n    field: snow_depth_final.table\n" +
+                          "    reference: {data: " + folder.string() + "}\n    observables: [{kind: height_field}]\n"
+                          "parameters:\n  - {name: snow.repose_angle_deg, initial: 25}\n";
+  try {
+    load_calibration_from_string(bad, root.string() + "/bad.yaml");
+    ADD_FAILURE() << "a reference without snow_depth_final.table.npy was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("snow_depth_final.table.npy"), std::string::npos) << e.what();
+  }
   fs::remove_all(root);
 }
 
