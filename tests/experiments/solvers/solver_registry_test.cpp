@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include "models/core/base/error.h"
 #include "models/core/config/scene_loader.h"
+#include "validation/particles/dem_section.h"
 
 namespace repose {
 namespace {
@@ -32,9 +34,20 @@ TEST(SolverRegistry, EveryShippedDemSceneCompilesForEachParticleEngine) {
     std::string why;
     if (!registry.get("liggghts").can_run(scene, &why)) continue;  // no dem: section
     ++dem_scenes;
+    // the snowfall reference is LIGGGHTS only: the rigid engines refuse it in one line naming the key
+    const bool liggghts_only = dem_of(scene)->initial == DemSpec::Initial::kSnowfall;
     for (const char* engine : {"bullet", "ode"}) {
       SCOPED_TRACE(entry.path().filename().string() + " --solver " + engine);
       const Solver& solver = registry.get(engine);
+      if (liggghts_only) {
+        try {
+          solver.compile(scene);
+          ADD_FAILURE() << "a snowfall scene was accepted";
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("dem: initial"), std::string::npos) << e.what();
+        }
+        continue;
+      }
       ASSERT_TRUE(solver.can_run(scene, &why)) << why;
       EXPECT_NE(solver.compile(scene), nullptr);
     }

@@ -126,6 +126,9 @@ TEST(CalibrationProblem, DataSeriesAreEachSeedsHeldMassCsvAveraged) {
   ASSERT_EQ(s.seed_series.size(), 2u);
   EXPECT_DOUBLE_EQ(s.reference_values[0][0], 0.5 * (0.05 + 0.15));  // linear between the samples, then the mean
   EXPECT_DOUBLE_EQ(s.reference_values[0][1], 0.5 * (0.1 + 0.3));
+  fs::remove_all(root);
+}
+
 // The snow model's parameters through the generic binding: two entries of
 // one scene compare two snow maps (field:), share their runs, and the fit
 // recovers the angle of repose a synthetic reference was made with.
