@@ -294,36 +294,25 @@ long bed_max_steps(const Scene& scene, const BedScriptOptions& options) {
   return 1 + chunk * chunks;
 }
 
-namespace {
-
-// The settling loop: run in chunks until the kinetic energy falls below the
-// threshold, then write the restart and the dump of the settled grains.
-void write_settle_loop(std::ostringstream& s, const DemSpec& dem, const BedScriptOptions& options, long chunk,
-                       long chunks) {
+void write_settle_loop(std::ostringstream& s, const DemSpec& dem, const SettleLoop& loop) {
   const auto n = [](double v) { return liggghts_number(v); };
   s << "# settle until the kinetic energy falls below the threshold\n"
     << "variable settle_ke equal ke\n"
     << "label settle_loop\n"
-    << "variable settle_i loop " << chunks << "\n"
-    << "run " << chunk << "\n"
+    << "variable settle_i loop " << loop.chunks << "\n"
+    << "run " << loop.chunk_steps << "\n"
     << "if \"${settle_ke} < " << n(dem.settle_kinetic_energy_j) << "\" then \"jump SELF settled\"\n"
     << "next settle_i\n"
     << "jump SELF settle_loop\n"
-    << "print \"" << kFailureMarker << ": the bed did not settle below " << n(dem.settle_kinetic_energy_j)
-    << " J within " << n(options.max_settle_time_s) << " s\"\n"
+    << "print \"" << kFailureMarker << ": the " << loop.what << " did not settle below " << n(dem.settle_kinetic_energy_j)
+    << " J within " << n(loop.max_settle_time_s) << " s\"\n"
     << "jump SELF finished\n"
     << "label settled\n"
     << "print \"" << kSettledMarker << "\"\n"
-    << "write_restart " << kBedRestartFile << "\n"
-    << "dump bed all custom 1 " << kBedDumpFile << " id type x y z radius\n"
-    << "dump_modify bed sort id\n"
-    << "run 0\n"
-    << "undump bed\n"
+    << loop.settled_commands
     << "print \"" << kCompleteMarker << "\"\n"
     << "label finished\n";
 }
-
-}  // namespace
 
 std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
   const DemSpec& dem = require_dem(scene, "LIGGGHTS");
@@ -369,7 +358,9 @@ std::string bed_script(const Scene& scene, const BedScriptOptions& options) {
     << "thermo " << std::max(1L, liggghts_steps(options.thermo_interval_s, dem.time_step_s)) << "\n"
     << "thermo_modify lost error norm no\n"
     << "run 1\nunfix ins\n\n";
-  write_settle_loop(s, dem, options, chunk, chunks);
+  const std::string settled = std::string("write_restart ") + kBedRestartFile + "\n" + "dump bed all custom 1 " +
+                              kBedDumpFile + " id type x y z radius\n" + "dump_modify bed sort id\nrun 0\nundump bed\n";
+  write_settle_loop(s, dem, SettleLoop{chunk, chunks, "bed", options.max_settle_time_s, settled});
   return s.str();
 }
 

@@ -10,6 +10,7 @@
 // Units: LIGGGHTS "units si", the same SI units as the scene.
 
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,19 @@ inline constexpr const char* kCompleteMarker = "REPOSE_COMPLETE";  // printed la
 inline constexpr const char* kBedRestartFile = "bed.restart";
 inline constexpr const char* kBedDumpFile = "bed.dump";
 inline constexpr const char* kDumpDirectory = "dumps";  // run dumps: dumps/dump.<step>.txt
+
+// The loop a bed or snowfall script settles its grains with: run in chunks
+// of chunk_steps until the kinetic energy falls below
+// dem.settle_kinetic_energy_j (after `chunks` chunks: a failure line naming
+// `what`), then settled_commands (write the restart, dump the grains).
+struct SettleLoop {
+  long chunk_steps = 1;
+  long chunks = 1;
+  std::string what;             // "bed", "snow": what did not settle
+  double max_settle_time_s = 0; // named in the failure line
+  std::string settled_commands;
+};
+void write_settle_loop(std::ostringstream& s, const DemSpec& dem, const SettleLoop& loop);
 
 // Requires scene.dem (InputError otherwise) and checks it (check_dem_spec).
 // A chute's block (dem.slope_deg > 0) settles under gravity along -z, so

@@ -167,26 +167,10 @@ void write_run_and_settle(std::ostringstream& s, const DemSpec& dem, const Snowf
     << "thermo " << p.settle_chunk_steps << "\n"
     << "thermo_modify lost error norm no\n"
     << "# grains enter, then the last ones land\n"
-    << "run " << p.insert_steps + p.landing_steps << "\n\n"
-    << "# settle until the kinetic energy falls below the threshold\n"
-    << "variable settle_ke equal ke\n"
-    << "label settle_loop\n"
-    << "variable settle_i loop " << p.max_settle_chunks << "\n"
-    << "run " << p.settle_chunk_steps << "\n"
-    << "if \"${settle_ke} < " << n(dem.settle_kinetic_energy_j) << "\" then \"jump SELF settled\"\n"
-    << "next settle_i\n"
-    << "jump SELF settle_loop\n"
-    << "print \"" << kFailureMarker << ": the snow did not settle below " << n(dem.settle_kinetic_energy_j)
-    << " J within " << n(o.max_settle_time_s) << " s\"\n"
-    << "jump SELF finished\n"
-    << "label settled\n"
-    << "print \"" << kSettledMarker << "\"\n"
-    << "dump snow all custom 1 " << kSnowfallDumpFile << " id type x y z radius\n"
-    << "dump_modify snow sort id\n"
-    << "run 0\n"
-    << "undump snow\n"
-    << "print \"" << kCompleteMarker << "\"\n"
-    << "label finished\n";
+    << "run " << p.insert_steps + p.landing_steps << "\n\n";
+  const std::string settled = std::string("dump snow all custom 1 ") + kSnowfallDumpFile +
+                              " id type x y z radius\ndump_modify snow sort id\nrun 0\nundump snow\n";
+  write_settle_loop(s, dem, SettleLoop{p.settle_chunk_steps, p.max_settle_chunks, "snow", o.max_settle_time_s, settled});
 }
 
 }  // namespace
