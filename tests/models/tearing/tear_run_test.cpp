@@ -13,19 +13,30 @@ namespace {
 
 using namespace repose::testing;
 
-// The twist (left grip -z, right +z) maps onto itself under x -> W - x,
-// z -> -z, and so do the uniform sheet and the notch in the middle column:
-// the tear must stay in that column.
-TEST(TearRun, AUniformSheetTearsStraightAlongItsNotchUnderTheTwist) {
+// A uniform 21-cell sheet notched in its middle column under the seed's
+// twist, and a run that stops when the tear is 24 mm deep.
+SheetModel notched_twisted_sheet() {
   SheetSpec spec = free_sheet_spec(0.042, 21);
   spec.damping_per_s = 2e3;
   spec.grips = seed_twist_grips(0.042, 0.042, 0.006, 0.006, 4.0);
   spec.notch_length_m = 0.004;
   spec.notch_x_m = 0.021;
-  const SheetModel model = uniform_sheet(spec);
+  return uniform_sheet(spec);
+}
+
+TearRunOptions stop_at_24_mm() {
   TearRunOptions options;
   options.duration_s = 0.02;
   options.stop_at_depth_m = 0.024;
+  return options;
+}
+
+// The twist (left grip -z, right +z) maps onto itself under x -> W - x,
+// z -> -z, and so do the uniform sheet and the notch in the middle column:
+// the tear must stay in that column.
+TEST(TearRun, AUniformSheetTearsStraightAlongItsNotchUnderTheTwist) {
+  const SheetModel model = notched_twisted_sheet();
+  TearRunOptions options = stop_at_24_mm();
   const TearRun run = run_tear(model, SheetParams{}, options);
   EXPECT_TRUE(run.path.holds_notch);
   EXPECT_GE(run.path.depth_m, 0.024 - 1e-12);
@@ -49,15 +60,8 @@ TEST(TearRun, AUniformSheetTearsStraightAlongItsNotchUnderTheTwist) {
 // the stop, has not reached it. Over ~55,000 steps a check every 1/200 of
 // them would stop on a multiple of ~277 steps and fail this.
 TEST(TearRun, StopsOnTheStepTheTearReachesTheDepth) {
-  SheetSpec spec = free_sheet_spec(0.042, 21);
-  spec.damping_per_s = 2e3;
-  spec.grips = seed_twist_grips(0.042, 0.042, 0.006, 0.006, 4.0);
-  spec.notch_length_m = 0.004;
-  spec.notch_x_m = 0.021;
-  const SheetModel model = uniform_sheet(spec);
-  TearRunOptions options;
-  options.duration_s = 0.02;
-  options.stop_at_depth_m = 0.024;
+  const SheetModel model = notched_twisted_sheet();
+  TearRunOptions options = stop_at_24_mm();
   const TearRun stopped = run_tear(model, SheetParams{}, options);
   ASSERT_GE(stopped.path.depth_m, 0.024 - 1e-12);
   ASSERT_GT(stopped.steps, 2);
