@@ -54,12 +54,26 @@ Manifest::Manifest(std::vector<std::string> command_line)
       start_(std::chrono::steady_clock::now()),
       build_(build_info()) {}
 
+namespace {
+
+// The resolved scene with every path inside the repository written relative
+// to it (mesh and contour files resolve to absolute paths when loaded, and
+// manifests under data/ are committed).
+std::string repository_relative_yaml(const Scene& scene) {
+  std::string text = scene_to_yaml(scene);
+  const std::string root = repository_root() + "/";
+  for (std::size_t at = text.find(root); at != std::string::npos; at = text.find(root, at)) text.erase(at, root.size());
+  return text;
+}
+
+}  // namespace
+
 void Manifest::set_scene(const Scene& scene) {
   scene_ = {{"path", repository_relative(scene.source_path)},
             {"sha256", sha256_hex_of_file(scene.source_path)},
             {"name", scene.name},
             {"seed", scene.seed},
-            {"resolved_yaml", scene_to_yaml(scene)}};
+            {"resolved_yaml", repository_relative_yaml(scene)}};
 }
 
 void Manifest::time_stage(const std::string& name, const std::function<void()>& stage) {

@@ -213,6 +213,25 @@ TEST(Cli, RunWritesManifestAndInitialHeights) {
   EXPECT_NE(stages.find("write_height_initial_npy"), std::string::npos) << stages;
 }
 
+// A run's manifest is committed with the reference data under data/: the
+// resolved scene names the mesh it loaded by its path in the repository, not
+// by the absolute path of the machine that ran it.
+TEST(Cli, TheManifestsResolvedSceneNamesRepositoryFilesRelativeToTheRepository) {
+  TempDir cwd;
+  const std::string mesh = std::string(REPOSE_SOURCE_DIR) + "/experiments/meshes/bucket.obj";
+  const fs::path scene_path = cwd.path / "mesh.yaml";
+  std::ofstream(scene_path) << "name: mesh_manifest\nseed: 1\ntime: {step_s: 0.05, duration_s: 0.1}\n"
+                               "ground: {extent_m: [0.2, 0.1], cell_size_m: 0.01, initial_height: {kind: flat, "
+                               "height_m: 0.02}, material: sand}\n"
+                               "objects:\n  - {name: bucket, shape: mesh, mesh: " + mesh +
+                               ", motion: [{time_s: 0, position_m: [0.1, 0.05, 0.1]}]}\n";
+  const Result r = run_repose({"run", scene_path.string(), "--out", "out"}, cwd.path);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string manifest = read_all(cwd.path / "out" / "manifest.json");
+  EXPECT_NE(manifest.find("mesh: experiments/meshes/bucket.obj"), std::string::npos) << manifest;
+  EXPECT_EQ(manifest.find(std::string(REPOSE_SOURCE_DIR) + "/experiments"), std::string::npos) << manifest;
+}
+
 TEST(Cli, RunRefusesNonEmptyFolderUnlessForced) {
   TempDir cwd;
   const fs::path scene = write_scene(cwd.path);
