@@ -35,6 +35,9 @@ Underside underside_of(const SpanMap& map, const Grid& ground, double top_m);
 
 // Moves the ground above the spans' tops onto them (see above); returns
 // the volume moved (m^3). Cells that changed join the erosion memory.
-double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state);
+// motion_m: the object's move this substep; ground scooped while it moves
+// sideways is pushed back into it (ground_contact.cpp: push_back_into).
+double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state,
+                      const Eigen::Vector3d& motion_m = Eigen::Vector3d::Zero());
 
 }  // namespace repose

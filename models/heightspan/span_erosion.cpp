@@ -75,22 +75,49 @@ struct Columns {
 
 struct PassRule {
   double max_dh_m, sigma, tolerance_m, near_m;
+  double slide_cap_m;  // a support drop counts for sharing a slide at most this (one cell: 45 deg)
+  double dust_m;       // material below this (1e-12 cell) is round-off: it does not move
 };
+
+// The solid surface a landing surface offers: a span's top, the ground's
+// height; nothing under air.
+double support_of(const Columns& cols, const Surface& to) {
+  if (to.kind == Kind::kSpan) return cols.map.spans[static_cast<std::size_t>(to.index)].top_m;
+  if (to.kind == Kind::kGround) return to.level_m;
+  return -kInf;
+}
 
 void add_span_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
   const SpanMap& map = cols.map;
   const std::int64_t c = map.cell(i, j);
   for (int k = 0; k < map.count(c); ++k) {
     const Span& s = map.begin(c)[k];
-    if (!(s.material_m > 0.0)) continue;
+    if (!(s.material_m > rule.dust_m)) continue;  // round-off left by a slide stays put
     const Surface from{Kind::kSpan, map.first[c] + k, s.level_m(), kInf};
+    const std::size_t first = fluxes->size();
+    double slide_total = 0.0;  // over the neighbours whose support drops more than the repose slope
     for (const auto& o : kNeighbours) {
       Surface to;
       if (!cols.landing(i + o[0], j + o[1], from.level_m, &to)) continue;
       const double excess = from.level_m - to.level_m - rule.max_dh_m;
       if (!(excess > rule.tolerance_m)) continue;
+      // (a layer thinner than the tolerance is round-off, left where it is as by the slope rule)
+      const double steep = s.material_m > rule.tolerance_m
+                               ? std::min(s.top_m - support_of(cols, to) - rule.max_dh_m, rule.slide_cap_m)
+                               : 0.0;
       if (to.kind == Kind::kGround && s.top_m - to.level_m > rule.near_m) to.kind = Kind::kAir;  // falls
-      fluxes->push_back({from, to, rule.sigma * excess, from.level_m});
+      // release_z_m doubles as the slide weight until the span's fluxes are complete
+      fluxes->push_back({from, to, rule.sigma * excess, steep > rule.tolerance_m ? steep : 0.0});
+      if (steep > rule.tolerance_m) slide_total += steep;
+    }
+    // unsupported: the span's own surface falls more steeply than the repose slope towards these
+    // neighbours, so none of its material can rest on it; all of it slides, shared by steepness
+    for (std::size_t f = first; f < fluxes->size(); ++f) {
+      Flux& flux = (*fluxes)[f];
+      if (slide_total > 0.0 && flux.release_z_m > 0.0) {
+        flux.amount_m = std::max(flux.amount_m, s.material_m * flux.release_z_m / slide_total);
+      }
+      flux.release_z_m = from.level_m;
     }
   }
 }
@@ -213,7 +240,7 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   const Grid& g = model.ground.grid;
   const Material& m = params.materials.front();  // the spans carry the ground's base material
   const PassRule rule{g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, kErosionToleranceFraction * g.cell_size_m,
-                      model.options.near_ground_cells * g.cell_size_m};
+                      model.options.near_ground_cells * g.cell_size_m, g.cell_size_m, 1e-12 * g.cell_size_m};
   const Columns cols{map, ground->height, ground_offset(map.grid, g)};
   Exchange exchange(model.ground, map, ground, cols);
   // the columns with spans and one ring around them: nothing else can exchange with a span
