@@ -19,24 +19,8 @@ namespace repose {
 namespace {
 
 constexpr int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
-enum class Kind : std::uint8_t { kSpan, kGround, kAir };
-
-// Where material lies or lands. index: a span's index in map.spans, else
-// the column's local index (ring included: see Columns::local).
-struct Surface {
-  Kind kind = Kind::kSpan;
-  std::int64_t index = 0;
-  double level_m = 0.0;
-  double room_m = kInf;  // highest level it may reach
-};
-
-struct Flux {
-  Surface from, to;
-  double amount_m;
-  double release_z_m;  // air: the height it leaves at
-};
+using namespace span_erosion_detail;
 
 // The map's columns and the ground under them, one ring of cells beyond.
 struct Columns {
@@ -139,6 +123,9 @@ void add_ground_fluxes(const Columns& cols, const PassRule& rule, int i, int j, 
 }
 
 // The surfaces' amounts and one pass's sums: what each gives and takes.
+// The sums live in the object's scratch (SpanErosionScratch) and only the
+// entries a pass touched are cleared again, so a call costs what moves, not
+// the map's size.
 struct Exchange {
   const GroundModel& model;
   SpanMap& map;
@@ -146,11 +133,20 @@ struct Exchange {
   const Columns& cols;
   std::size_t n_spans, n_local;
   // per surface: outflow, then inflow; spans first, then the columns' ground (and air)
-  std::vector<double> out, in, released_m, release_z;
+  std::vector<double>& out;
+  std::vector<double>& in;
+  std::vector<double>& released_m;
+  std::vector<double>& release_z;
+  std::vector<std::size_t>& released_at;  // the columns with released material, in the order they got it
 
-  Exchange(const GroundModel& m, SpanMap& sm, GroundState* g, const Columns& c)
+  Exchange(const GroundModel& m, SpanMap& sm, GroundState* g, const Columns& c, SpanErosionScratch* scratch)
       : model(m), map(sm), ground(g), cols(c), n_spans(sm.spans.size()), n_local(c.local_count()),
-        out(n_spans + n_local), in(n_spans + n_local), released_m(n_local), release_z(n_local, -kInf) {}
+        out(scratch->out), in(scratch->in), released_m(scratch->released_m), release_z(scratch->release_z),
+        released_at(scratch->released_at) {
+    if (out.size() < n_spans + n_local) out.resize(n_spans + n_local, 0.0), in.resize(n_spans + n_local, 0.0);
+    if (released_m.size() < n_local) released_m.resize(n_local, 0.0), release_z.resize(n_local, -kInf);
+    released_at.clear();
+  }
 
   std::size_t key(const Surface& s) const {
     return static_cast<std::size_t>(s.kind == Kind::kSpan ? s.index : static_cast<std::int64_t>(n_spans) + s.index);
@@ -166,8 +162,10 @@ struct Exchange {
 
   // a surface gives at most what it has, takes at most its room
   void scale(std::vector<Flux>* fluxes) {
-    std::fill(out.begin(), out.end(), 0.0);
-    std::fill(in.begin(), in.end(), 0.0);
+    for (const Flux& f : *fluxes) {
+      out[key(f.from)] = 0.0;
+      if (f.to.kind != Kind::kAir) in[key(f.to)] = 0.0;
+    }
     for (const Flux& f : *fluxes) out[key(f.from)] += f.amount_m;
     for (Flux& f : *fluxes) {
       const double has = amount_of(f.from), total = out[key(f.from)];
@@ -192,6 +190,7 @@ struct Exchange {
         ground->erosion.touch(ground_cell(f.from.index));
       }
       if (f.to.kind == Kind::kAir) {  // released after the passes
+        if (!(released_m[f.to.index] > 0.0)) released_at.push_back(static_cast<std::size_t>(f.to.index));
         released_m[f.to.index] += f.amount_m;
         release_z[f.to.index] = std::max(release_z[f.to.index], f.release_z_m);
         result->to_particles_m3 += f.amount_m * area;
@@ -205,15 +204,18 @@ struct Exchange {
     }
   }
 
-  // one particle per column the material left into
+  // one particle per column the material left into, in the columns' order; the sums are cleared
   void release(const Eigen::Vector3d& velocity_m_s, double spread_m_s, ParticleSystem* particles,
-               std::mt19937_64* rng) const {
-    for (std::size_t l = 0; l < n_local; ++l) {
-      if (!(released_m[l] > 0.0)) continue;
+               std::mt19937_64* rng) {
+    std::sort(released_at.begin(), released_at.end());
+    for (const std::size_t l : released_at) {
       const int i = static_cast<int>(l % cols.stride()) - 1, j = static_cast<int>(l / cols.stride()) - 1;
       const Eigen::Vector3d at(map.grid.centre_x(i), map.grid.centre_y(j), release_z[l]);
       particles->release({at, velocity_m_s, released_m[l] * model.grid.cell_area_m2()}, spread_m_s, rng);
+      released_m[l] = 0.0;
+      release_z[l] = -kInf;
     }
+    released_at.clear();
   }
 };
 
@@ -242,10 +244,10 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   const PassRule rule{g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, kErosionToleranceFraction * g.cell_size_m,
                       model.options.near_ground_cells * g.cell_size_m, g.cell_size_m, 1e-12 * g.cell_size_m};
   const Columns cols{map, ground->height, ground_offset(map.grid, g)};
-  Exchange exchange(model.ground, map, ground, cols);
+  Exchange exchange(model.ground, map, ground, cols, &spans->erosion_scratch);
   // the columns with spans and one ring around them: nothing else can exchange with a span
   const auto [i0, i1, j0, j1] = span_columns(map);
-  std::vector<Flux> fluxes;
+  std::vector<Flux>& fluxes = spans->erosion_scratch.fluxes;
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {

@@ -27,7 +27,10 @@
 // ground around it are examined; En passes of the spans' material (the
 // ground's base material, heightspan_model.h).
 
+#include <cstdint>
+#include <limits>
 #include <random>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -38,6 +41,37 @@ struct HeightSpanModel;
 struct ObjectSpans;
 struct GroundState;
 struct ParticleSystem;
+
+namespace span_erosion_detail {
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+enum class Kind : std::uint8_t { kSpan, kGround, kAir };
+
+// Where material lies or lands. index: a span's index in map.spans, else
+// the column's local index (ring included: see Columns::local).
+struct Surface {
+  Kind kind = Kind::kSpan;
+  std::int64_t index = 0;
+  double level_m = 0.0;
+  double room_m = kInf;  // highest level it may reach
+};
+
+struct Flux {
+  Surface from, to;
+  double amount_m;
+  double release_z_m;  // air: the height it leaves at
+};
+
+}  // namespace span_erosion_detail
+
+// What erode_spans reuses from call to call (no allocation per step once
+// grown); its contents between calls mean nothing.
+struct SpanErosionScratch {
+  std::vector<span_erosion_detail::Flux> fluxes;
+  std::vector<double> out, in, released_m, release_z;
+  std::vector<std::size_t> released_at;
+};
 
 struct SpanErosionResult {
   int passes = 0;
