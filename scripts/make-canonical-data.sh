@@ -79,6 +79,11 @@ for seed in "${seeds[@]}"; do
   order+=("ref_scoop/seed$seed")
 done
 for seed in "${seeds[@]}"; do order+=("ref_scoop_shallow/seed$seed" "ref_scoop_bullet/seed$seed"); done
+# the coarse-grain rungs of the scoop's ladder (grains 1.5 times larger): one bed per engine
+scenes[ref_scoop_coarse/seed1]=experiments/scenes/ref_scoop_coarse.yaml
+scenes[ref_scoop_coarse_bullet/seed1]=experiments/scenes/ref_scoop_coarse.yaml
+solvers[ref_scoop_coarse_bullet/seed1]=bullet
+order+=(ref_scoop_coarse/seed1 ref_scoop_coarse_bullet/seed1)
 # the cohesive DEM snowfall references of the snow calibration (issue 13):
 # the fit scene (a table top and a step) and the held-out one (a house under
 # an overhanging roof), each on three seeds, at three cohesion levels

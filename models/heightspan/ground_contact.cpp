@@ -1,6 +1,7 @@
 #include "models/heightspan/ground_contact.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -39,9 +40,53 @@ Underside underside_of(const SpanMap& map, const Grid& ground, double top_m) {
   return u;
 }
 
-double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state) {
+namespace {
+
+// The cell step opposite to the object's horizontal motion along its main
+// axis (0, 0 when it does not move sideways).
+std::array<int, 2> back_step(const Eigen::Vector3d& motion_m) {
+  if (!(std::max(std::abs(motion_m.x()), std::abs(motion_m.y())) > 0.0)) return {0, 0};
+  if (std::abs(motion_m.x()) >= std::abs(motion_m.y())) return {motion_m.x() > 0.0 ? -1 : 1, 0};
+  return {0, motion_m.y() > 0.0 ? -1 : 1};
+}
+
+// Puts `amount` (m of height) scooped at map cell (i, j) onto its span k
+// with its surface at most `level`: it is pushed back into the object, away
+// from the way it moves, as far as the spans behind are reachable at that
+// level (no solid in the way), and fills them from the farthest forward, each
+// up to `level` (and the span above it); what is left stays on span k.
+void push_back_into(SpanMap* map, int i, int j, int k, double level, double amount, std::array<int, 2> step) {
+  struct Room {
+    Span* span;
+    double ceiling_m;  // the level it may be filled to
+  };
+  std::array<Room, 512> chain;
+  std::size_t n = 0;
+  for (int ci = i + step[0], cj = j + step[1];
+       (step[0] != 0 || step[1] != 0) && n < chain.size() && map->grid.contains(ci, cj);
+       ci += step[0], cj += step[1]) {
+    const std::int64_t c = map->cell(ci, cj);
+    const int under = span_under(*map, c, level);
+    if (under < 0) break;  // under the object or beyond it: nothing to lie on at this level
+    Span* s = map->begin(c) + under;
+    if (s->top_m > level) break;  // the level is inside its solid: a wall
+    const double ceiling = under + 1 < map->count(c) ? std::min(level, s[1].bottom_m) : level;
+    chain[n++] = {s, ceiling};
+  }
+  for (std::size_t m = n; m-- > 0 && amount > 0.0;) {
+    const double put = std::min(std::max(0.0, chain[m].ceiling_m - chain[m].span->level_m()), amount);
+    chain[m].span->material_m += put;
+    amount -= put;
+  }
+  map->begin(map->cell(i, j))[k].material_m += amount;
+}
+
+}  // namespace
+
+double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state, const Eigen::Vector3d& motion_m) {
   const Grid& g = model.grid;
   const CellOffset off = ground_offset(map->grid, g);
+  const std::array<int, 2> back = back_step(motion_m);
   double moved = 0.0;
   for (int j = 0; j < map->grid.ny; ++j) {
     for (int i = 0; i < map->grid.nx; ++i) {
@@ -56,7 +101,8 @@ double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state
       auto piece = [&](double lo, double hi) { return std::max(0.0, std::min(h, hi) - std::max(lo, 0.0)); };
       for (int k = 0; k < n; ++k) {
         const double gap_top = k + 1 < n ? s[k + 1].bottom_m : std::numeric_limits<double>::infinity();
-        s[k].material_m += piece(s[k].top_m, gap_top);                                // scooped
+        const double scooped = piece(s[k].top_m, gap_top);
+        if (scooped > 0.0) push_back_into(map, i, j, k, std::min(h, gap_top), scooped, back);
         if (k + 1 < n) s[k + 1].material_m += piece(s[k + 1].bottom_m, s[k + 1].top_m);  // out of the solid
       }
       const double left = std::clamp(s[0].top_m, 0.0, h);

@@ -8,6 +8,15 @@
 //     scoops it (a bucket pressed into sand or dragged through it fills);
 //     ground reaching into a higher span's solid is pushed onto that span's
 //     top (material never lies inside the object);
+//     While the object moves sideways, what it scoops does not stay on the
+//     span where it came in: it is pushed back into the object, away from
+//     the motion, along the cells behind (as far as no solid stands in the
+//     way at its level), filling them from the farthest forward, each up to
+//     the level it came in at (the ground's height there); what finds no
+//     room stays where it came in. So a dragged bucket fills from its back,
+//     as the DEM's grains are rammed in by those behind them, rather than
+//     heaping at its lip (departure: the paper leaves the material on the
+//     span that met it). Along the motion's main axis (x or y) only;
 //   - what is left between the lowest span's bottom and top is the ground
 //     model's intersection, compressed and displaced as the ground model
 //     does (models/ground/displacement.h), by the caller.
@@ -35,6 +44,9 @@ Underside underside_of(const SpanMap& map, const Grid& ground, double top_m);
 
 // Moves the ground above the spans' tops onto them (see above); returns
 // the volume moved (m^3). Cells that changed join the erosion memory.
-double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state);
+// motion_m: the object's move this substep; ground scooped while it moves
+// sideways is pushed back into it (ground_contact.cpp: push_back_into).
+double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state,
+                      const Eigen::Vector3d& motion_m = Eigen::Vector3d::Zero());
 
 }  // namespace repose

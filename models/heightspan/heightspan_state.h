@@ -9,6 +9,7 @@
 
 #include "models/ground/ground_state.h"
 #include "models/heightspan/particles.h"
+#include "models/heightspan/span_erosion.h"
 #include "models/heightspan/span_map.h"
 #include "models/heightspan/span_peeler.h"
 
@@ -19,6 +20,7 @@ struct HeightSpanModel;
 struct ObjectSpans {
   SpanMap map;
   Pose pose;  // the object's pose the map was built for
+  SpanErosionScratch erosion_scratch;  // reused by erode_spans
 };
 
 struct HeightSpanState {

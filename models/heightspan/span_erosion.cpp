@@ -19,24 +19,8 @@ namespace repose {
 namespace {
 
 constexpr int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
-enum class Kind : std::uint8_t { kSpan, kGround, kAir };
-
-// Where material lies or lands. index: a span's index in map.spans, else
-// the column's local index (ring included: see Columns::local).
-struct Surface {
-  Kind kind = Kind::kSpan;
-  std::int64_t index = 0;
-  double level_m = 0.0;
-  double room_m = kInf;  // highest level it may reach
-};
-
-struct Flux {
-  Surface from, to;
-  double amount_m;
-  double release_z_m;  // air: the height it leaves at
-};
+using namespace span_erosion_detail;
 
 // The map's columns and the ground under them, one ring of cells beyond.
 struct Columns {
@@ -75,22 +59,49 @@ struct Columns {
 
 struct PassRule {
   double max_dh_m, sigma, tolerance_m, near_m;
+  double slide_cap_m;  // a support drop counts for sharing a slide at most this (one cell: 45 deg)
+  double dust_m;       // material below this (1e-12 cell) is round-off: it does not move
 };
+
+// The solid surface a landing surface offers: a span's top, the ground's
+// height; nothing under air.
+double support_of(const Columns& cols, const Surface& to) {
+  if (to.kind == Kind::kSpan) return cols.map.spans[static_cast<std::size_t>(to.index)].top_m;
+  if (to.kind == Kind::kGround) return to.level_m;
+  return -kInf;
+}
 
 void add_span_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
   const SpanMap& map = cols.map;
   const std::int64_t c = map.cell(i, j);
   for (int k = 0; k < map.count(c); ++k) {
     const Span& s = map.begin(c)[k];
-    if (!(s.material_m > 0.0)) continue;
+    if (!(s.material_m > rule.dust_m)) continue;  // round-off left by a slide stays put
     const Surface from{Kind::kSpan, map.first[c] + k, s.level_m(), kInf};
+    const std::size_t first = fluxes->size();
+    double slide_total = 0.0;  // over the neighbours whose support drops more than the repose slope
     for (const auto& o : kNeighbours) {
       Surface to;
       if (!cols.landing(i + o[0], j + o[1], from.level_m, &to)) continue;
       const double excess = from.level_m - to.level_m - rule.max_dh_m;
       if (!(excess > rule.tolerance_m)) continue;
+      // (a layer thinner than the tolerance is round-off, left where it is as by the slope rule)
+      const double steep = s.material_m > rule.tolerance_m
+                               ? std::min(s.top_m - support_of(cols, to) - rule.max_dh_m, rule.slide_cap_m)
+                               : 0.0;
       if (to.kind == Kind::kGround && s.top_m - to.level_m > rule.near_m) to.kind = Kind::kAir;  // falls
-      fluxes->push_back({from, to, rule.sigma * excess, from.level_m});
+      // release_z_m doubles as the slide weight until the span's fluxes are complete
+      fluxes->push_back({from, to, rule.sigma * excess, steep > rule.tolerance_m ? steep : 0.0});
+      if (steep > rule.tolerance_m) slide_total += steep;
+    }
+    // unsupported: the span's own surface falls more steeply than the repose slope towards these
+    // neighbours, so none of its material can rest on it; all of it slides, shared by steepness
+    for (std::size_t f = first; f < fluxes->size(); ++f) {
+      Flux& flux = (*fluxes)[f];
+      if (slide_total > 0.0 && flux.release_z_m > 0.0) {
+        flux.amount_m = std::max(flux.amount_m, s.material_m * flux.release_z_m / slide_total);
+      }
+      flux.release_z_m = from.level_m;
     }
   }
 }
@@ -112,6 +123,9 @@ void add_ground_fluxes(const Columns& cols, const PassRule& rule, int i, int j, 
 }
 
 // The surfaces' amounts and one pass's sums: what each gives and takes.
+// The sums live in the object's scratch (SpanErosionScratch) and only the
+// entries a pass touched are cleared again, so a call costs what moves, not
+// the map's size.
 struct Exchange {
   const GroundModel& model;
   SpanMap& map;
@@ -119,11 +133,20 @@ struct Exchange {
   const Columns& cols;
   std::size_t n_spans, n_local;
   // per surface: outflow, then inflow; spans first, then the columns' ground (and air)
-  std::vector<double> out, in, released_m, release_z;
+  std::vector<double>& out;
+  std::vector<double>& in;
+  std::vector<double>& released_m;
+  std::vector<double>& release_z;
+  std::vector<std::size_t>& released_at;  // the columns with released material, in the order they got it
 
-  Exchange(const GroundModel& m, SpanMap& sm, GroundState* g, const Columns& c)
+  Exchange(const GroundModel& m, SpanMap& sm, GroundState* g, const Columns& c, SpanErosionScratch* scratch)
       : model(m), map(sm), ground(g), cols(c), n_spans(sm.spans.size()), n_local(c.local_count()),
-        out(n_spans + n_local), in(n_spans + n_local), released_m(n_local), release_z(n_local, -kInf) {}
+        out(scratch->out), in(scratch->in), released_m(scratch->released_m), release_z(scratch->release_z),
+        released_at(scratch->released_at) {
+    if (out.size() < n_spans + n_local) out.resize(n_spans + n_local, 0.0), in.resize(n_spans + n_local, 0.0);
+    if (released_m.size() < n_local) released_m.resize(n_local, 0.0), release_z.resize(n_local, -kInf);
+    released_at.clear();
+  }
 
   std::size_t key(const Surface& s) const {
     return static_cast<std::size_t>(s.kind == Kind::kSpan ? s.index : static_cast<std::int64_t>(n_spans) + s.index);
@@ -139,8 +162,10 @@ struct Exchange {
 
   // a surface gives at most what it has, takes at most its room
   void scale(std::vector<Flux>* fluxes) {
-    std::fill(out.begin(), out.end(), 0.0);
-    std::fill(in.begin(), in.end(), 0.0);
+    for (const Flux& f : *fluxes) {
+      out[key(f.from)] = 0.0;
+      if (f.to.kind != Kind::kAir) in[key(f.to)] = 0.0;
+    }
     for (const Flux& f : *fluxes) out[key(f.from)] += f.amount_m;
     for (Flux& f : *fluxes) {
       const double has = amount_of(f.from), total = out[key(f.from)];
@@ -165,6 +190,7 @@ struct Exchange {
         ground->erosion.touch(ground_cell(f.from.index));
       }
       if (f.to.kind == Kind::kAir) {  // released after the passes
+        if (!(released_m[f.to.index] > 0.0)) released_at.push_back(static_cast<std::size_t>(f.to.index));
         released_m[f.to.index] += f.amount_m;
         release_z[f.to.index] = std::max(release_z[f.to.index], f.release_z_m);
         result->to_particles_m3 += f.amount_m * area;
@@ -178,15 +204,18 @@ struct Exchange {
     }
   }
 
-  // one particle per column the material left into
+  // one particle per column the material left into, in the columns' order; the sums are cleared
   void release(const Eigen::Vector3d& velocity_m_s, double spread_m_s, ParticleSystem* particles,
-               std::mt19937_64* rng) const {
-    for (std::size_t l = 0; l < n_local; ++l) {
-      if (!(released_m[l] > 0.0)) continue;
+               std::mt19937_64* rng) {
+    std::sort(released_at.begin(), released_at.end());
+    for (const std::size_t l : released_at) {
       const int i = static_cast<int>(l % cols.stride()) - 1, j = static_cast<int>(l / cols.stride()) - 1;
       const Eigen::Vector3d at(map.grid.centre_x(i), map.grid.centre_y(j), release_z[l]);
       particles->release({at, velocity_m_s, released_m[l] * model.grid.cell_area_m2()}, spread_m_s, rng);
+      released_m[l] = 0.0;
+      release_z[l] = -kInf;
     }
+    released_at.clear();
   }
 };
 
@@ -213,12 +242,12 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   const Grid& g = model.ground.grid;
   const Material& m = params.materials.front();  // the spans carry the ground's base material
   const PassRule rule{g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, kErosionToleranceFraction * g.cell_size_m,
-                      model.options.near_ground_cells * g.cell_size_m};
+                      model.options.near_ground_cells * g.cell_size_m, g.cell_size_m, 1e-12 * g.cell_size_m};
   const Columns cols{map, ground->height, ground_offset(map.grid, g)};
-  Exchange exchange(model.ground, map, ground, cols);
+  Exchange exchange(model.ground, map, ground, cols, &spans->erosion_scratch);
   // the columns with spans and one ring around them: nothing else can exchange with a span
   const auto [i0, i1, j0, j1] = span_columns(map);
-  std::vector<Flux> fluxes;
+  std::vector<Flux>& fluxes = spans->erosion_scratch.fluxes;
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {

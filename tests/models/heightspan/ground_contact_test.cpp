@@ -71,5 +71,50 @@ TEST(GroundContact, GroundReachingIntoAHigherSpanGoesOntoItsTop) {
   testing::expect_spans_valid(map, "rack");
 }
 
+// The x of the centre of the material on a map's spans.
+double material_centre_x(const SpanMap& map) {
+  double sum = 0.0, sum_x = 0.0;
+  for (int j = 0; j < map.grid.ny; ++j) {
+    for (int i = 0; i < map.grid.nx; ++i) {
+      const std::int64_t c = map.cell(i, j);
+      for (int k = 0; k < map.count(c); ++k) {
+        sum += map.begin(c)[k].material_m;
+        sum_x += map.begin(c)[k].material_m * map.grid.centre_x(i);
+      }
+    }
+  }
+  return sum_x / sum;
+}
+
+TEST(GroundContact, GroundScoopedWhileMovingSidewaysIsPushedToTheBackNeverAboveItsLevel) {
+  // an upright bucket (centre x = 0.1) with its floor's top at 2 cm; the bed is 3 cm
+  // deep over the bucket's front half (x > 0.1) and 2 cm behind: 1 cm to scoop in front
+  for (const double dx : {0.0, 0.001}) {
+    Scene s = bed_scene(40, 40, 0.005, 0.02, {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.1, 0.1, 0.04)})}, 1);
+    const HeightSpanModel model = build_heightspan_model(s);
+    HeightSpanState state = make_heightspan_state(model, make_initial_height(s));
+    for (int j = 0; j < 40; ++j) {
+      for (int i = 20; i < 40; ++i) state.ground.height.at(i, j) = 0.03;
+    }
+    const double before = accounted_m3(state);
+    SpanMap& map = state.held[0].map;
+    const double moved = take_up_ground(model.ground, &map, &state.ground, Eigen::Vector3d(dx, 0.0, 0.0));
+    SCOPED_TRACE(dx);
+    EXPECT_GT(moved, 0.0);
+    EXPECT_NEAR(map.material_m3(), moved, 1e-15);
+    EXPECT_NEAR(accounted_m3(state), before, 1e-15);
+    double top_level = 0.0;
+    for (const Span& sp : map.spans) {
+      if (sp.material_m > 0.0) top_level = std::max(top_level, sp.level_m());
+    }
+    EXPECT_LE(top_level, 0.03 + 1e-12);
+    if (dx == 0.0) {
+      EXPECT_GT(material_centre_x(map), 0.105);  // stays where it was scooped
+    } else {
+      EXPECT_LT(material_centre_x(map), 0.095);  // pushed to the back, away from the motion
+    }
+  }
+}
+
 }  // namespace
 }  // namespace repose

@@ -1,5 +1,6 @@
 #include "models/heightspan/heightspan_step.h"
 
+#include <cmath>
 #include <random>
 
 #include <fmt/format.h>
@@ -125,11 +126,13 @@ TEST(HeightSpanStep, LevelBucketAtRestKeepsItsMaterialInPlace) {
 }
 
 // The fraction of a bucket's load (8 mm on its floor) still held after it is
-// turned by tilt_deg over 0.5 s and held for hold_steps.
-double held_after_tilt(double tilt_deg, int hold_steps) {
-  Scene s = bed_scene(48, 40, 0.005, 0.01,
+// turned by tilt_deg over 0.5 s and held for hold_steps (of 1/30 s), on cells of
+// cell_m, with sigma and En passes given.
+double held_after_tilt(double tilt_deg, int hold_steps, double cell_m = 0.005, double sigma = 0.25, int passes = 20) {
+  const int per_5mm = static_cast<int>(std::lround(0.005 / cell_m));
+  Scene s = bed_scene(48 * per_5mm, 40 * per_5mm, cell_m, 0.01,
                       {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.12, 0.1, 0.1), key(0.5, 0.12, 0.1, 0.1, tilt_deg)})},
-                      15 + hold_steps, 1.0 / 30.0, 30.0, 0.25, 20);
+                      15 + hold_steps, 1.0 / 30.0, 30.0, sigma, passes);
   const Checked c = run_checked(s, fmt::format("tilt {} deg", tilt_deg), 0.008);
   EXPECT_GT(c.held_initial_m3, 0.9 * 0.063 * 0.063 * 0.008);  // the whole floor was filled
   return c.state.held[0].map.material_m3() / c.held_initial_m3;
@@ -138,6 +141,16 @@ double held_after_tilt(double tilt_deg, int hold_steps) {
 TEST(HeightSpanStep, TippingPastTheReposeAngleEmptiesTheBucket) {
   EXPECT_GT(held_after_tilt(15.0, 30), 0.95);   // below theta: it stays
   EXPECT_LT(held_after_tilt(135.0, 60), 0.02);  // tipped over: it pours out
+}
+
+TEST(HeightSpanStep, ATippedBucketEmptiesSoonOnCoarseAndFineCells) {
+  // the paper's slow slope rule (sigma 0.05, En 5) alone moves material a cell fraction per
+  // pass, so a finer grid emptied more slowly (issue 12: 33 g left at 1.25 mm, none at 5 mm);
+  // unsupported material slides off in full (span_erosion.h), within 0.2 s of the tip on both
+  for (const double cell_m : {0.005, 0.0025}) {
+    SCOPED_TRACE(cell_m);
+    EXPECT_LT(held_after_tilt(135.0, 6, cell_m, 0.05, 5), 0.02);
+  }
 }
 
 TEST(HeightSpanStep, ExtremesStayFiniteAndConservative) {

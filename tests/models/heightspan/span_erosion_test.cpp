@@ -134,5 +134,42 @@ TEST(SpanErosion, WallsBlockAndMaterialNeverRisesIntoTheSpanAbove) {
   EXPECT_FALSE(state.particles.built);
 }
 
+// A layer `thickness_m` deep on every cell of a 12 x 12 cm plate pitched by
+// pitch_deg about y, its centre 9 cm above a 1 cm bed; sand of 30 deg and a
+// slow slope rule (sigma 0.05).
+HeightSpanState layer_on_a_pitched_plate(double pitch_deg, double thickness_m, HeightSpanModel* model) {
+  const TriangleMesh plate = make_box({0.06, 0.06, 0.005});
+  Scene s = bed_scene(48, 48, 0.005, 0.01, {mesh_object("plate", plate, {key(0.0, 0.12, 0.12, 0.1, pitch_deg)})}, 1,
+                      1.0 / 30.0, 30.0, 0.05, 5);
+  *model = build_heightspan_model(s);
+  HeightSpanState state = make_heightspan_state(*model, make_initial_height(s));
+  for (Span& sp : state.held[0].map.spans) sp.material_m = thickness_m;
+  return state;
+}
+
+TEST(SpanErosion, MaterialOnASpanSteeperThanTheReposeAngleSlidesOffInFull) {
+  // pitched 40 deg (> 30): nothing can rest on the plate, whatever sigma; it leaves within
+  // a few steps of En = 5 passes (the plate is 19 cells long), as a tipped bucket empties
+  HeightSpanModel model;
+  HeightSpanState steep = layer_on_a_pitched_plate(40.0, 0.001, &model);
+  const double initial = accounted_m3(steep);
+  const GroundParams params = default_params(model.ground);
+  for (int k = 0; k < 8; ++k) {
+    erode_spans(model, params, Eigen::Vector3d::Zero(), &steep.held[0], &steep.ground, &steep.particles, &steep.rng);
+  }
+  EXPECT_LT(steep.held[0].map.material_m3(), 1e-9 * initial);
+  EXPECT_NEAR(accounted_m3(steep), initial, 1e-14 * initial);
+  // pitched 20 deg (< 30): a 1 mm layer (less than a cell x (tan 30 - tan 20) = 1.07 mm)
+  // rests, but for the plate's rim columns, which have nothing beyond them (about 2 of every
+  // 23 columns on each side)
+  HeightSpanState gentle = layer_on_a_pitched_plate(20.0, 0.001, &model);
+  const double held = gentle.held[0].map.material_m3();
+  for (int k = 0; k < 8; ++k) {
+    erode_spans(model, params, Eigen::Vector3d::Zero(), &gentle.held[0], &gentle.ground, &gentle.particles,
+                &gentle.rng);
+  }
+  EXPECT_GT(gentle.held[0].map.material_m3(), 0.75 * held);
+}
+
 }  // namespace
 }  // namespace repose
