@@ -99,6 +99,23 @@ std::vector<DebrisJoint> building_joints(const std::vector<BuildingPart>& parts,
   return joints;
 }
 
+void append_building(const BuildingFootprint& footprint, std::vector<BuildingPart> parts, DebrisSetup& setup) {
+  const int b = static_cast<int>(setup.building_names.size());
+  setup.building_names.push_back(footprint.name);
+  std::vector<int> index;
+  for (BuildingPart& part : parts) {
+    part.bottom_m += kPartClearanceM;
+    part.top_m += kPartClearanceM;
+    part.building = b;
+    index.push_back(static_cast<int>(setup.spec.parts.size()));
+    setup.spec.parts.push_back(debris_part(part, footprint.bulk_density_kg_m3));
+  }
+  for (const DebrisJoint& j : building_joints(parts, index, footprint.joint_break_force_n)) {
+    setup.spec.joints.push_back(j);
+    setup.joint_building.push_back(b);
+  }
+}
+
 DebrisSetup debris_setup(const TerrainScene& scene, const DebrisMaterial& material, double rolling_friction_scale) {
   if (!scene.elements) throw InputError("terrain: elements: a debris run needs moving elements (terrain: elements)");
   DebrisSetup out;
@@ -116,22 +133,11 @@ DebrisSetup debris_setup(const TerrainScene& scene, const DebrisMaterial& materi
                              rolling_friction_scale * l.rolling_friction});
   }
   for (std::size_t b = 0; b < scene.buildings.size(); ++b) {
-    const BuildingFootprint& footprint = scene.buildings[b];
-    out.building_names.push_back(footprint.name);
     std::vector<BuildingPart> parts;
-    std::vector<int> index;
-    for (BuildingPart part : out.scenery.building_parts) {
-      if (part.building != static_cast<int>(b)) continue;
-      part.bottom_m += kPartClearanceM;
-      part.top_m += kPartClearanceM;
-      parts.push_back(part);
-      index.push_back(static_cast<int>(spec.parts.size()));
-      spec.parts.push_back(debris_part(part, footprint.bulk_density_kg_m3));
+    for (const BuildingPart& part : out.scenery.building_parts) {
+      if (part.building == static_cast<int>(b)) parts.push_back(part);
     }
-    for (const DebrisJoint& j : building_joints(parts, index, footprint.joint_break_force_n)) {
-      spec.joints.push_back(j);
-      out.joint_building.push_back(static_cast<int>(b));
-    }
+    append_building(scene.buildings[b], parts, out);
   }
   out.source_centre_m = area_centroid(counter_clockwise(scene.elements->region_m));
   const TerrainSurface surface(out.scenery.terrain.mesh);

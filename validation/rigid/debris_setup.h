@@ -39,6 +39,11 @@ struct DebrisSetup {
 // rolling_friction is multiplied by rolling_friction_scale (a fit's handle).
 DebrisSetup debris_setup(const TerrainScene& scene, const DebrisMaterial& material, double rolling_friction_scale = 1.0);
 
+// Appends one building (its parts from building_parts(), lifted by
+// kPartClearanceM) to setup: a name, parts and joints (its index: the
+// number of buildings before it).
+void append_building(const BuildingFootprint& footprint, std::vector<BuildingPart> parts, DebrisSetup& setup);
+
 // The joints of one building's parts (all of `parts` belong to it).
 std::vector<DebrisJoint> building_joints(const std::vector<BuildingPart>& parts, const std::vector<int>& part_index,
                                          double break_force_n);
