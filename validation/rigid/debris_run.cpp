@@ -14,6 +14,7 @@
 #include "models/core/io/height_field_io.h"
 #include "models/core/io/mesh_io.h"
 #include "models/core/io/npy_io.h"
+#include "models/terrain/terrain_surface.h"
 #include "validation/rigid/rigid_simulation.h"
 
 namespace repose {
@@ -91,10 +92,17 @@ std::vector<BuildingOutcome> building_outcomes(const DebrisSetup& setup, const D
   return out;
 }
 
-HeightField deposit_depth(const GrainSet& elements, const HeightField& ground, const SurfaceHeightOptions& options) {
-  HeightField top = surface_height(elements, ground.grid(), options);
+// On a grid `refine` times finer than the ground's (cells at most half the
+// smallest element's radius, at most 8 times finer), then averaged back.
+HeightField deposit_depth(const GrainSet& elements, const DebrisSetup& setup, const SurfaceHeightOptions& options) {
+  const Grid& coarse = setup.scenery.terrain.height_field.grid();
+  const double r_min = elements.size() > 0 ? elements.radius_m.minCoeff() : coarse.cell_size_m;
+  const int refine = std::clamp(static_cast<int>(std::ceil(coarse.cell_size_m / (0.5 * r_min))), 1, 8);
+  const Grid fine{coarse.nx * refine, coarse.ny * refine, coarse.cell_size_m / refine, coarse.origin_x_m, coarse.origin_y_m};
+  const HeightField ground = sample_height_field(TerrainSurface(setup.spec.terrain), fine, setup.spec.plain_height_m);
+  HeightField top = surface_height(elements, fine, options);
   top.heights() = (top.heights() - ground.heights()).max(0.0);
-  return top;
+  return resample_conservative(top, coarse);
 }
 
 }  // namespace
@@ -124,7 +132,7 @@ DebrisRunResult run_debris(DebrisWorld& world, const DebrisSetup& setup, double 
   set_front_speeds(r.frames);
   r.runout_m = r.frames.back().front_m - r.frames.front().front_m;
   for (const DebrisFrame& f : r.frames) r.peak_front_speed_m_s = std::max(r.peak_front_speed_m_s, f.front_speed_m_s);
-  r.deposit = deposit_depth(r.frames.back().elements, setup.scenery.terrain.height_field, options.surface);
+  r.deposit = deposit_depth(r.frames.back().elements, setup, options.surface);
   r.buildings = building_outcomes(setup, world, static_force_n, options.moved_threshold_m);
   return r;
 }
@@ -162,8 +170,8 @@ void write_parts_json(const std::string& path, const DebrisSetup& setup) {
 
 std::vector<std::string> write_debris_run(const DebrisRunResult& r, const DebrisSetup& setup, const std::string& dir) {
   namespace fs = std::filesystem;
-  std::vector<std::string> files = {"terrain.ply", "front.csv", "buildings.csv", "deposit.npy", "parts.json"};
-  write_ply((fs::path(dir) / "terrain.ply").string(), setup.spec.terrain);
+  std::vector<std::string> files = {"terrain.obj", "front.csv", "buildings.csv", "deposit.npy", "parts.json"};
+  write_obj((fs::path(dir) / "terrain.obj").string(), setup.spec.terrain);
   std::ofstream front(fs::path(dir) / "front.csv");
   front << "time_s,front_m,front_speed_m_s,mean_speed_m_s,joints_broken\n";
   for (const DebrisFrame& f : r.frames) {

@@ -6,7 +6,9 @@
 //     centre, in every frame; its speed by central differences (ends: one-sided);
 //   - the runout: the front's final position less its initial one;
 //   - the deposit: the elements' surface (validation/particles/surface_height.h)
-//     less the terrain's height field, never negative, on the terrain's grid;
+//     less the terrain, never negative, taken on a grid fine enough to see
+//     the elements (cells at most half the smallest radius, at most 8 times
+//     finer) and averaged onto the grid of setup.scenery.terrain.height_field;
 //   - per building: parts moved (displacement of the centre above
 //     moved_threshold_m), the largest displacement, joints broken, and the
 //     largest joint force seen (the first step's: the static load).
@@ -72,7 +74,7 @@ double debris_front_m(const GrainSet& elements, const Eigen::Vector2d& centre_m,
 DebrisRunResult run_debris(DebrisWorld& world, const DebrisSetup& setup, double duration_s,
                            const DebrisRunOptions& options = {});
 
-// Writes into run_dir (which must exist): terrain.ply, front.csv
+// Writes into run_dir (which must exist): terrain.obj, front.csv
 // (time_s, front_m, front_speed_m_s, mean_speed_m_s, joints_broken),
 // buildings.csv, deposit.npy, parts.json (each part's hull and building),
 // frames/elements_NNN.npy (#E by 4: x y z r) and frames/parts_NNN.npy
