@@ -22,6 +22,12 @@ void BuildingFootprint::validate() const {
   if (!(gap_m >= 0.0 && gap_m < storey_height_m)) {
     throw InputError(fmt::format("{}: gap_m = {} must lie in [0, storey_height_m)", label, gap_m));
   }
+  if (!(std::isfinite(bulk_density_kg_m3) && bulk_density_kg_m3 > 0.0)) {
+    throw InputError(fmt::format("{}: bulk_density_kg_m3 = {} must be > 0", label, bulk_density_kg_m3));
+  }
+  if (!(std::isfinite(joint_break_force_n) && joint_break_force_n > 0.0)) {
+    throw InputError(fmt::format("{}: joint_break_force_n = {} must be > 0", label, joint_break_force_n));
+  }
 }
 
 namespace {

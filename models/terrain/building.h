@@ -23,9 +23,18 @@ struct BuildingFootprint {
   int storeys = 1;
   double storey_height_m = 3.0;
   double gap_m = 0.01;          // between stacked storeys
+  // For the rigid-body engines (validation/rigid/debris_world.h): the mass
+  // per volume of its parts (a building is mostly air: ~300 kg/m^3 for a
+  // house, where concrete is 2,400), and the force (N) above which a joint
+  // holding two parts (or a bottom part to the ground) breaks. A joint
+  // carries the weight of what stands on it, so this must exceed the weight
+  // of the storeys above the ground floor (debris_setup.h reports it).
+  double bulk_density_kg_m3 = 300.0;
+  double joint_break_force_n = 1.0e7;
 
   // Throws InputError naming the building: a simple polygon of >= 3
-  // vertices, storeys >= 1, storey_height_m > 0, gap_m in [0, storey_height_m).
+  // vertices, storeys >= 1, storey_height_m > 0, gap_m in [0, storey_height_m),
+  // bulk_density_kg_m3 > 0, joint_break_force_n > 0.
   void validate() const;
 };
 
@@ -35,6 +44,7 @@ struct BuildingPart {
   double top_m = 0.0;
   int storey = 0;
   int piece = 0;          // index of the convex piece of the footprint
+  int building = 0;       // index of its footprint in the scene (generate_scenery)
 };
 
 // The parts of one building standing on `surface`: the base is the highest

@@ -31,6 +31,12 @@ void ElementSource::validate() const {
     if (!(l.restitution >= 0.0 && l.restitution <= 1.0)) {
       throw InputError(fmt::format("{}: restitution = {} must lie in [0, 1]", label, l.restitution));
     }
+    if (!(std::isfinite(l.rolling_friction) && l.rolling_friction >= 0.0)) {
+      throw InputError(fmt::format("{}: rolling_friction = {} must be >= 0", label, l.rolling_friction));
+    }
+    if (!(std::isfinite(l.density_kg_m3) && l.density_kg_m3 > 0.0)) {
+      throw InputError(fmt::format("{}: density_kg_m3 = {} must be > 0", label, l.density_kg_m3));
+    }
   }
 }
 

@@ -26,6 +26,10 @@ struct ElementLayer {
   int rows = 1;               // rows of spheres stacked in this layer
   double friction = 0.5;      // Coulomb coefficient, >= 0
   double restitution = 0.2;   // in [0, 1]
+  double density_kg_m3 = 2500.0;  // solid rock; the rigid-body engines' element mass
+  // Rolling resistance mu_r (a torque of at most mu_r r_eff N, rigid_world.h):
+  // the rigid engines' stand-in for angular rocks, which do not roll freely.
+  double rolling_friction = 0.1;
 };
 
 struct ElementSource {
@@ -35,7 +39,7 @@ struct ElementSource {
 
   // Throws InputError naming the field: a simple region of >= 3 vertices,
   // at least one layer, radius_m > 0, rows >= 1, friction >= 0, restitution
-  // in [0, 1], gap_fraction in [0, 1).
+  // in [0, 1], density_kg_m3 > 0, rolling_friction >= 0, gap_fraction in [0, 1).
   void validate() const;
 };
 

@@ -47,8 +47,11 @@ TerrainScenery generate_scenery(const TerrainScene& scene) {
   out.terrain = build_terrain(scene.key_contours, scene.options);
   const TerrainSurface surface(out.terrain.mesh);
   if (scene.elements) out.elements = place_element_layers(surface, *scene.elements);
-  for (const BuildingFootprint& b : scene.buildings) {
-    for (BuildingPart& part : building_parts(b, surface)) out.building_parts.push_back(std::move(part));
+  for (std::size_t b = 0; b < scene.buildings.size(); ++b) {
+    for (BuildingPart& part : building_parts(scene.buildings[b], surface)) {
+      part.building = static_cast<int>(b);
+      out.building_parts.push_back(std::move(part));
+    }
   }
   return out;
 }

@@ -36,26 +36,31 @@ ElementSource read_elements(const YamlValue& value) {
   src.region_m = read_points(m.required("region_m", "a list of [x, y]"));
   src.gap_fraction = m.number_or("gap_fraction", Range::right_open(0.0, 1.0), src.gap_fraction);
   for (const YamlValue& item : m.required("layers", "a list of layers").list(1)) {
-    const YamlMap l = item.map({"name", "radius_m", "rows", "friction", "restitution"});
+    const YamlMap l = item.map({"name", "radius_m", "rows", "friction", "restitution", "density_kg_m3", "rolling_friction"});
     ElementLayer layer;
     layer.name = l.string_or("name", item.display_path());
     layer.radius_m = l.number("radius_m", Range::positive());
     layer.rows = static_cast<int>(l.integer_or("rows", IntRange{1, 1000}, layer.rows));
     layer.friction = l.number_or("friction", Range::non_negative(), layer.friction);
     layer.restitution = l.number_or("restitution", Range::closed(0.0, 1.0), layer.restitution);
+    layer.density_kg_m3 = l.number_or("density_kg_m3", Range::positive(), layer.density_kg_m3);
+    layer.rolling_friction = l.number_or("rolling_friction", Range::non_negative(), layer.rolling_friction);
     src.layers.push_back(layer);
   }
   return src;
 }
 
 BuildingFootprint read_building(const YamlValue& value) {
-  const YamlMap m = value.map({"name", "footprint_m", "storeys", "storey_height_m", "gap_m"});
+  const YamlMap m = value.map(
+      {"name", "footprint_m", "storeys", "storey_height_m", "gap_m", "bulk_density_kg_m3", "joint_break_force_n"});
   BuildingFootprint b;
   b.name = m.string_or("name", value.display_path());
   b.polygon_m = read_points(m.required("footprint_m", "a list of [x, y]"));
   b.storeys = static_cast<int>(m.integer_or("storeys", IntRange{1, 1000}, b.storeys));
   b.storey_height_m = m.number_or("storey_height_m", Range::positive(), b.storey_height_m);
   b.gap_m = m.number_or("gap_m", Range::non_negative(), b.gap_m);
+  b.bulk_density_kg_m3 = m.number_or("bulk_density_kg_m3", Range::positive(), b.bulk_density_kg_m3);
+  b.joint_break_force_n = m.number_or("joint_break_force_n", Range::positive(), b.joint_break_force_n);
   return b;
 }
 
@@ -86,7 +91,8 @@ void write_elements(YAML::Emitter& out, const ElementSource& e) {
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << l.name << YAML::Key << "radius_m"
         << YAML::Value << yaml_number(l.radius_m) << YAML::Key << "rows" << YAML::Value << l.rows << YAML::Key
         << "friction" << YAML::Value << yaml_number(l.friction) << YAML::Key << "restitution" << YAML::Value
-        << yaml_number(l.restitution) << YAML::EndMap;
+        << yaml_number(l.restitution) << YAML::Key << "density_kg_m3" << YAML::Value << yaml_number(l.density_kg_m3)
+        << YAML::Key << "rolling_friction" << YAML::Value << yaml_number(l.rolling_friction) << YAML::EndMap;
   }
   out << YAML::EndSeq << YAML::EndMap;
 }
@@ -128,7 +134,8 @@ void TerrainSection::write_yaml(YAML::Emitter& out) const {
       write_points(out, "footprint_m", b.polygon_m);
       out << YAML::Key << "storeys" << YAML::Value << b.storeys << YAML::Key << "storey_height_m" << YAML::Value
           << yaml_number(b.storey_height_m) << YAML::Key << "gap_m" << YAML::Value << yaml_number(b.gap_m)
-          << YAML::EndMap;
+          << YAML::Key << "bulk_density_kg_m3" << YAML::Value << yaml_number(b.bulk_density_kg_m3) << YAML::Key
+          << "joint_break_force_n" << YAML::Value << yaml_number(b.joint_break_force_n) << YAML::EndMap;
     }
     out << YAML::EndSeq;
   }

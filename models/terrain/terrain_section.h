@@ -13,9 +13,11 @@
 //     elements:                        # optional (element_layers.h)
 //       region_m: [[10, 10], [30, 10], [30, 30], [10, 30]]
 //       gap_fraction: 0.01
-//       layers: [{name: bed, radius_m: 1, rows: 2, friction: 0.6, restitution: 0.1}]
+//       layers: [{name: bed, radius_m: 1, rows: 2, friction: 0.6, restitution: 0.1, density_kg_m3: 2500,
+//                 rolling_friction: 0.1}]   # the last two: rigid engines only
 //     buildings:                       # optional (building.h)
-//       - {name: house, footprint_m: [[...]], storeys: 2, storey_height_m: 3, gap_m: 0.02}
+//       - {name: house, footprint_m: [[...]], storeys: 2, storey_height_m: 3, gap_m: 0.02,
+//          bulk_density_kg_m3: 300, joint_break_force_n: 1.0e7}   # the last two: rigid engines only
 //
 // A relative key_contours_file is taken from the scene file's folder. The
 // section writes itself back with the key contours inline.

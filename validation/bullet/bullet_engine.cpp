@@ -1,5 +1,6 @@
 #include "validation/bullet/bullet_engine.h"
 
+#include "validation/bullet/bullet_debris_world.h"
 #include "validation/bullet/bullet_world.h"
 
 namespace repose {
@@ -12,6 +13,7 @@ RigidEngine bullet_engine(const BulletOptions& options) {
   engine.options_text = bullet_options_text(options);
   engine.rigid = options.rigid;
   engine.make_world = [options](const RigidWorldSpec& spec) { return make_bullet_world(spec, options); };
+  engine.make_debris_world = [options](const DebrisWorldSpec& spec) { return make_bullet_debris_world(spec, options); };
   return engine;
 }
 

@@ -2,20 +2,21 @@
 
 #include "validation/ode/ode_engine.h"
 #include "validation/ode/ode_section.h"
+#include "models/terrain/terrain_section.h"
 #include "validation/particles/dem_section.h"
 #include "validation/rigid/rigid_solver.h"
 
 namespace repose {
 
 std::string OdeSolver::description() const {
-  return "rigid spheres in ODE (needs the scene's dem section; options in ode:): settled bed, run, observables";
+  return "rigid bodies in ODE (options in ode:): a dem section's grains (settled bed, run, observables) or a terrain section's debris flow with breakable buildings";
 }
 
-std::vector<SectionType> OdeSolver::sections() const { return {dem_section_type(), ode_section_type()}; }
+std::vector<SectionType> OdeSolver::sections() const { return {dem_section_type(), ode_section_type(), terrain_section_type()}; }
 
 bool OdeSolver::can_run(const Scene& scene, std::string* why) const {
-  if (dem_of(scene) != nullptr) return true;
-  if (why != nullptr) *why = "the scene has no 'dem' section (the grains of the particle references)";
+  if (dem_of(scene) != nullptr || scene.section<TerrainSection>() != nullptr) return true;  // terrain: a debris flow
+  if (why != nullptr) *why = "the scene has neither a 'dem' section (grains) nor a 'terrain' section (a debris flow)";
   return false;
 }
 

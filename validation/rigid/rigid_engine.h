@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "validation/rigid/debris_world.h"
 #include "validation/rigid/rigid_options.h"
 #include "validation/rigid/rigid_world.h"
 
@@ -16,6 +17,7 @@ struct RigidEngine {
   std::string options_text;  // every option of the engine's section, key=value lines (enters cache keys)
   RigidOptions rigid;        // the shared part of the options
   RigidWorldFactory make_world;
+  DebrisWorldFactory make_debris_world;  // a terrain scene's debris flow (debris_world.h)
 };
 
 }  // namespace repose

@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <numbers>
 
+#include "models/terrain/terrain_section.h"
+#include "validation/rigid/debris_solver.h"
 #include "validation/rigid/grain_file.h"
 #include "validation/rigid/rigid_reference.h"
 #include "validation/rigid/rigid_setup.h"
@@ -115,6 +117,7 @@ class CompiledRigid final : public CompiledSolver {
 }  // namespace
 
 std::unique_ptr<CompiledSolver> compile_rigid(const Scene& scene, RigidEngine engine) {
+  if (dem_of(scene) == nullptr && scene.section<TerrainSection>() != nullptr) return compile_debris(scene, std::move(engine));
   RigidInputs in = rigid_inputs(scene, engine.name);
   return std::make_unique<CompiledRigid>(std::move(in), std::move(engine));
 }

@@ -52,6 +52,20 @@ TEST(Building, PrismIsAClosedSolidOfTheRightVolume) {
   EXPECT_NEAR(signed_volume_m3(m), 4 * 3 * 2.5, 1e-12);
 }
 
+TEST(Building, TheRigidEnginesValuesAreCheckedNamingTheField) {
+  BuildingFootprint b{"shed", test::rectangle_polygon(0, 0, 4, 3), 1, 3.0, 0.02};
+  b.joint_break_force_n = 0.0;
+  try {
+    b.validate();
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("joint_break_force_n"), std::string::npos) << e.what();
+  }
+  b.joint_break_force_n = 1e6;
+  b.bulk_density_kg_m3 = -1.0;
+  EXPECT_THROW(b.validate(), InputError);
+}
+
 TEST(Building, FootprintOffTheTerrainIsRefused) {
   const TerrainSurface surface = hill();
   const BuildingFootprint fp{"far", test::rectangle_polygon(100, 100, 110, 110), 1, 3.0, 0.0};

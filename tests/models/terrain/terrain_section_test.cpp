@@ -70,6 +70,27 @@ TEST(TerrainSection, ErrorsNameTheKey) {
   EXPECT_NE(restitution.find("restitution"), std::string::npos) << restitution;
 }
 
+TEST(TerrainSection, ReadsTheRigidEnginesValuesOfLayersAndBuildings) {
+  const TerrainScene s = read(std::string("terrain:\n  key_contours: [{height_m: 0, points_m: ") + kSquare + R"(}]
+  elements:
+    region_m: [[10, 10], [30, 10], [30, 30]]
+    layers: [{radius_m: 0.5, density_kg_m3: 2000, rolling_friction: 0.3}]
+  buildings:
+    - {name: house, footprint_m: [[60, 60], [70, 60], [70, 70], [60, 70]], bulk_density_kg_m3: 250, joint_break_force_n: 3.0e6}
+)");
+  EXPECT_DOUBLE_EQ(s.elements->layers[0].density_kg_m3, 2000.0);
+  EXPECT_DOUBLE_EQ(s.elements->layers[0].rolling_friction, 0.3);
+  EXPECT_DOUBLE_EQ(s.buildings[0].bulk_density_kg_m3, 250.0);
+  EXPECT_DOUBLE_EQ(s.buildings[0].joint_break_force_n, 3.0e6);
+  const std::string joint = error_of(std::string("terrain:\n  key_contours: [{height_m: 0, points_m: ") + kSquare +
+                                     "}]\n  buildings: [{footprint_m: [[60,60],[70,60],[70,70]], joint_break_force_n: 0}]\n");
+  EXPECT_NE(joint.find("joint_break_force_n"), std::string::npos) << joint;
+  const std::string density = error_of(std::string("terrain:\n  key_contours: [{height_m: 0, points_m: ") + kSquare +
+                                       "}]\n  elements: {region_m: [[1,1],[2,1],[2,2]], layers: [{radius_m: 1, "
+                                       "density_kg_m3: -5}]}\n");
+  EXPECT_NE(density.find("density_kg_m3"), std::string::npos) << density;
+}
+
 TEST(TerrainSection, ContourFileIsTakenFromTheScenesFolder) {
   const fs::path dir = fs::temp_directory_path() / ("repose_terrain_section_" + std::to_string(::getpid()));
   fs::create_directories(dir);

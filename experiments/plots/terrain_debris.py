@@ -1,0 +1,156 @@
+"""A debris flow on generated terrain hitting buildings, per engine (experiments/terrain_debris.yaml).
+
+usage: python3 terrain_debris.py EXPERIMENT_DIR
+Reads every run folder EXPERIMENT_DIR/NAME that holds front.csv (a rigid
+engine's debris run, validation/rigid/debris_run.h: terrain.obj, parts.json,
+frames/elements_NNN.npy (x y z r), frames/parts_NNN.npy (x y z qw qx qy qz),
+front.csv, buildings.csv) and writes, per run:
+  debris_NAME_frames.png  the collapse as a series of six frames seen from
+                          above: the terrain shaded by height, the elements
+                          coloured by layer (radius), each building part's
+                          outline (red once it has moved more than 5 cm);
+and for all runs together debris_front.png: the front along the flow, its
+speed and the joints broken against time, one colour per engine.
+A run folder with terrain_mesh.obj (the terrain solver's) gets its contour
+and mesh figure through terrain_figure.py: the chain from key contours on.
+"""
+import csv
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.tri as mtri  # noqa: E402
+import numpy as np  # noqa: E402
+from figure_output import save  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import terrain_figure  # noqa: E402
+
+MOVED_M = 0.05  # as DebrisRunOptions::moved_threshold_m
+PANELS = 6
+
+
+def rotate(q, points):
+    """Rotates rows of `points` by the unit quaternion q = (w, x, y, z)."""
+    w, x, y, z = q
+    r = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                  [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                  [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+    return points @ r.T
+
+
+def convex_hull_2d(points):
+    """Counter-clockwise convex hull of 2-D points (monotone chain), first point not repeated."""
+    pts = sorted(set(map(tuple, np.round(points, 9))))
+    if len(pts) < 3:
+        return np.array(pts)
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return np.array(lower[:-1] + upper[:-1])
+
+
+def part_outlines(hulls, poses):
+    """Each part's outline seen from above: the xy hull of its posed vertices."""
+    return [convex_hull_2d((rotate(pose[3:7], h) + pose[:3])[:, :2]) for h, pose in zip(hulls, poses)]
+
+
+def read_front(folder):
+    with open(os.path.join(folder, "front.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def draw_frames(folder, name, out_dir):
+    v, f = terrain_figure.read_obj(os.path.join(folder, "terrain.obj"))
+    tri = mtri.Triangulation(v[:, 0], v[:, 1], f)
+    with open(os.path.join(folder, "parts.json")) as fp:
+        hulls = [np.array(p["hull_m"]) for p in json.load(fp)["parts"]]
+    front = read_front(folder)
+    count = len(front["time_s"])
+    picks = sorted(set(np.linspace(0, count - 1, PANELS).round().astype(int)))
+    parts0 = np.load(os.path.join(folder, "frames", "parts_000.npy")).reshape(-1, 7)
+    e0 = np.load(os.path.join(folder, "frames", "elements_000.npy"))
+    lo = np.minimum(e0[:, :2].min(axis=0), parts0[:, :2].min(axis=0) if len(parts0) else e0[:, :2].min(axis=0)) - 15
+    hi = np.maximum(e0[:, :2].max(axis=0), parts0[:, :2].max(axis=0) if len(parts0) else e0[:, :2].max(axis=0)) + 15
+    fig, axes = plt.subplots(2, (len(picks) + 1) // 2, figsize=(4.2 * ((len(picks) + 1) // 2), 8.4), squeeze=False)
+    for ax, k in zip(axes.flat, picks):
+        e = np.load(os.path.join(folder, "frames", "elements_{:03d}.npy".format(k)))
+        parts = np.load(os.path.join(folder, "frames", "parts_{:03d}.npy".format(k))).reshape(-1, 7)
+        ax.tripcolor(tri, v[:, 2], cmap="terrain", shading="gouraud")
+        ax.tricontour(tri, v[:, 2], levels=12, colors="k", linewidths=0.3, alpha=0.5)
+        lo = np.minimum(lo, e[:, :2].min(axis=0))
+        hi = np.maximum(hi, e[:, :2].max(axis=0))
+        ax.scatter(e[:, 0], e[:, 1], s=(e[:, 3] * 4) ** 2, c=e[:, 3], cmap="copper", vmin=0, edgecolors="none")
+        for p, outline in enumerate(part_outlines(hulls, parts)):
+            moved = np.linalg.norm(parts[p, :3] - parts0[p, :3]) > MOVED_M
+            closed = np.vstack([outline, outline[:1]])
+            ax.fill(closed[:, 0], closed[:, 1], color="tab:red" if moved else "tab:blue", alpha=0.5)
+            ax.plot(closed[:, 0], closed[:, 1], color="k", lw=0.5)
+        ax.set_title("{}: t = {:.1f} s, {} joints broken".format(name, front["time_s"][k], int(front["joints_broken"][k])),
+                     fontsize=9)
+    for ax in axes.flat:
+        ax.set_xlim(lo[0], hi[0])
+        ax.set_ylim(lo[1], hi[1])
+        ax.set_aspect("equal")
+        ax.set_xlabel("x (m)", fontsize=8)
+        ax.set_ylabel("y (m)", fontsize=8)
+    fig.tight_layout()
+    save(fig, out_dir, "debris_{}_frames.png".format(name), dpi=110)
+    plt.close(fig)
+
+
+def draw_fronts(runs, out_dir):
+    fig, axes = plt.subplots(1, 3, figsize=(14, 4))
+    for name, folder in runs:
+        d = read_front(folder)
+        axes[0].plot(d["time_s"], d["front_m"], label=name)
+        axes[1].plot(d["time_s"], d["front_speed_m_s"], label=name + " front")
+        axes[1].plot(d["time_s"], d["mean_speed_m_s"], "--", label=name + " mean element")
+        axes[2].step(d["time_s"], d["joints_broken"], where="post", label=name)
+    for ax, label in zip(axes, ["front along the flow (m)", "speed (m/s)", "joints broken"]):
+        ax.set_xlabel("time (s)")
+        ax.set_ylabel(label)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    save(fig, out_dir, "debris_front.png", dpi=110)
+    plt.close(fig)
+
+
+def main():
+    out_dir = sys.argv[1]
+    runs = []
+    for name in sorted(os.listdir(out_dir)):
+        folder = os.path.join(out_dir, name)
+        if os.path.exists(os.path.join(folder, "terrain_mesh.obj")):
+            fig, axes = plt.subplots(1, 2, figsize=(12, 5))
+            terrain_figure.draw_contours(axes[0], folder)
+            terrain_figure.draw_mesh(axes[1], folder)
+            for ax in axes:
+                ax.set_aspect("equal")
+            fig.tight_layout()
+            save(fig, out_dir, "debris_terrain.png", dpi=110)
+            plt.close(fig)
+        if os.path.exists(os.path.join(folder, "front.csv")):
+            runs.append((name, folder))
+            draw_frames(folder, name, out_dir)
+    if runs:
+        draw_fronts(runs, out_dir)
+
+
+if __name__ == "__main__":
+    main()
