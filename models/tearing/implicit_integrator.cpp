@@ -62,8 +62,9 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
       const Eigen::Vector3d n = d / length;
       const double ks = spring_constant_n_per_m(kc, s, model.cell_stiffness[c]);
       const double geometric = std::max(0.0, 1.0 - s.rest_length_m / length);
-      const Eigen::Matrix3d axial = ks * (n * n.transpose());
-      const Eigen::Matrix3d h = ks * (n * n.transpose() + geometric * (identity - n * n.transpose()));
+      const Eigen::Matrix3d nn = n * n.transpose();
+      const Eigen::Matrix3d axial = ks * nn;
+      const Eigen::Matrix3d h = ks * (nn + geometric * (identity - nn));
       spring(4 * (6 * c + k), s.a, s.b, h, axial);
     }
   }
