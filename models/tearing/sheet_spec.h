@@ -62,10 +62,12 @@ struct SheetSpec {
   // each spring also carries a dashpot of beta k along its axis, each
   // bending term one of beta k_b on the curvature rate, so a mode of angular
   // frequency w is damped at the rate beta w^2 / 2 (damping ratio beta w / 2),
-  // where damping_per_s damps every mode alike. It removes the short flaps'
-  // flutter that the finer meshes carry (experiments/tearing_convergence.yaml)
-  // and is a property of the material, so the same value on every mesh. It
-  // shrinks the explicit stable step (stable_time_step.h) to
+  // where damping_per_s damps every mode alike: paper's internal friction,
+  // a property of the material, so the same value on every mesh. Measured
+  // as a cure for the drift of the grips' work per tear length under mesh
+  // refinement (experiments/tearing_convergence_dashpots.yaml), it made the
+  // drift larger, not smaller; the scenes leave it at 0. It shrinks the
+  // explicit stable step (stable_time_step.h) to
   // (2 / w_max) (sqrt(1 + z^2) - z), z = beta w_max / 2. 0, the default, is
   // the seed's undamped springs. >= 0.
   double stiffness_damping_s = 0.0;
