@@ -99,6 +99,30 @@ TEST(TearRun, TheImplicitIntegratorTearsTheUniformSheetStraightToo) {
   EXPECT_DOUBLE_EQ(run.time_step_s, 4.0 * run.stable_time_step_s);
 }
 
+// The grips' force over time: samples in time order up to the last step,
+// none above the peak, and summed over time (force . grip velocity x the
+// sampling interval) the grips' work (each sample is the mean force over
+// its interval, TearRun::grip_force_n).
+TEST(TearRun, RecordsTheGripsForceOverTimeWhichSumsToTheirWork) {
+  const SheetModel model = notched_twisted_sheet();
+  const TearRun run = run_tear(model, SheetParams{}, stop_at_24_mm());
+  ASSERT_GT(run.force_time_s.size(), 100u);
+  ASSERT_EQ(run.force_time_s.size(), run.grip_force_n.size());
+  EXPECT_EQ(run.force_time_s.back(), run.state.time_s);
+  double work = 0.0, previous_s = 0.0;
+  for (std::size_t k = 0; k < run.force_time_s.size(); ++k) {
+    EXPECT_GT(run.force_time_s[k], previous_s);
+    for (Eigen::Index g = 0; g < run.grip_force_n[k].cols(); ++g) {
+      EXPECT_LE(run.grip_force_n[k].col(g).norm(), run.peak_grip_force_n);
+      work += (run.force_time_s[k] - previous_s) *
+              run.grip_force_n[k].col(g).dot(model.spec.grips[static_cast<std::size_t>(g)].velocity_m_per_s);
+    }
+    previous_s = run.force_time_s[k];
+  }
+  ASSERT_GT(run.grip_work_j, 0.0);
+  EXPECT_NEAR(work, run.grip_work_j, 1e-9 * run.grip_work_j);
+}
+
 // The extremes: a run of n steps with either integrator (the
 // explicit at 0.9 of its limit, the implicit at 100x it) keeps every
 // position, velocity and grip force finite.
