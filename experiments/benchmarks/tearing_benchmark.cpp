@@ -53,6 +53,21 @@
 //   BM_ImplicitWholeTear*/100 (after)  Jacobi 306 s, multigrid 119 s (2,161 steps)
 // by the multigrid's 3 x 3 block smoother (sheet_multigrid.h); multigrid is
 // now the default; 20 steps/s at 200 x 200 is missed ~4.7x.
+// Measured 2026-11-26 12:36-12:42 (load 7.4-7.9: two calibrations and a
+// DEM run beside it; CPU time; before = main at d492d86, after = branch
+// tear with the springs' dashpots (off, the default), the binaries run in
+// turn three times, median): BM_ExplicitStep/50 242 -> 214 us (4,100 ->
+// 4,700 steps/s; target 1,000: met), BM_ImplicitStepMultigrid/200 365 ->
+// 408 ms (2.7 -> 2.5 steps/s, 8.6 CG iterations; the runs spread
+// 363-533 ms, so no change out of the noise; target 20 steps/s: missed
+// ~8x at this load). perf of the 200 x 200 step (whole benchmark, set-up
+// included): block Gauss-Seidel sweeps 20 %, Eigen's CG loop (its double
+// matrix-vector product) 16 %, block residual 10 %, assembly ~7 %, the
+// hierarchy's rebuilds (Galerkin products, block copies) ~8 %, page faults
+// of per-step vectors ~5 % (glibc tunables that keep freed memory: 356 ->
+// 340 ms). Every part is bound by memory bandwidth, which the other jobs
+// share; each lever in reach (no per-step allocation, a block product in
+// the CG loop, a looser tolerance) is worth ~1.05-1.3x, not the 8x missing.
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter=WholeTear/50   (minutes: one tear each)

@@ -5,7 +5,8 @@
 //      x_n loses all its springs; all such cells tear together, decided on
 //      the same positions, so the result does not depend on the order cells
 //      are stored (tearing.h);
-//   2. v_{n+1} = (v_n + dt (f(x_n) / m + g)) / (1 + damping dt);
+//   2. v_{n+1} = (v_n + dt (f(x_n, v_n) / m + g)) / (1 + damping dt), f the
+//      elastic forces and the springs' dashpots (SheetSpec::stiffness_damping_s);
 //   3. x_{n+1} = x_n + dt v_{n+1};
 // held axes of gripped vertices follow their grip instead, and the force the
 // grip needs to do so is recorded (SheetState::grip_force_n).

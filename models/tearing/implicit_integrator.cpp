@@ -39,8 +39,9 @@ class MultigridPreconditioner {
 constexpr double kBendingCoefficient[3] = {1.0, -2.0, 1.0};
 
 // Walks the stiffness -K (positive) of the intact springs and acting
-// bending terms: spring(first, a, b, h) per spring, whose blocks are
-// (a, a) = (b, b) = h, (a, b) = (b, a) = -h, and bending(first, v, kb) per
+// bending terms: spring(first, a, b, h, axial) per spring, whose blocks are
+// (a, a) = (b, b) = h, (a, b) = (b, a) = -h (axial = k n n^T, the part its
+// dashpot's damping matrix is beta times), and bending(first, v, kb) per
 // term, whose blocks (v[p], v[q]) are kb c_p c_q I (kBendingCoefficient); a
 // pair may come several times, its blocks add up. first numbers the blocks
 // of the whole sheet (for_each_block_place): 4 (6 c + k) + 0..3 for spring
@@ -61,8 +62,10 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
       const Eigen::Vector3d n = d / length;
       const double ks = spring_constant_n_per_m(kc, s, model.cell_stiffness[c]);
       const double geometric = std::max(0.0, 1.0 - s.rest_length_m / length);
-      const Eigen::Matrix3d h = ks * (n * n.transpose() + geometric * (identity - n * n.transpose()));
-      spring(4 * (6 * c + k), s.a, s.b, h);
+      const Eigen::Matrix3d nn = n * n.transpose();
+      const Eigen::Matrix3d axial = ks * nn;
+      const Eigen::Matrix3d h = ks * (nn + geometric * (identity - nn));
+      spring(4 * (6 * c + k), s.a, s.b, h, axial);
     }
   }
   const int bending_first = 24 * model.cell_count();
@@ -74,8 +77,10 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
   }
 }
 
-// Adds -dt^2 K (the stiffness blocks, at their places in the system's
-// values) to the left and dt K v_n to the right, held dv moved right.
+// Adds -dt^2 K + dt C (the stiffness and dashpot blocks, at their places in
+// the system's values; C = beta (K's axial and bending parts),
+// SheetSpec::stiffness_damping_s) to the left and dt K v_n to the right
+// (the dashpots' force at v_n is in the step's forces), held dv moved right.
 struct StiffnessAssembly {
   const std::vector<int>& free_index;
   const std::vector<int>& first_row;
@@ -86,9 +91,11 @@ struct StiffnessAssembly {
   Eigen::Map<const Eigen::VectorXd> v0;
   const Eigen::VectorXd& dv_all;
   double dt2;
+  double dt_beta;  // dt x stiffness_damping_s
 
-  // any block, any vertices: held rows skipped, held columns to the right
-  void add_block(int index, int va, int vb, const Eigen::Matrix3d& block) {
+  // any block, any vertices: held rows skipped, held columns to the right;
+  // block of -K, left its block in the system (dt^2 block + dt C's)
+  void add_block(int index, int va, int vb, const Eigen::Matrix3d& block, const Eigen::Matrix3d& left) {
     const std::array<int, 3>& place = block_place[static_cast<std::size_t>(index)];
     const int row0 = first_row[static_cast<std::size_t>(va)];
     for (int p = 0; p < 3; ++p) {
@@ -96,18 +103,18 @@ struct StiffnessAssembly {
       if (row < 0) continue;
       for (int q = 0; q < 3; ++q) {
         const double kpq = block(p, q);  // of -K
-        if (kpq == 0.0) continue;        // six of a bending block's nine
+        if (kpq == 0.0) continue;        // six of a bending block's nine (C is zero where K is)
         (*rhs)[row] -= dt2 * kpq * v0[3 * vb + q];
         if (free_index[static_cast<std::size_t>(3 * vb + q)] >= 0) {
-          values[place[static_cast<std::size_t>(q)] + (row - row0)] += dt2 * kpq;
+          values[place[static_cast<std::size_t>(q)] + (row - row0)] += left(p, q);
         } else {
-          (*rhs)[row] -= dt2 * kpq * dv_all[3 * vb + q];
+          (*rhs)[row] -= left(p, q) * dv_all[3 * vb + q];
         }
       }
     }
   }
   // a block between two vertices free in every axis, whose rows are
-  // consecutive, already times dt^2: no branch per entry
+  // consecutive, already as it enters the system: no branch per entry
   void add_free_block(int index, const Eigen::Matrix3d& scaled) {
     const std::array<int, 3>& place = block_place[static_cast<std::size_t>(index)];
     for (int q = 0; q < 3; ++q) {
@@ -118,30 +125,33 @@ struct StiffnessAssembly {
   bool free(int v) const { return all_free[static_cast<std::size_t>(v)] != 0; }
   Eigen::VectorBlock<Eigen::VectorXd, 3> rhs_of(int v) { return rhs->segment<3>(first_row[static_cast<std::size_t>(v)]); }
 
-  void add_spring(int first, int a, int b, const Eigen::Matrix3d& h) {
+  void add_spring(int first, int a, int b, const Eigen::Matrix3d& h, const Eigen::Matrix3d& axial) {
+    const Eigen::Matrix3d scaled = dt2 * h;
+    const Eigen::Matrix3d left = dt_beta > 0.0 ? Eigen::Matrix3d(scaled + dt_beta * axial) : scaled;
     if (!(free(a) && free(b))) {
-      add_block(first, a, a, h);
-      add_block(first + 1, b, b, h);
-      add_block(first + 2, a, b, -h);
-      add_block(first + 3, b, a, -h);
+      add_block(first, a, a, h, left);
+      add_block(first + 1, b, b, h, left);
+      add_block(first + 2, a, b, -h, -left);
+      add_block(first + 3, b, a, -h, -left);
       return;
     }
-    const Eigen::Matrix3d scaled = dt2 * h;
     const Eigen::Vector3d pull = scaled * (v0.segment<3>(3 * b) - v0.segment<3>(3 * a));
     rhs_of(a) += pull;
     rhs_of(b) -= pull;
-    add_free_block(first, scaled);
-    add_free_block(first + 1, scaled);
-    add_free_block(first + 2, -scaled);
-    add_free_block(first + 3, -scaled);
+    add_free_block(first, left);
+    add_free_block(first + 1, left);
+    add_free_block(first + 2, -left);
+    add_free_block(first + 3, -left);
   }
 
   void add_bending(int first, const std::array<int, 3>& v, double kb) {
+    const double left_scale = dt2 + dt_beta;  // -dt^2 K + dt beta K on the bending part
     if (!(free(v[0]) && free(v[1]) && free(v[2]))) {
       for (int p = 0; p < 3; ++p) {
         for (int q = 0; q < 3; ++q) {
-          add_block(first + 3 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)],
-                    kb * kBendingCoefficient[p] * kBendingCoefficient[q] * Eigen::Matrix3d::Identity());
+          const Eigen::Matrix3d block = kb * kBendingCoefficient[p] * kBendingCoefficient[q] * Eigen::Matrix3d::Identity();
+          add_block(first + 3 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)], block,
+                    left_scale * block);
         }
       }
       return;
@@ -150,11 +160,12 @@ struct StiffnessAssembly {
     const Eigen::Vector3d curvature = v0.segment<3>(3 * v[0]) - 2.0 * v0.segment<3>(3 * v[1]) + v0.segment<3>(3 * v[2]);
     for (int p = 0; p < 3; ++p) {
       const double kp = dt2 * kb * kBendingCoefficient[p];
+      const double left_p = left_scale * kb * kBendingCoefficient[p];
       rhs_of(v[static_cast<std::size_t>(p)]) -= kp * curvature;
       for (int q = 0; q < 3; ++q) {
         const std::array<int, 3>& place = block_place[static_cast<std::size_t>(first + 3 * p + q)];
         for (int axis = 0; axis < 3; ++axis) {
-          values[place[static_cast<std::size_t>(axis)] + axis] += kp * kBendingCoefficient[q];
+          values[place[static_cast<std::size_t>(axis)] + axis] += left_p * kBendingCoefficient[q];
         }
       }
     }
@@ -331,10 +342,12 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
   }
   StiffnessAssembly assembly{free_index_, first_row_, all_free_, block_place_, values, &rhs,
                              Eigen::Map<const Eigen::VectorXd>(state.velocities.data(), 3 * model_.vertex_count()),
-                             dv_all, dt_ * dt_};
+                             dv_all, dt_ * dt_, dt_ * model_.spec.stiffness_damping_s};
   for_each_stiffness_term(
       model_, params_, state,
-      [&](int first, int a, int b, const Eigen::Matrix3d& h) { assembly.add_spring(first, a, b, h); },
+      [&](int first, int a, int b, const Eigen::Matrix3d& h, const Eigen::Matrix3d& axial) {
+        assembly.add_spring(first, a, b, h, axial);
+      },
       [&](int first, const std::array<int, 3>& v, double kb) { assembly.add_bending(first, v, kb); });
 }
 

@@ -1,9 +1,12 @@
 #pragma once
 // Linearised backward Euler for the sheet (Baraff & Witkin 1998): one Newton
 // step of backward Euler per time step,
-//   (M (1 + c dt) - dt^2 K) dv = dt (f(x_n) + dt K v_n + M g - c M v_n),
+//   (M (1 + c dt) + dt C - dt^2 K) dv = dt (f(x_n, v_n) + dt K v_n + M g - c M v_n),
 //   v_{n+1} = v_n + dv,   x_{n+1} = x_n + dt v_{n+1},
-// K = df/dx at x_n from the intact springs and acting bending terms, solved
+// K = df/dx at x_n from the intact springs and acting bending terms, C =
+// -df/dv of their dashpots (beta times K's axial and bending parts,
+// SheetSpec::stiffness_damping_s; 0 by default), f the elastic and
+// dashpot forces, solved
 // by Eigen's conjugate gradients over the free degrees of freedom (held axes
 // of gripped vertices move with their grip and enter the right-hand side),
 // preconditioned by a multigrid V-cycle over the vertex grid

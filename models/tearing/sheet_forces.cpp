@@ -77,15 +77,30 @@ void add_cell_forces(const std::array<CellSpring, 6>& springs, const CellStretch
   }
 }
 
+// The bending terms' forces -scale k_b c_p (y_a - 2 y_b + y_c) on y =
+// positions (scale 1: elastic) or velocities (scale beta: the dashpots).
 void add_bending_forces(const SheetModel& model, const SpringConstants& k, const SheetState& state,
-                        Eigen::Matrix3Xd* forces) {
-  const Eigen::Matrix3Xd& x = state.positions;
+                        const Eigen::Matrix3Xd& y, double scale, Eigen::Matrix3Xd* forces) {
   for (const BendingTerm& t : model.bending) {
     if (!bending_acts(t, state)) continue;
-    const Eigen::Vector3d g = (k.bending_n_per_m * t.weight) * (x.col(t.a) - 2.0 * x.col(t.b) + x.col(t.c));
+    const Eigen::Vector3d g = (scale * k.bending_n_per_m * t.weight) * (y.col(t.a) - 2.0 * y.col(t.b) + y.col(t.c));
     forces->col(t.a) -= g;
     forces->col(t.b) += 2.0 * g;
     forces->col(t.c) -= g;
+  }
+}
+
+// The springs' dashpots (SheetSpec::stiffness_damping_s): beta k times the
+// rate of stretch along each spring.
+void add_cell_damping(const std::array<CellSpring, 6>& springs, const CellStretch& s, const SpringConstants& k,
+                      double weight, double beta, const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd* forces) {
+  for (int q = 0; q < 6; ++q) {
+    if (s.length[q] == 0.0) continue;
+    const CellSpring& sp = springs[q];
+    const Eigen::Vector3d n = s.d[q] / s.length[q];
+    const Eigen::Vector3d f = (beta * spring_constant_n_per_m(k, sp, weight) * n.dot(v.col(sp.b) - v.col(sp.a))) * n;
+    forces->col(sp.a) += f;
+    forces->col(sp.b) -= f;
   }
 }
 
@@ -100,7 +115,7 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
     const std::array<CellSpring, 6> springs = cell_springs(model, c);
     add_cell_forces(springs, stretch_of(springs, state.positions, INFINITY), k, model.cell_stiffness[c], forces);
   }
-  add_bending_forces(model, k, state, forces);
+  add_bending_forces(model, k, state, state.positions, 1.0, forces);
 }
 
 bool cell_overstretched(const SheetModel& model, const SheetParams& params, const SheetState& state, int c) {
@@ -111,6 +126,7 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
                              Eigen::Matrix3Xd* forces) {
   forces->setZero(3, model.vertex_count());
   const SpringConstants k = spring_constants(model, params);
+  const double beta = model.spec.stiffness_damping_s;
   int torn = 0;
   for (int c = 0; c < model.cell_count(); ++c) {
     if (!state->intact(c)) continue;
@@ -122,9 +138,11 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
       ++torn;
     } else {
       add_cell_forces(springs, s, k, model.cell_stiffness[c], forces);
+      if (beta > 0.0) add_cell_damping(springs, s, k, model.cell_stiffness[c], beta, state->velocities, forces);
     }
   }
-  add_bending_forces(model, k, *state, forces);
+  add_bending_forces(model, k, *state, state->positions, 1.0, forces);
+  if (beta > 0.0) add_bending_forces(model, k, *state, state->velocities, beta, forces);
   return torn;
 }
 

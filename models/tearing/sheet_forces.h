@@ -44,7 +44,8 @@ double spring_constant_n_per_m(const SpringConstants& k, const CellSpring& s, do
 // Whether bending term t acts: both its edges have an intact cell.
 bool bending_acts(const BendingTerm& t, const SheetState& state);
 
-// Internal forces (N) on every vertex, 3 x vertex_count, overwritten.
+// Elastic internal forces (N) on every vertex, 3 x vertex_count,
+// overwritten (no dashpots: those are tear_and_internal_forces').
 void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
                      Eigen::Matrix3Xd* forces);
 
@@ -52,7 +53,8 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
 // springs (each cell's verdict depends on its own springs only, so tearing
 // a cell before the next is judged changes nothing): cells over their limit
 // are marked torn at step_number, the energy their springs held added to
-// state->torn_energy_j, the forces of the rest accumulated.
+// state->torn_energy_j, the forces of the rest accumulated: elastic, plus
+// the dashpots of SheetSpec::stiffness_damping_s at state->velocities.
 // Returns the number of cells torn.
 int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
                              Eigen::Matrix3Xd* forces);

@@ -69,6 +69,8 @@ void SheetSpec::validate() const {
   require(tear_strain_density_exponent >= 0.0 && tear_strain_density_exponent <= 8.0,
           "tear_strain_density_exponent", tear_strain_density_exponent, "in [0, 8]");
   require(std::isfinite(damping_per_s) && damping_per_s >= 0.0, "damping_per_s", damping_per_s, ">= 0");
+  require(std::isfinite(stiffness_damping_s) && stiffness_damping_s >= 0.0, "stiffness_damping_s",
+          stiffness_damping_s, ">= 0");
   require(gravity_m_per_s2.allFinite(), "gravity_m_per_s2", gravity_m_per_s2.norm(), "finite");
   require(std::isfinite(notch_length_m) && notch_length_m >= 0.0 && notch_length_m <= height_m, "notch_length_m",
           notch_length_m, "in [0, height_m]");

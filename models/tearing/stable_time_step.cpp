@@ -32,7 +32,12 @@ double stable_time_step_s(const SheetModel& model, const SheetParams& params) {
   }
   const double omega_max = std::sqrt(bound.maxCoeff());
   REPOSE_DEMAND(std::isfinite(omega_max));
-  return omega_max > 0.0 ? 2.0 / omega_max : INFINITY;
+  if (!(omega_max > 0.0)) return INFINITY;
+  // the dashpots (beta K): damping ratio z = beta w / 2 on the mode w;
+  // symplectic Euler with the damping force at v_n is stable for
+  // (w dt)^2 + 4 z (w dt) <= 4 (the Jury conditions on its 2 x 2 step)
+  const double z = 0.5 * model.spec.stiffness_damping_s * omega_max;
+  return 2.0 / omega_max * (std::sqrt(1.0 + z * z) - z);
 }
 
 }  // namespace repose

@@ -10,7 +10,12 @@
 // part (T/L)(I - n n^T) is smaller than k then), each bending term
 // k_b |c_i c_j| with c = (1, -2, 1). Every spring of an untorn sheet is
 // counted, so the bound holds whatever tears later. It is conservative: the
-// test compares it with the exact w_max of small sheets.
+// test compares it with the exact w_max of small sheets. With the springs'
+// dashpots (SheetSpec::stiffness_damping_s = beta, the damping ratio of mode
+// w then z = beta w / 2, its damping force taken at v_n) the step is
+// stable for (w dt)^2 + 4 z w dt <= 4, so the limit is
+// (2 / w_max) (sqrt(1 + z^2) - z) with z = beta w_max / 2 (z >= 0 only
+// shrinks it: the fastest mode has the largest z).
 
 #include "models/tearing/sheet_model.h"
 #include "models/tearing/sheet_params.h"

@@ -31,16 +31,30 @@ void TearRunOptions::validate() const {
 
 namespace {
 
+// A sample of TearTrRun::grip_force_n: the mean force over the steps since
+// the last one (so that the series sums to the grips' work exactly).
+void sample_grip_force(Eigen::Matrix3Xd* impulse, TearRun* run) {
+  const double since_s = run->state.time_s - (run->force_time_s.empty() ? 0.0 : run->force_time_s.back());
+  run->force_time_s.push_back(run->state.time_s);
+  run->grip_force_n.push_back(*impulse / since_s);
+  impulse->resize(3, 0);
+}
+
 template <class Integrator>
 void pull(const SheetModel& model, const TearRunOptions& options, const ProgressFn& progress, Integrator* integrator,
           TearRun* run) {
   const long steps = static_cast<long>(std::ceil(options.duration_s / run->time_step_s));
   const long check_every = std::max(1L, steps / 200);
+  const long sample_every = std::max(1L, steps / 1000);
+  Eigen::Matrix3Xd impulse;  // sum of dt x the grips' force since the last sample
   for (long s = 0; s < steps; ++s) {
     const int torn = integrator->step(&run->state);
     for (Eigen::Index g = 0; g < run->state.grip_force_n.cols(); ++g) {
       run->peak_grip_force_n = std::max(run->peak_grip_force_n, run->state.grip_force_n.col(g).norm());
     }
+    impulse = impulse.size() == 0 ? Eigen::Matrix3Xd(run->time_step_s * run->state.grip_force_n)
+                                  : Eigen::Matrix3Xd(impulse + run->time_step_s * run->state.grip_force_n);
+    if ((s + 1) % sample_every == 0) sample_grip_force(&impulse, run);
     if (s % check_every == 0) report(progress, static_cast<double>(s) / static_cast<double>(steps), "tearing");
     // the tear deepens only on a step that tears a cell: judged on every
     // such step (and the first, for a notch already deep enough), the run
@@ -52,6 +66,7 @@ void pull(const SheetModel& model, const TearRunOptions& options, const Progress
       break;
     }
   }
+  if (impulse.size() > 0) sample_grip_force(&impulse, run);
 }
 
 }  // namespace

@@ -2,6 +2,10 @@
 // A tear run: the sheet pulled by its grips with either integrator for a
 // given time, what the grips felt, and the tear it made.
 
+#include <vector>
+
+#include <Eigen/Core>
+
 #include "models/core/base/progress.h"
 #include "models/tearing/implicit_integrator.h"
 #include "models/tearing/sheet_model.h"
@@ -47,6 +51,15 @@ struct TearRun {
   // the tear rule dissipates (under the energy rule a fixed fraction of
   // tear_energy_j_per_m, whatever the mesh); 0 when the sheet did not tear.
   double fracture_energy_per_tear_length_j_per_m = 0.0;
+  // The grips' forces over time: a sample every max(1, steps / 1000) steps
+  // of the duration and one at the last step run, each its end time (s) and
+  // every grip's force on the sheet's held vertices (N, 3 x grips,
+  // SheetState::grip_force_n) averaged over the steps since the previous
+  // sample, so that sum (interval x force . grip velocity) is grip_work_j
+  // (instantaneous samples alias the explicit sheet's fast force ripple:
+  // 7 % off the work in TearRun tests).
+  std::vector<double> force_time_s;
+  std::vector<Eigen::Matrix3Xd> grip_force_n;
   double wall_seconds = 0.0;
 };
 

@@ -12,6 +12,7 @@
 //     stiffness_density_exponent: 3 # springs ~ fibre density^exponent
 //     tear_strain_density_exponent: 1
 //     damping_per_s: 2000
+//     stiffness_damping_s: 0        # Rayleigh beta: dashpots beta k in the springs (sheet_spec.h)
 //     gravity_m_per_s2: [0, -9.81, 0]
 //     notch_length_m: 0.004         # a cut down from the top edge at notch_x_m
 //     notch_x_m: 0.05

@@ -85,11 +85,28 @@ class CompiledTearing final : public CompiledSolver {
       run.set("cpu_s_per_simulated_s", run.cpu_s / simulated_s, "s/s");
       run.set("wall_s_per_simulated_s", run.wall_s / simulated_s, "s/s");
     }
-    if (!options.output_dir.empty()) write_files(pulled.state, options.output_dir, &run);
+    if (!options.output_dir.empty()) {
+      write_files(pulled.state, options.output_dir, &run);
+      write_grip_forces(pulled, options.output_dir, &run);
+    }
     return run;
   }
 
  private:
+  // grip_force.csv: the grips' forces over time (TearRun::grip_force_n).
+  static void write_grip_forces(const TearRun& t, const std::string& dir, Run* run) {
+    std::ofstream csv(dir + "/grip_force.csv");
+    csv << "time_s,grip,force_x_n,force_y_n,force_z_n\n";
+    for (std::size_t k = 0; k < t.force_time_s.size(); ++k) {
+      for (Eigen::Index g = 0; g < t.grip_force_n[k].cols(); ++g) {
+        const Eigen::Vector3d f = t.grip_force_n[k].col(g);
+        csv << fmt::format("{},{},{},{},{}\n", t.force_time_s[k], g, f.x(), f.y(), f.z());
+      }
+    }
+    if (!csv) throw InputError(fmt::format("tearing: could not write {}/grip_force.csv", dir));
+    run->files.push_back("grip_force.csv");
+  }
+
   Run run_tensile(const SheetParams& params, const RunOptions& options, const Stopwatch& clock) const {
     const TensileResult t = run_tensile_test(model_, params, *section_.tensile);
     Run run;

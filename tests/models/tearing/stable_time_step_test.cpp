@@ -1,6 +1,8 @@
 // The stable step bound against the exact largest frequency of small sheets.
 #include "models/tearing/stable_time_step.h"
 
+#include <cmath>
+
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
@@ -55,6 +57,26 @@ TEST(StableTimeStep, ScalesAsOneOverTheSquareRootOfStiffness) {
   stiff.stiffness_n_per_m = 100.0 * soft.stiffness_n_per_m;
   // bending does not scale with the fitted stiffness, so allow its small share
   EXPECT_NEAR(stable_time_step_s(model, soft) / stable_time_step_s(model, stiff), 10.0, 0.01);
+}
+
+}  // namespace
+}  // namespace repose
+
+namespace repose {
+namespace {
+
+// The springs' dashpots (beta) shrink the limit to
+// (2 / w) (sqrt(1 + z^2) - z), z = beta w / 2, w = 2 / (the undamped limit).
+TEST(StableTimeStep, ShrinksWithTheSpringsDashpotsAsTheDampedOscillatorsLimit) {
+  SheetSpec spec = testing::free_sheet_spec(0.03, 12);
+  const SheetParams params;
+  const double undamped = stable_time_step_s(testing::uniform_sheet(spec), params);
+  for (const double beta : {0.1 * undamped, undamped, 10.0 * undamped}) {
+    spec.stiffness_damping_s = beta;
+    const double z = beta / undamped;  // beta w_max / 2
+    EXPECT_NEAR(stable_time_step_s(testing::uniform_sheet(spec), params),
+                undamped * (std::sqrt(1.0 + z * z) - z), 1e-12 * undamped) << beta;
+  }
 }
 
 }  // namespace

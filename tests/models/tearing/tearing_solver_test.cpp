@@ -3,6 +3,7 @@
 #include "models/tearing/tearing_solver.h"
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <string>
 
@@ -87,6 +88,12 @@ TEST(TearingSolver, WritesItsPicturesWhenGivenAFolder) {
   const repose::Run run = compiled->run(compiled->default_values(), options);
   for (const std::string& file : run.files) EXPECT_TRUE(std::filesystem::exists(dir / file)) << file;
   EXPECT_NE(std::find(run.files.begin(), run.files.end(), "tear_edge.png"), run.files.end());
+  EXPECT_NE(std::find(run.files.begin(), run.files.end(), "grip_force.csv"), run.files.end());
+  std::ifstream csv(dir / "grip_force.csv");
+  std::string header, first;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "time_s,grip,force_x_n,force_y_n,force_z_n");
+  EXPECT_TRUE(std::getline(csv, first) && !first.empty());
   std::filesystem::remove_all(dir);
 }
 
