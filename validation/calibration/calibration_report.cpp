@@ -65,8 +65,9 @@ void write_series_table(std::ostream& out, const CalibrationFit& fit) {
         std::string seeds;
         for (const auto& seed : c.seeds) seeds += (seeds.empty() ? "" : ", ") + fmt::format("{:.4g}", seed[k]);
         const std::string time = c.times_s.empty() ? "–" : fmt::format("{:.3g}", c.times_s[k]);
-        out << fmt::format("| {} | {} | {} ({}) | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:+.3g} | {:+.1f} % |\n",
-                           e.name, role_name(e.fit), c.series, c.unit, time, seeds, c.reference[k],
+        const std::string name = c.unit.empty() ? c.series : fmt::format("{} ({})", c.series, c.unit);
+        out << fmt::format("| {} | {} | {} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:+.3g} | {:+.1f} % |\n",
+                           e.name, role_name(e.fit), name, time, seeds, c.reference[k],
                            c.initial[k], c.fitted[k], c.fitted[k] - c.reference[k], 100.0 * error[k]);
       }
     }
