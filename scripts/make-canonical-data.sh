@@ -102,6 +102,18 @@ for cohesion in 0 1e5 3e5; do
     done
   done
 done
+# the rock-scale chute of the Bullet calibration (issue 14, item 6): the fit
+# slope (35 deg) and the held-out one (45 deg) in LIGGGHTS, the reference,
+# and in Bullet with its default contact parameters (the unfitted rung), on
+# three beds each
+for scene in chute_rock chute_rock_45; do
+  for seed in "${seeds[@]}"; do
+    scenes[$scene/seed$seed]=experiments/scenes/$scene.yaml
+    scenes[${scene}_bullet/seed$seed]=experiments/scenes/$scene.yaml
+    solvers[${scene}_bullet/seed$seed]=bullet
+    order+=("$scene/seed$seed" "${scene}_bullet/seed$seed")
+  done
+done
 if [[ $# -gt 0 ]]; then order=("$@"); fi
 
 # the files kept in data/NAME (the rest of the run folder is large or

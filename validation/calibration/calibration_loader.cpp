@@ -89,7 +89,7 @@ void read_series_observable(const YamlMap& map, ObservableSpec* o) {
 ObservableSpec read_observable(const YamlValue& value) {
   using K = ObservableSpec::Kind;
   const std::vector<std::string> kinds = {"height_field", "transect",    "crater_depth", "rim_height",
-                                          "pile_angle",   "furrow_area", "series"};
+                                          "pile_angle",   "furrow_area", "series",     "measure"};
   const std::vector<std::vector<std::string>> keys = {
       {"kind", "weight", "region_m"},
       {"kind", "weight", "from_m", "to_m", "samples"},
@@ -97,13 +97,14 @@ ObservableSpec read_observable(const YamlValue& value) {
       {"kind", "weight", "region_m"},
       {"kind", "weight", "centre_m"},
       {"kind", "weight", "from_m", "to_m", "samples"},
-      {"kind", "weight", "name", "times_s"}};
+      {"kind", "weight", "name", "times_s"},
+      {"kind", "weight", "name"}};
   // the allowed keys depend on the kind: read it first, then check the map against its kind
   if (!value.is_map()) value.fail("a map with a kind");
   const YAML::Node kind_node = value.node()["kind"];
   if (!kind_node) {
     value.map({"kind", "weight", "region_m", "from_m", "to_m", "samples", "centre_m", "name", "times_s"})
-        .fail_missing("kind", "one of height_field, transect, crater_depth, rim_height, pile_angle, furrow_area, series");
+        .fail_missing("kind", "one of height_field, transect, crater_depth, rim_height, pile_angle, furrow_area, series, measure");
   }
   const std::size_t kind = YamlValue(value.file(), kind_node, value.path() + ".kind").choice(kinds);
   const YamlMap map = value.map(keys[kind]);
@@ -119,6 +120,7 @@ ObservableSpec read_observable(const YamlValue& value) {
   }
   if (o.kind == K::kPileAngle) o.centre_m = map.vec2("centre_m", kCoordinate);
   if (o.kind == K::kSeries) read_series_observable(map, &o);
+  if (o.kind == K::kMeasure) o.measure = map.string("name");
   return o;
 }
 

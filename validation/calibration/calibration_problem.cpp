@@ -92,12 +92,15 @@ SeriesByName read_reference_series(const std::string& dir) {
 }
 
 // The reference's values of an observable: of the mean surfaces, or for a
-// series the mean over seeds of each seed's values.
+// series or a measure the mean over seeds of each seed's values.
 std::vector<double> reference_values(const ObservableSpec& o, const PreparedScene& s) {
-  if (o.kind != ObservableSpec::Kind::kSeries) return observe(o, s.initial, s.reference_final);
-  std::vector<double> mean(o.times_s.size(), 0.0);
-  for (const SeriesByName& seed : s.seed_series) {
-    const std::vector<double> v = observe(o, s.initial, s.reference_final, seed);
+  using K = ObservableSpec::Kind;
+  if (o.kind != K::kSeries && o.kind != K::kMeasure) return observe(o, s.initial, s.reference_final);
+  REPOSE_DEMAND(s.seed_series.size() == s.seed_measures.size() && !s.seed_series.empty());
+  std::vector<double> mean;
+  for (std::size_t seed = 0; seed < s.seed_series.size(); ++seed) {
+    const std::vector<double> v = observe(o, s.initial, s.reference_final, s.seed_series[seed], s.seed_measures[seed]);
+    mean.resize(v.size(), 0.0);
     for (std::size_t k = 0; k < v.size(); ++k) mean[k] += v[k] / static_cast<double>(s.seed_series.size());
   }
   return mean;
@@ -113,6 +116,7 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
     s.initial = run.field("height_initial");
     s.reference_final = run.field(s.entry.field);
     s.seed_series.push_back(run.series);
+    s.seed_measures.push_back(measure_values(run));
     return;
   }
   const std::string final_file = s.entry.field + ".npy";
@@ -129,6 +133,7 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
     s.seed_initial.push_back(read_height_field((fs::path(dir) / "height_initial.npy").string(), grid, "the reference's initial surface"));
     s.seed_final.push_back(read_height_field((fs::path(dir) / final_file).string(), grid, "the reference's final surface"));
     s.seed_series.push_back(read_reference_series(dir));
+    s.seed_measures.push_back(read_run_measures(dir));
     const auto cost = read_run_cost(dir);
     costed = costed && cost.has_value();
     if (cost) {
@@ -174,6 +179,12 @@ void parallel_for(std::size_t count, int threads, const std::function<void(std::
 
 }  // namespace
 
+MeasureByName measure_values(const Run& run) {
+  MeasureByName out;
+  for (const auto& [name, measure] : run.measures) out[name] = measure.value;
+  return out;
+}
+
 CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistry& registry, const ProgressFn& progress)
     : spec_(std::move(spec)), registry_(&registry), solver_(registry.find(spec_.fitted_solver)),
       memory_(std::make_shared<RunMemory>()) {
@@ -197,9 +208,13 @@ CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistr
     }
     s.scene = starting_from(std::move(s.scene), s.initial);
     s.solver = solver_->compile(s.scene);
-    for (const ObservableSpec& o : s.entry.observables) {
-      s.reference_values.push_back(reference_values(o, s));
-      s.residual_count += s.reference_values.back().size();
+    try {
+      for (const ObservableSpec& o : s.entry.observables) {
+        s.reference_values.push_back(reference_values(o, s));
+        s.residual_count += s.reference_values.back().size();
+      }
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: reference: {}", s.entry.reference.location, e.what()));
     }
     cells_in(s.entry.rmse_region, s.scene.ground.grid);  // a region without cells is refused now
     if (s.fit()) fit_residual_count_ += s.residual_count;
@@ -322,18 +337,22 @@ Run CalibrationProblem::run_whole(const PreparedScene& scene, const std::vector<
 std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScene& scene, const Run& run) const {
   std::vector<std::vector<double>> out;
   for (const ObservableSpec& o : scene.entry.observables) {
-    out.push_back(observe(o, scene.initial, run.field(scene.entry.field), run.series));
+    out.push_back(observe(o, scene.initial, run.field(scene.entry.field), run.series, measure_values(run)));
   }
   return out;
 }
 
+std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const Run& run) const {
+  return residuals(scene, run.field(scene.entry.field), run.series, measure_values(run));
+}
+
 std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const HeightField& final_height,
-                                                  const SeriesByName& series) const {
+                                                  const SeriesByName& series, const MeasureByName& measures) const {
   std::vector<double> r;
   r.reserve(scene.residual_count);
   for (std::size_t o = 0; o < scene.entry.observables.size(); ++o) {
     const ObservableSpec& spec = scene.entry.observables[o];
-    const std::vector<double> values = observe(spec, scene.initial, final_height, series);
+    const std::vector<double> values = observe(spec, scene.initial, final_height, series, measures);
     const std::vector<double>& reference = scene.reference_values[o];
     REPOSE_DEMAND(values.size() == reference.size());
     const double scale = spec.weight / std::sqrt(static_cast<double>(values.size()));
@@ -354,8 +373,7 @@ std::vector<std::vector<double>> CalibrationProblem::fit_residuals(const std::ve
   const int threads = solver_->thread_safe() ? spec_.solver.threads : 1;
   parallel_for(free_points.size() * fit.size(), threads, [&](std::size_t task) {
     const std::size_t point = task / fit.size(), scene = task % fit.size();
-    const Run whole = run_whole(*fit[scene], values[point]);
-    parts[point][scene] = residuals(*fit[scene], whole.field(fit[scene]->entry.field), whole.series);
+    parts[point][scene] = residuals(*fit[scene], run_whole(*fit[scene], values[point]));
   });
   runs_ += static_cast<long long>(free_points.size() * fit.size());
   std::vector<std::vector<double>> out(free_points.size());

@@ -40,6 +40,9 @@ struct PreparedScene {
   // mass_held_kg.<object>; a heuristic reference's Run::series): what series
   // observables compare with, as the mean over seeds at their times.
   std::vector<SeriesByName> seed_series;
+  // Each seed's scalar measures (a data reference's manifest.json; a heuristic
+  // reference's Run::measures): what measure observables compare with, as their mean.
+  std::vector<MeasureByName> seed_measures;
   std::vector<std::vector<double>> reference_values;  // per observable
   std::size_t residual_count = 0;
   double grain_diameter_m = 0.0;   // of the scene's dem section (0 without one)
@@ -51,6 +54,9 @@ struct PreparedScene {
 // A reference run's surface (.npy) on the scene's grid; InputError naming the
 // file and `what` for another shape or a non-finite height.
 HeightField read_height_field(const std::string& path, const Grid& grid, const std::string& what);
+
+// A run's measures by name (their values in SI units).
+MeasureByName measure_values(const Run& run);
 
 class CalibrationProblem {
  public:
@@ -89,9 +95,10 @@ class CalibrationProblem {
   Run run_whole(const PreparedScene& scene, const std::vector<double>& values) const;
   // weight * (heuristic - reference) / sqrt(count), observable after observable.
   std::vector<double> residuals(const PreparedScene& scene, const HeightField& final_height,
-                                const SeriesByName& series = {}) const;
+                                const SeriesByName& series = {}, const MeasureByName& measures = {}) const;
   // Each observable's values in a run of the calibrated solver (as reference_values).
   std::vector<std::vector<double>> observed(const PreparedScene& scene, const Run& run) const;
+  std::vector<double> residuals(const PreparedScene& scene, const Run& run) const;
 
   // Residuals of all fit scenes (concatenated in scene order) at each point
   // (free parameter values), computed on spec().solver.threads threads.

@@ -48,23 +48,26 @@ std::vector<ObservableSpec> transects_of(const PreparedScene& s) {
   return lines;
 }
 
-// The series observables (held mass at the stages of a scoop): per time the
-// reference's seeds and mean, the solver with the initial and fitted values.
+// The series and measure observables (held mass at the stages of a scoop, the
+// peak force on a wall): per time (one row for a measure) the reference's
+// seeds and mean, the solver with the initial and fitted values.
 void write_series_table(std::ostream& out, const CalibrationFit& fit) {
   bool any = false;
   for (const SceneError& e : fit.scenes) any = any || !e.series.empty();
   if (!any) return;
-  out << "\n## Series per scene (reference: the seeds' mean)\n\n"
+  out << "\n## Series and measures per scene (reference: the seeds' mean)\n\n"
          "| scene | role | series | t (s) | seeds | reference | initial | fitted | fitted − reference | relative |\n"
          "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SceneError& e : fit.scenes) {
     for (const SeriesComparison& c : e.series) {
       const std::vector<double> error = c.fitted_relative_error();
-      for (std::size_t k = 0; k < c.times_s.size(); ++k) {
+      for (std::size_t k = 0; k < c.reference.size(); ++k) {
         std::string seeds;
         for (const auto& seed : c.seeds) seeds += (seeds.empty() ? "" : ", ") + fmt::format("{:.4g}", seed[k]);
-        out << fmt::format("| {} | {} | {} ({}) | {:.3g} | {} | {:.4g} | {:.4g} | {:.4g} | {:+.3g} | {:+.1f} % |\n",
-                           e.name, role_name(e.fit), c.series, c.unit, c.times_s[k], seeds, c.reference[k],
+        const std::string time = c.times_s.empty() ? "–" : fmt::format("{:.3g}", c.times_s[k]);
+        const std::string name = c.unit.empty() ? c.series : fmt::format("{} ({})", c.series, c.unit);
+        out << fmt::format("| {} | {} | {} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:+.3g} | {:+.1f} % |\n",
+                           e.name, role_name(e.fit), name, time, seeds, c.reference[k],
                            c.initial[k], c.fitted[k], c.fitted[k] - c.reference[k], 100.0 * error[k]);
       }
     }

@@ -44,6 +44,18 @@ std::optional<RunCost> read_run_cost(const std::string& folder) {
   return std::nullopt;
 }
 
+std::map<std::string, double> read_run_measures(const std::string& folder) {
+  std::map<std::string, double> out;
+  try {
+    const auto manifest = read_json(fs::path(folder) / "manifest.json");
+    if (!manifest || !manifest->contains("run")) return out;
+    for (const auto& [name, measure] : manifest->at("run").get<Run>().measures) out[name] = measure.value;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: a run record without its measures ({})", folder, e.what()));
+  }
+  return out;
+}
+
 std::string read_run_engine(const std::string& folder) {
   if (fs::exists(fs::path(folder) / "liggghts_manifest.json")) return "liggghts";
   const fs::path path = fs::path(folder) / "manifest.json";

@@ -18,21 +18,32 @@ std::vector<double> SeriesComparison::fitted_relative_error() const {
 }
 
 std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const Run& initial, const Run& fitted) {
+  using K = ObservableSpec::Kind;
   std::vector<SeriesComparison> out;
   for (std::size_t o = 0; o < scene.entry.observables.size(); ++o) {
     const ObservableSpec& spec = scene.entry.observables[o];
-    if (spec.kind != ObservableSpec::Kind::kSeries) continue;
+    if (spec.kind != K::kSeries && spec.kind != K::kMeasure) continue;
     SeriesComparison c;
-    c.series = spec.series;
-    const auto it = fitted.series.find(spec.series);
-    if (it != fitted.series.end()) c.unit = it->second.unit;
-    c.times_s = spec.times_s;
-    for (const SeriesByName& seed : scene.seed_series) {
-      c.seeds.push_back(observe(spec, scene.initial, scene.reference_final, seed));
+    if (spec.kind == K::kSeries) {
+      c.series = spec.series;
+      const auto it = fitted.series.find(spec.series);
+      if (it != fitted.series.end()) c.unit = it->second.unit;
+      c.times_s = spec.times_s;
+    } else {
+      c.series = spec.measure;
+      const auto it = fitted.measures.find(spec.measure);
+      if (it != fitted.measures.end()) c.unit = it->second.unit;
+    }
+    for (std::size_t seed = 0; seed < scene.seed_series.size(); ++seed) {
+      c.seeds.push_back(
+          observe(spec, scene.initial, scene.reference_final, scene.seed_series[seed], scene.seed_measures[seed]));
     }
     c.reference = scene.reference_values[o];
-    c.initial = observe(spec, scene.initial, initial.field("height_final"), initial.series);
-    c.fitted = observe(spec, scene.initial, fitted.field("height_final"), fitted.series);
+    const auto of = [&](const Run& run) {
+      return observe(spec, scene.initial, run.field(scene.entry.field), run.series, measure_values(run));
+    };
+    c.initial = of(initial);
+    c.fitted = of(fitted);
     out.push_back(std::move(c));
   }
   return out;

@@ -1,7 +1,8 @@
 #pragma once
 // A series observable (observable_spec.h, kind series: the mass a bucket
-// holds at the stages of a scoop) compared at its times between the
-// reference's seeds and the calibrated solver with the initial and the
+// holds at the stages of a scoop) compared at its times, or a measure
+// observable (kind measure: the peak force on a wall) as one value, between
+// the reference's seeds and the calibrated solver with the initial and the
 // fitted parameters, for the report and calibration.json.
 
 #include <string>
@@ -13,9 +14,9 @@
 namespace repose {
 
 struct SeriesComparison {
-  std::string series;                      // "mass_held_kg.bucket"
-  std::string unit;                        // of the solver's series ("kg"), "" when unknown
-  std::vector<double> times_s;
+  std::string series;                      // "mass_held_kg.bucket", or the measure's name
+  std::string unit;                        // of the solver's series or measure ("kg"), "" when unknown
+  std::vector<double> times_s;             // empty for a measure (one value)
   std::vector<std::vector<double>> seeds;  // per reference seed, per time
   std::vector<double> reference;           // the seeds' mean, per time
   std::vector<double> initial, fitted;     // the solver's, per time
@@ -23,7 +24,7 @@ struct SeriesComparison {
   std::vector<double> fitted_relative_error() const;
 };
 
-// One comparison per series observable of the scene, in its order.
+// One comparison per series or measure observable of the scene, in its order.
 std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const Run& initial, const Run& fitted);
 
 }  // namespace repose

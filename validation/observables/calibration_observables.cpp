@@ -57,6 +57,17 @@ std::vector<double> series_values(const ObservableSpec& o, const SeriesByName& s
   return out;
 }
 
+std::vector<double> measure_value(const ObservableSpec& o, const MeasureByName& measures) {
+  const auto it = measures.find(o.measure);
+  if (it == measures.end()) {
+    std::string names;
+    for (const auto& [name, value] : measures) names += (names.empty() ? "" : ", ") + name;
+    throw InputError(fmt::format("measure observable: the run has no measure '{}' (it has: {})", o.measure,
+                                 names.empty() ? "none" : names));
+  }
+  return {it->second};
+}
+
 }  // namespace
 
 std::vector<std::size_t> cells_in(const std::optional<CalibrationRegion>& region, const Grid& grid) {
@@ -76,7 +87,7 @@ std::vector<std::size_t> cells_in(const std::optional<CalibrationRegion>& region
 }
 
 std::vector<double> observe(const ObservableSpec& o, const HeightField& initial, const HeightField& final_height,
-                            const SeriesByName& series) {
+                            const SeriesByName& series, const MeasureByName& measures) {
   using K = ObservableSpec::Kind;
   switch (o.kind) {
     case K::kHeightField:
@@ -112,6 +123,8 @@ std::vector<double> observe(const ObservableSpec& o, const HeightField& initial,
     }
     case K::kSeries:
       return series_values(o, series);
+    case K::kMeasure:
+      return measure_value(o, measures);
   }
   REPOSE_DEMAND(false);
   return {};

@@ -15,13 +15,16 @@ namespace repose {
 
 // A run's time series by name (Run::series).
 using SeriesByName = std::map<std::string, TimeSeries>;
+// A run's scalar measures by dotted name, in their SI units (Run::measures).
+using MeasureByName = std::map<std::string, double>;
 
 // The values of one observable (SI units, radians): the cells of a region
 // (row-major), the samples of a transect, one scalar, or a series at its
-// times (TimeSeries::at). Throws InputError when a region holds no cell
-// centre of the grid, or for a series the run does not have (naming those it has).
+// times (TimeSeries::at), or a measure. Throws InputError when a region holds
+// no cell centre of the grid, or for a series or measure the run does not have
+// (naming those it has).
 std::vector<double> observe(const ObservableSpec& observable, const HeightField& initial, const HeightField& final_height,
-                            const SeriesByName& series = {});
+                            const SeriesByName& series = {}, const MeasureByName& measures = {});
 
 // Indices (row-major) of the cells whose centre lies in region (all cells without one).
 std::vector<std::size_t> cells_in(const std::optional<CalibrationRegion>& region, const Grid& grid);

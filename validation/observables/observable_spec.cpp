@@ -11,6 +11,7 @@ const char* observable_kind_name(ObservableSpec::Kind kind) {
     case ObservableSpec::Kind::kPileAngle: return "pile_angle";
     case ObservableSpec::Kind::kFurrowArea: return "furrow_area";
     case ObservableSpec::Kind::kSeries: return "series";
+    case ObservableSpec::Kind::kMeasure: return "measure";
   }
   return "?";
 }

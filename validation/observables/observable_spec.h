@@ -33,6 +33,7 @@ struct ObservableSpec {
     kPileAngle,    // mean flank angle (rad) of the final surface around centre_m (0 without a flank)
     kFurrowArea,   // cross-section (m^2) below the initial surface along from_m..to_m
     kSeries,       // a run's time series (Run::series, time_series.h) `series` at each of times_s
+    kMeasure,      // a run's scalar measure (Run::measures) `measure`, in its SI unit
   };
   Kind kind = Kind::kHeightField;
   double weight = 1.0;  // > 0; residuals are in SI units times this
@@ -46,6 +47,9 @@ struct ObservableSpec {
   // is compared at, >= 1, increasing
   std::string series;
   std::vector<double> times_s;
+  // measure: its dotted name ("chute.peak.force_n"); a particle reference
+  // reads it from its manifest's results
+  std::string measure;
 };
 
 const char* observable_kind_name(ObservableSpec::Kind kind);

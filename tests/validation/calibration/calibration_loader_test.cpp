@@ -91,6 +91,20 @@ TEST(CalibrationLoader, ReadsTheScoopCalibrationsSeriesObservables) {
   EXPECT_EQ(spec.scenes[1].role, CalibrationScene::Role::kHeldOut);
 }
 
+TEST(CalibrationLoader, ReadsTheBulletChuteCalibrationsMeasureObservables) {
+  const CalibrationSpec spec = load_calibration(std::string(REPOSE_SOURCE_DIR) + "/experiments/bullet_chute_fit.yaml");
+  EXPECT_EQ(spec.fitted_solver, "bullet");
+  bool measure = false;
+  for (const ObservableSpec& o : spec.scenes[0].observables) {
+    if (o.kind != ObservableSpec::Kind::kMeasure) continue;
+    measure = true;
+    EXPECT_FALSE(o.measure.empty());
+    EXPECT_TRUE(o.times_s.empty());
+  }
+  EXPECT_TRUE(measure);
+  EXPECT_EQ(spec.scenes[1].role, CalibrationScene::Role::kHeldOut);
+}
+
 // Every file in bad/ starts with "# expect: TEXT": loading it (and making it
 // ready, which checks its parameters against the solver's declarations) must
 // fail with one line that names the file and contains TEXT.

@@ -16,6 +16,7 @@
 #include "experiments/solvers/solver_registry.h"
 #include "models/core/base/error.h"
 #include "models/core/io/npy_io.h"
+#include "models/core/solver/run.h"
 #include "validation/calibration/calibration_fit.h"
 #include "validation/calibration/calibration_loader.h"
 
@@ -126,6 +127,45 @@ TEST(CalibrationProblem, DataSeriesAreEachSeedsHeldMassCsvAveraged) {
   ASSERT_EQ(s.seed_series.size(), 2u);
   EXPECT_DOUBLE_EQ(s.reference_values[0][0], 0.5 * (0.05 + 0.15));  // linear between the samples, then the mean
   EXPECT_DOUBLE_EQ(s.reference_values[0][1], 0.5 * (0.1 + 0.3));
+  fs::remove_all(root);
+}
+
+// A measure observable (a run's scalar measure: the peak force on a wall)
+// against data seeds: each seed's value comes from its manifest.json's run
+// record and the reference is their mean; a run is compared by its own
+// measure, and a run without it is refused by name.
+TEST(CalibrationProblem, AMeasureObservableComparesTheSeedsMeanWithTheRunsMeasure) {
+  const fs::path root = fs::temp_directory_path() / ("repose_measure_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  std::vector<std::string> dirs;
+  for (const auto& [name, force] : {std::pair{"seed1", 0.4}, std::pair{"seed2", 0.6}}) {
+    const fs::path dir = seed_folder(root, name, 0.02, 0.004);
+    repose::Run record;
+    record.solver = "liggghts";
+    record.set("chute.peak.force_n", force, "N");
+    std::ofstream(dir / "manifest.json") << nlohmann::json{{"run", record}}.dump();
+    dirs.push_back(dir.string());
+  }
+  const std::string yaml = "scenes:\n  - scene: " + kDir + "/scenes/indent.yaml\n    reference: {data: [" + dirs[0] +
+                           ", " + dirs[1] +
+                           "]}\n    observables: [{kind: measure, name: chute.peak.force_n, weight: 2}]\n"
+                           "parameters:\n  - {name: ground.sand.alpha, initial: 0.5}\n";
+  const CalibrationProblem problem(load_calibration_from_string(yaml, kDir + "/inline.yaml"), solver_registry());
+  const PreparedScene& s = problem.scenes().front();
+  ASSERT_EQ(s.seed_measures.size(), 2u);
+  ASSERT_EQ(s.reference_values[0].size(), 1u);
+  EXPECT_DOUBLE_EQ(s.reference_values[0][0], 0.5);
+  const HeightField& surface = s.reference_final;
+  const std::vector<double> r = problem.residuals(s, surface, {}, {{"chute.peak.force_n", 0.8}});
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_DOUBLE_EQ(r[0], 2.0 * (0.8 - 0.5));
+  try {
+    problem.residuals(s, surface, {}, {{"chute.front_arrival_s", 0.3}});
+    ADD_FAILURE() << "a run without the measure was compared";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("chute.peak.force_n"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("chute.front_arrival_s"), std::string::npos) << e.what();
+  }
   fs::remove_all(root);
 }
 
