@@ -90,9 +90,11 @@ order+=(ref_scoop_coarse/seed1 ref_scoop_coarse_bullet/seed1)
 # (J/m^3, `--set dem.cohesion_energy_density_j_m3=C`): NAME_cC/seedN.
 # Cohesive grains keep a jitter of ~1e-6 J after their shape is set (sjkr
 # cohesion is undamped), so they count as settled below 3e-6 J.
+# The _deep scenes rain 4 cm (10 grain diameters) instead of 1 cm (2.5), deep
+# enough for flanks at the grains' angle; the snow calibrations use those.
 declare -A sets=()
 for cohesion in 0 1e5 3e5; do
-  for scene in snowfall_table snowfall_roof; do
+  for scene in snowfall_table_deep snowfall_roof_deep snowfall_table snowfall_roof; do
     for seed in "${seeds[@]}"; do
       name="${scene}_c$cohesion/seed$seed"
       scenes[$name]=experiments/scenes/$scene.yaml

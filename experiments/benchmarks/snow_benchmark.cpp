@@ -4,10 +4,11 @@
 // table top, and a sphere of s segments (about s^2 triangles) above it.
 // Arguments: {n, s}. 16 directions, 10 deg spread around a 20 deg tilt.
 //
-// Wall time (llvmpipe rasterises on its own threads). Equal error: both
-// methods sample the same directions, so at equal N their sampling error is
-// the same and they differ by the shadow map's pixel error (measured in
-// tests/models/snow/ray_cast_probability_test.cpp: mean |dP| ~0.01).
+// Wall time (llvmpipe rasterises on its own threads). Equal N, not equal
+// error: at equal N the shadow maps add their pixel error to the sampling
+// error both share, so they need more directions or pixels for the same
+// error; snow_table1_benchmark.cpp measures both at equal error against a
+// high-N reference, over triangle count and map size.
 // Run: bin/snow_benchmark --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 
 #include <benchmark/benchmark.h>

@@ -157,8 +157,8 @@ SceneError scene_error(const CalibrationProblem& problem, const PreparedScene& s
   e.fit = scene.fit();
   e.grain_diameter_m = scene.grain_diameter_m;
   const Run initial = problem.run_whole(scene, initial_values), fitted = problem.run_whole(scene, fitted_values);
-  e.heuristic_initial_params = initial.field("height_final");
-  e.heuristic_fitted = fitted.field("height_final");
+  e.heuristic_initial_params = initial.field(scene.entry.field);  // the entry's field, as the fit compares
+  e.heuristic_fitted = fitted.field(scene.entry.field);
   e.series = compare_series(scene, initial, fitted);
   e.rmse_initial_m = surface_rmse_m(e.heuristic_initial_params, scene.reference_final, region);
   e.rmse_fitted_m = surface_rmse_m(e.heuristic_fitted, scene.reference_final, region);
