@@ -162,7 +162,6 @@ void write_streams(std::ostringstream& s, const Scene& scene, const DemSpec& dem
 }
 
 void write_run_and_settle(std::ostringstream& s, const DemSpec& dem, const SnowfallOptions& o, const SnowfallPlan& p) {
-  const auto n = [](double v) { return liggghts_number(v); };
   s << "thermo_style custom step atoms ke\n"
     << "thermo " << p.settle_chunk_steps << "\n"
     << "thermo_modify lost error norm no\n"
