@@ -44,28 +44,28 @@ double pile_angle_rad(const HeightField& h, const Eigen::Vector2d& centre) {
   }
 }
 
-std::vector<double> series_values(const ObservableSpec& o, const SeriesByName& series) {
-  const auto it = series.find(o.series);
-  if (it == series.end()) {
+// The entry `name` of a run's series or measures, or InputError naming what the run has.
+template <typename Map>
+const typename Map::mapped_type& named_entry(const Map& entries, const std::string& name, const char* kind) {
+  const auto it = entries.find(name);
+  if (it == entries.end()) {
     std::string names;
-    for (const auto& [name, s] : series) names += (names.empty() ? "" : ", ") + name;
-    throw InputError(fmt::format("series observable: the run has no series '{}' (it has: {})", o.series,
+    for (const auto& entry : entries) names += (names.empty() ? "" : ", ") + entry.first;
+    throw InputError(fmt::format("{} observable: the run has no {} '{}' (it has: {})", kind, kind, name,
                                  names.empty() ? "none" : names));
   }
+  return it->second;
+}
+
+std::vector<double> series_values(const ObservableSpec& o, const SeriesByName& series) {
+  const TimeSeries& s = named_entry(series, o.series, "series");
   std::vector<double> out;
-  for (const double t : o.times_s) out.push_back(it->second.at(t));
+  for (const double t : o.times_s) out.push_back(s.at(t));
   return out;
 }
 
 std::vector<double> measure_value(const ObservableSpec& o, const MeasureByName& measures) {
-  const auto it = measures.find(o.measure);
-  if (it == measures.end()) {
-    std::string names;
-    for (const auto& [name, value] : measures) names += (names.empty() ? "" : ", ") + name;
-    throw InputError(fmt::format("measure observable: the run has no measure '{}' (it has: {})", o.measure,
-                                 names.empty() ? "none" : names));
-  }
-  return {it->second};
+  return {named_entry(measures, o.measure, "measure")};
 }
 
 }  // namespace
