@@ -36,9 +36,12 @@ double sphere_radius(const btCollisionObject* o) {
 btScalar pair_rolling(const btCollisionObject* a, const btCollisionObject* b) {
   const bool ea = a->getUserIndex() == kElementTag, eb = b->getUserIndex() == kElementTag;
   if (!ea && !eb) return 0.0;
-  if (!ea) std::swap(a, b);
-  if (!eb) return rolling_lever_m(a->getRollingFriction(), sphere_radius(a), 0.0);
-  return rolling_lever_m(0.5 * (a->getRollingFriction() + b->getRollingFriction()), sphere_radius(a), sphere_radius(b));
+  if (ea && eb) {
+    return rolling_lever_m(0.5 * (a->getRollingFriction() + b->getRollingFriction()), sphere_radius(a), sphere_radius(b));
+  }
+  // an element against the terrain or a building part: only the element is a sphere
+  const btCollisionObject* element = ea ? a : b;
+  return rolling_lever_m(element->getRollingFriction(), sphere_radius(element), 0.0);
 }
 btScalar no_spin(const btCollisionObject*, const btCollisionObject*) { return 0.0; }
 
