@@ -18,6 +18,8 @@ namespace {
 
 constexpr int kElementTag = 1;  // user index of element bodies
 constexpr int kPartTag = 2;     // of building parts; the terrain has 0
+// Bullet's mass unit is at least this many times the heaviest element's mass (header).
+constexpr double kMassUnitsPerElement = 10.0;
 
 btVector3 bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 Eigen::Vector3d eig(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
@@ -72,6 +74,7 @@ class BulletDebrisWorld final : public DebrisWorld {
 
   BulletOptions options_;
   DebrisLedger ledger_;
+  double kg_per_unit_ = 1.0;  // Bullet's mass unit (header): masses in Bullet are kg / kg_per_unit_
   double radius_m_;  // the largest element's
   btDefaultCollisionConfiguration configuration_;
   btCollisionDispatcher dispatcher_{&configuration_};
@@ -92,7 +95,10 @@ class BulletDebrisWorld final : public DebrisWorld {
 BulletDebrisWorld::BulletDebrisWorld(const DebrisWorldSpec& spec, const BulletOptions& options)
     : options_(options), ledger_(spec.joints, spec.parts.size()) {
   radius_m_ = 0.01;
-  for (const DebrisElement& e : spec.elements) radius_m_ = std::max(radius_m_, e.radius_m);
+  for (const DebrisElement& e : spec.elements) {
+    radius_m_ = std::max(radius_m_, e.radius_m);
+    kg_per_unit_ = std::max(kg_per_unit_, kMassUnitsPerElement * element_mass_kg(e));
+  }
   set_globals();
   world_.setGravity(btVector3(0, 0, -spec.gravity_m_s2));
   btContactSolverInfo& info = world_.getSolverInfo();
@@ -107,7 +113,7 @@ BulletDebrisWorld::BulletDebrisWorld(const DebrisWorldSpec& spec, const BulletOp
   add_terrain(spec.terrain, spec.material);
   add_plain(spec.plain_height_m, spec.material);
   for (const DebrisElement& e : spec.elements) {
-    const double mass = element_mass_kg(e);
+    const double mass = element_mass_kg(e) / kg_per_unit_;
     auto* sphere = shapes_.emplace_back(new btSphereShape(e.radius_m)).get();
     btVector3 inertia;
     sphere->calculateLocalInertia(mass, inertia);
@@ -155,10 +161,11 @@ void BulletDebrisWorld::add_part(const DebrisPart& part, const DebrisMaterial& m
   hull->setMargin(margin_m);
   shapes_.emplace_back(hull);
   const Eigen::Vector3d s = 2.0 * part.half_extents_m;
-  const double k = part.mass_kg / 12.0;
+  const double mass = part.mass_kg / kg_per_unit_;
+  const double k = mass / 12.0;
   const btVector3 inertia(k * (s.y() * s.y() + s.z() * s.z()), k * (s.x() * s.x() + s.z() * s.z()),
                           k * (s.x() * s.x() + s.y() * s.y()));
-  btRigidBody* body = add_body(hull, part.mass_kg, inertia, bt(part.centre_m), kPartTag, material.building_friction,
+  btRigidBody* body = add_body(hull, mass, inertia, bt(part.centre_m), kPartTag, material.building_friction,
                                material.building_restitution, 0.0);
   body->setUserIndex2(static_cast<int>(parts_.size()));  // the part's index
   parts_.push_back(body);
@@ -209,7 +216,7 @@ void BulletDebrisWorld::step() {
   ledger_.begin_step();
   for (std::size_t k = 0; k < joints_.size(); ++k) {
     if (ledger_.broken(k)) continue;
-    if (ledger_.record_joint(k, feedback_[k].m_appliedForceBodyA.length())) joints_[k]->setEnabled(false);
+    if (ledger_.record_joint(k, kg_per_unit_ * feedback_[k].m_appliedForceBodyA.length())) joints_[k]->setEnabled(false);
   }
   add_element_forces_on_parts();
 }
@@ -230,7 +237,7 @@ void BulletDebrisWorld::add_element_forces_on_parts() {
       const btManifoldPoint& pt = manifold->getContactPoint(p);
       const btVector3 on_a = pt.m_normalWorldOnB * pt.m_appliedImpulse + pt.m_lateralFrictionDir1 * pt.m_appliedImpulseLateral1 +
                              pt.m_lateralFrictionDir2 * pt.m_appliedImpulseLateral2;
-      ledger_.add_part_force(part, (part_a ? 1.0 : -1.0) / dt * eig(on_a));
+      ledger_.add_part_force(part, (part_a ? kg_per_unit_ : -kg_per_unit_) / dt * eig(on_a));
     }
   }
 }

@@ -21,5 +21,7 @@ TEST(BulletDebrisWorld, ASlowBodyLeavesAStrongHouseStanding) {
 
 TEST(BulletDebrisWorld, AnElementRestingOnAPartWeighsOnIt) { expect_a_resting_element_weighs_on_its_part(make_world); }
 
+TEST(BulletDebrisWorld, RollingResistanceStopsAHeavyElement) { expect_rolling_resistance_stops_a_heavy_element(make_world); }
+
 }  // namespace
 }  // namespace repose

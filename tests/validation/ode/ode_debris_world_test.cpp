@@ -21,5 +21,7 @@ TEST(OdeDebrisWorld, ASlowBodyLeavesAStrongHouseStanding) {
 
 TEST(OdeDebrisWorld, AnElementRestingOnAPartWeighsOnIt) { expect_a_resting_element_weighs_on_its_part(make_world); }
 
+TEST(OdeDebrisWorld, RollingResistanceStopsAHeavyElement) { expect_rolling_resistance_stops_a_heavy_element(make_world); }
+
 }  // namespace
 }  // namespace repose
