@@ -116,6 +116,14 @@ for scene in chute_rock chute_rock_45; do
     order+=("$scene/seed$seed" "${scene}_bullet/seed$seed")
   done
 done
+# the debris flow on generated terrain against two buildings (issue 14,
+# item 4): one run per engine (the scene has no random bed)
+scenes[terrain_debris]=experiments/scenes/terrain_debris.yaml
+for engine in bullet ode; do
+  scenes[terrain_debris_$engine]=experiments/scenes/terrain_debris.yaml
+  solvers[terrain_debris_$engine]=$engine
+done
+order+=(terrain_debris terrain_debris_bullet terrain_debris_ode)
 if [[ $# -gt 0 ]]; then order=("$@"); fi
 
 # the files kept in data/NAME (the rest of the run folder is large or
@@ -142,7 +150,10 @@ for name in "${order[@]}"; do
   mkdir -p "$(dirname "$target")"
   rm -rf "$target.tmp"
   mkdir -p "$target.tmp"
-  if [[ "$solver" == liggghts && -f "$runs/$name/snowfall.in" ]]; then
+  if [[ -f "$runs/$name/front.csv" ]]; then  # a debris flow (validation/rigid/debris_run.h): no bed, frames stay in RUNS
+    cp "$runs/$name/manifest.json" "$runs/$name/parts.json" "$target.tmp/"
+    for f in debris.in log.liggghts; do if [[ -f "$runs/$name/$f" ]]; then cp "$runs/$name/$f" "$target.tmp/"; fi; done
+  elif [[ "$solver" == liggghts && -f "$runs/$name/snowfall.in" ]]; then
     for f in "${keep_snowfall[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done
   elif [[ "$solver" == liggghts ]]; then
     for f in "${keep_liggghts[@]}"; do cp "$runs/$name/$f" "$target.tmp/"; done

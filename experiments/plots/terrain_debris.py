@@ -4,13 +4,16 @@ usage: python3 terrain_debris.py EXPERIMENT_DIR
 Reads every run folder EXPERIMENT_DIR/NAME that holds front.csv (a rigid
 engine's debris run, validation/rigid/debris_run.h: terrain.obj, parts.json,
 frames/elements_NNN.npy (x y z r), frames/parts_NNN.npy (x y z qw qx qy qz),
-front.csv, buildings.csv) and writes, per run:
+front.csv, buildings.csv, building_forces.csv; LIGGGHTS' debris run writes
+the same files, validation/liggghts_debris) and writes, per run:
   debris_NAME_frames.png  the collapse as a series of six frames seen from
                           above: the terrain shaded by height, the elements
                           coloured by layer (radius), each building part's
                           outline (red once it has moved more than 5 cm);
 and for all runs together debris_front.png: the front along the flow, its
-speed and the joints broken against time, one colour per engine.
+speed, the joints broken and the force of the elements on each building
+(binned, building_forces.csv) against time, one colour per engine, one line
+style per building.
 A run folder with terrain_mesh.obj (the terrain solver's) gets its contour
 and mesh figure through terrain_figure.py: the chain from key contours on.
 """
@@ -75,6 +78,19 @@ def read_front(folder):
     return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
 
 
+def read_forces(folder):
+    """building_forces.csv as (time_s, {building: force_n}); None when the run has none."""
+    path = os.path.join(folder, "building_forces.csv")
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        return None
+    names = [k for k in rows[0] if k != "time_s"]
+    return np.array([float(r["time_s"]) for r in rows]), {k: np.array([float(r[k]) for r in rows]) for k in names}
+
+
 def draw_frames(folder, name, out_dir):
     v, f = terrain_figure.read_obj(os.path.join(folder, "terrain.obj"))
     tri = mtri.Triangulation(v[:, 0], v[:, 1], f)
@@ -114,15 +130,25 @@ def draw_frames(folder, name, out_dir):
     plt.close(fig)
 
 
+STYLES = ["-", "--", ":", "-."]
+
+
 def draw_fronts(runs, out_dir):
-    fig, axes = plt.subplots(1, 3, figsize=(14, 4))
-    for name, folder in runs:
+    fig, axes = plt.subplots(1, 4, figsize=(18, 4))
+    for k, (name, folder) in enumerate(runs):
+        colour = "C{}".format(k)
         d = read_front(folder)
-        axes[0].plot(d["time_s"], d["front_m"], label=name)
-        axes[1].plot(d["time_s"], d["front_speed_m_s"], label=name + " front")
-        axes[1].plot(d["time_s"], d["mean_speed_m_s"], "--", label=name + " mean element")
-        axes[2].step(d["time_s"], d["joints_broken"], where="post", label=name)
-    for ax, label in zip(axes, ["front along the flow (m)", "speed (m/s)", "joints broken"]):
+        axes[0].plot(d["time_s"], d["front_m"], color=colour, label=name)
+        axes[1].plot(d["time_s"], d["front_speed_m_s"], color=colour, label=name + " front")
+        axes[1].plot(d["time_s"], d["mean_speed_m_s"], "--", color=colour, label=name + " mean element")
+        axes[2].step(d["time_s"], d["joints_broken"], where="post", color=colour, label=name)
+        forces = read_forces(folder)
+        if forces is not None:
+            t, by_building = forces
+            for j, (building, f) in enumerate(by_building.items()):
+                axes[3].plot(t, f / 1e6, STYLES[j % len(STYLES)], color=colour, label="{} {}".format(name, building))
+    labels = ["front along the flow (m)", "speed (m/s)", "joints broken", "force of the elements on a building (MN)"]
+    for ax, label in zip(axes, labels):
         ax.set_xlabel("time (s)")
         ax.set_ylabel(label)
         ax.legend(fontsize=7)

@@ -7,7 +7,7 @@
 #include "models/snow/snow_solver.h"
 #include "models/terrain/terrain_solver.h"
 #include "validation/bullet/bullet_solver.h"
-#include "validation/liggghts/liggghts_solver.h"
+#include "validation/liggghts_debris/liggghts_debris_solver.h"
 #include "validation/ode/ode_solver.h"
 
 namespace repose {
@@ -18,7 +18,7 @@ SolverRegistry make_registry() {
   SolverRegistry registry;
   registry.add(std::make_shared<GroundSolver>());
   registry.add(std::make_shared<HeightSpanSolver>());
-  registry.add(std::make_shared<LiggghtsSolver>());
+  registry.add(std::make_shared<LiggghtsDebrisSolver>());  // LiggghtsSolver, and terrain debris
   registry.add(std::make_shared<BulletSolver>());
   registry.add(std::make_shared<OdeSolver>());
   registry.add(std::make_shared<TearingSolver>());

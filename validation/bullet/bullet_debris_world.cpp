@@ -6,6 +6,10 @@
 #include <vector>
 
 #include "models/core/base/error.h"
+#include "validation/bullet/bullet_globals.h"
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+
+#include "validation/rigid/debris_ledger.h"
 #include "validation/rigid/rigid_world.h"
 
 namespace repose {
@@ -14,6 +18,8 @@ namespace {
 
 constexpr int kElementTag = 1;  // user index of element bodies
 constexpr int kPartTag = 2;     // of building parts; the terrain has 0
+// Bullet's mass unit is at least this many times the heaviest element's mass (header).
+constexpr double kMassUnitsPerElement = 10.0;
 
 btVector3 bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 Eigen::Vector3d eig(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
@@ -43,7 +49,6 @@ btScalar pair_rolling(const btCollisionObject* a, const btCollisionObject* b) {
   const btCollisionObject* element = ea ? a : b;
   return rolling_lever_m(element->getRollingFriction(), sphere_radius(element), 0.0);
 }
-btScalar no_spin(const btCollisionObject*, const btCollisionObject*) { return 0.0; }
 
 class BulletDebrisWorld final : public DebrisWorld {
  public:
@@ -53,8 +58,9 @@ class BulletDebrisWorld final : public DebrisWorld {
   double time_step_s() const override { return options_.rigid.time_step_s; }
   GrainSet elements() const override;
   std::vector<Pose> part_poses() const override;
-  std::vector<bool> joints_broken() const override;
-  std::vector<double> joint_forces_n() const override;
+  std::vector<bool> joints_broken() const override { return ledger_.joints_broken(); }
+  std::vector<double> joint_forces_n() const override { return ledger_.joint_forces_n(); }
+  std::vector<Eigen::Vector3d> part_element_forces_n() const override { return ledger_.part_forces_n(); }
 
  private:
   void set_globals() const;
@@ -64,8 +70,11 @@ class BulletDebrisWorld final : public DebrisWorld {
   void add_plain(double height_m, const DebrisMaterial& material);
   void add_part(const DebrisPart& part, const DebrisMaterial& material, double margin_m);
   void add_joint(const DebrisJoint& joint);
+  void add_element_forces_on_parts();
 
   BulletOptions options_;
+  DebrisLedger ledger_;
+  double kg_per_unit_ = 1.0;  // Bullet's mass unit (header): masses in Bullet are kg / kg_per_unit_
   double radius_m_;  // the largest element's
   btDefaultCollisionConfiguration configuration_;
   btCollisionDispatcher dispatcher_{&configuration_};
@@ -81,13 +90,15 @@ class BulletDebrisWorld final : public DebrisWorld {
   std::vector<btRigidBody*> parts_;
   std::vector<std::unique_ptr<btFixedConstraint>> joints_;
   std::vector<btJointFeedback> feedback_;  // per joint (sized once: the constraints point into it)
-  std::vector<double> break_force_n_;
-  std::vector<double> force_n_;            // per joint, of the last step
 };
 
-BulletDebrisWorld::BulletDebrisWorld(const DebrisWorldSpec& spec, const BulletOptions& options) : options_(options) {
+BulletDebrisWorld::BulletDebrisWorld(const DebrisWorldSpec& spec, const BulletOptions& options)
+    : options_(options), ledger_(spec.joints, spec.parts.size()) {
   radius_m_ = 0.01;
-  for (const DebrisElement& e : spec.elements) radius_m_ = std::max(radius_m_, e.radius_m);
+  for (const DebrisElement& e : spec.elements) {
+    radius_m_ = std::max(radius_m_, e.radius_m);
+    kg_per_unit_ = std::max(kg_per_unit_, kMassUnitsPerElement * element_mass_kg(e));
+  }
   set_globals();
   world_.setGravity(btVector3(0, 0, -spec.gravity_m_s2));
   btContactSolverInfo& info = world_.getSolverInfo();
@@ -102,7 +113,7 @@ BulletDebrisWorld::BulletDebrisWorld(const DebrisWorldSpec& spec, const BulletOp
   add_terrain(spec.terrain, spec.material);
   add_plain(spec.plain_height_m, spec.material);
   for (const DebrisElement& e : spec.elements) {
-    const double mass = e.density_kg_m3 * 4.0 / 3.0 * M_PI * e.radius_m * e.radius_m * e.radius_m;
+    const double mass = element_mass_kg(e) / kg_per_unit_;
     auto* sphere = shapes_.emplace_back(new btSphereShape(e.radius_m)).get();
     btVector3 inertia;
     sphere->calculateLocalInertia(mass, inertia);
@@ -122,7 +133,6 @@ BulletDebrisWorld::BulletDebrisWorld(const DebrisWorldSpec& spec, const BulletOp
   }
   for (const DebrisPart& part : spec.parts) add_part(part, spec.material, margin_m);
   feedback_.resize(spec.joints.size());
-  force_n_.assign(spec.joints.size(), 0.0);
   for (const DebrisJoint& joint : spec.joints) add_joint(joint);
 }
 
@@ -151,11 +161,14 @@ void BulletDebrisWorld::add_part(const DebrisPart& part, const DebrisMaterial& m
   hull->setMargin(margin_m);
   shapes_.emplace_back(hull);
   const Eigen::Vector3d s = 2.0 * part.half_extents_m;
-  const double k = part.mass_kg / 12.0;
+  const double mass = part.mass_kg / kg_per_unit_;
+  const double k = mass / 12.0;
   const btVector3 inertia(k * (s.y() * s.y() + s.z() * s.z()), k * (s.x() * s.x() + s.z() * s.z()),
                           k * (s.x() * s.x() + s.y() * s.y()));
-  parts_.push_back(add_body(hull, part.mass_kg, inertia, bt(part.centre_m), kPartTag, material.building_friction,
-                            material.building_restitution, 0.0));
+  btRigidBody* body = add_body(hull, mass, inertia, bt(part.centre_m), kPartTag, material.building_friction,
+                               material.building_restitution, 0.0);
+  body->setUserIndex2(static_cast<int>(parts_.size()));  // the part's index
+  parts_.push_back(body);
 }
 
 void BulletDebrisWorld::add_joint(const DebrisJoint& joint) {
@@ -165,7 +178,6 @@ void BulletDebrisWorld::add_joint(const DebrisJoint& joint) {
   auto* c = joints_.emplace_back(new btFixedConstraint(*a, *b, a->getWorldTransform().inverse() * anchor,
                                                        b->getWorldTransform().inverse() * anchor)).get();
   c->setJointFeedback(&feedback_[joints_.size() - 1]);
-  break_force_n_.push_back(joint.break_force_n);
   world_.addConstraint(c, true);
 }
 
@@ -190,12 +202,7 @@ BulletDebrisWorld::~BulletDebrisWorld() {
 }
 
 void BulletDebrisWorld::set_globals() const {
-  gContactBreakingThreshold = options_.contact_breaking_fraction * radius_m_;
-  gDbvtMargin = options_.broadphase_margin_fraction * radius_m_;
-  gCalculateCombinedFrictionCallback = pair_friction;
-  gCalculateCombinedRestitutionCallback = pair_restitution;
-  gCalculateCombinedRollingFrictionCallback = pair_rolling;
-  gCalculateCombinedSpinningFrictionCallback = no_spin;
+  set_bullet_globals(options_, radius_m_, {pair_friction, pair_restitution, pair_rolling});
 }
 
 // The solver adds each joint row's force to its feedback; a joint whose
@@ -206,9 +213,32 @@ void BulletDebrisWorld::step() {
   set_globals();
   for (btJointFeedback& f : feedback_) f = btJointFeedback();
   world_.stepSimulation(options_.rigid.time_step_s, 0, options_.rigid.time_step_s);
+  ledger_.begin_step();
   for (std::size_t k = 0; k < joints_.size(); ++k) {
-    force_n_[k] = joints_[k]->isEnabled() ? feedback_[k].m_appliedForceBodyA.length() : 0.0;
-    if (force_n_[k] > break_force_n_[k]) joints_[k]->setEnabled(false);
+    if (ledger_.broken(k)) continue;
+    if (ledger_.record_joint(k, kg_per_unit_ * feedback_[k].m_appliedForceBodyA.length())) joints_[k]->setEnabled(false);
+  }
+  add_element_forces_on_parts();
+}
+
+// The solver applies +impulse along the normal on B to body A and its
+// opposite to B, and the friction impulses along their directions to A
+// (as BulletWorld::object_forces_n reads them).
+void BulletDebrisWorld::add_element_forces_on_parts() {
+  const double dt = options_.rigid.time_step_s;
+  for (int m = 0; m < dispatcher_.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher_.getManifoldByIndexInternal(m);
+    const btCollisionObject *a = manifold->getBody0(), *b = manifold->getBody1();
+    const bool part_a = a->getUserIndex() == kPartTag && b->getUserIndex() == kElementTag;
+    const bool part_b = b->getUserIndex() == kPartTag && a->getUserIndex() == kElementTag;
+    if (!part_a && !part_b) continue;
+    const auto part = static_cast<std::size_t>((part_a ? a : b)->getUserIndex2());
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& pt = manifold->getContactPoint(p);
+      const btVector3 on_a = pt.m_normalWorldOnB * pt.m_appliedImpulse + pt.m_lateralFrictionDir1 * pt.m_appliedImpulseLateral1 +
+                             pt.m_lateralFrictionDir2 * pt.m_appliedImpulseLateral2;
+      ledger_.add_part_force(part, (part_a ? kg_per_unit_ : -kg_per_unit_) / dt * eig(on_a));
+    }
   }
 }
 
@@ -235,16 +265,6 @@ std::vector<Pose> BulletDebrisWorld::part_poses() const {
     out.push_back({eig(t.getOrigin()), Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z())});
   }
   return out;
-}
-
-std::vector<bool> BulletDebrisWorld::joints_broken() const {
-  std::vector<bool> out;
-  for (const auto& c : joints_) out.push_back(!c->isEnabled());
-  return out;
-}
-
-std::vector<double> BulletDebrisWorld::joint_forces_n() const {
-  return force_n_;
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "validation/bullet/bullet_globals.h"
 #include "validation/rigid/rigid_shape.h"
 
 namespace repose {
@@ -41,7 +42,6 @@ btScalar combined_rolling(const btCollisionObject* a, const btCollisionObject* b
   if (is_grain(b)) return rolling_lever_m(a->getRollingFriction(), grain_radius(a), grain_radius(b));
   return rolling_lever_m(b->getRollingFriction(), grain_radius(a), 0.0);
 }
-btScalar no_spinning(const btCollisionObject*, const btCollisionObject*) { return 0.0; }
 
 btVector3 bt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 btTransform bt(const Pose& p) {
@@ -176,12 +176,7 @@ BulletWorld::~BulletWorld() {
 }
 
 void BulletWorld::set_globals() const {
-  gContactBreakingThreshold = options_.contact_breaking_fraction * grain_radius_m_;
-  gDbvtMargin = options_.broadphase_margin_fraction * grain_radius_m_;
-  gCalculateCombinedFrictionCallback = combined_friction;
-  gCalculateCombinedRestitutionCallback = combined_restitution;
-  gCalculateCombinedRollingFrictionCallback = combined_rolling;
-  gCalculateCombinedSpinningFrictionCallback = no_spinning;
+  set_bullet_globals(options_, grain_radius_m_, {combined_friction, combined_restitution, combined_rolling});
 }
 
 btRigidBody* BulletWorld::add_body(btCollisionShape* shape, double mass_kg, const btTransform& at,

@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <mutex>
 #include <vector>
 
 #include "models/core/base/error.h"
+#include "validation/rigid/debris_ledger.h"
 #include "validation/rigid/rigid_world.h"
 
 namespace repose {
@@ -21,6 +23,7 @@ struct GeomInfo {
   double restitution = 0.0;
   double mass_kg = 0.0;   // 0: static
   double rolling_mu = 0.0;  // elements
+  int part = -1;            // parts: the index
 };
 
 void init_ode_once() {
@@ -65,8 +68,9 @@ class OdeDebrisWorld final : public DebrisWorld {
   double time_step_s() const override { return options_.rigid.time_step_s; }
   GrainSet elements() const override;
   std::vector<Pose> part_poses() const override;
-  std::vector<bool> joints_broken() const override { return broken_; }
-  std::vector<double> joint_forces_n() const override { return force_n_; }
+  std::vector<bool> joints_broken() const override { return ledger_.joints_broken(); }
+  std::vector<double> joint_forces_n() const override { return ledger_.joint_forces_n(); }
+  std::vector<Eigen::Vector3d> part_element_forces_n() const override { return ledger_.part_forces_n(); }
 
  private:
   static void near_callback(void* self, dGeomID a, dGeomID b);
@@ -76,7 +80,15 @@ class OdeDebrisWorld final : public DebrisWorld {
   void add_part(const DebrisPart& part, const DebrisMaterial& material);
   void add_joint(const DebrisJoint& joint);
 
+  // A contact between an element and a part whose force is read after the step.
+  struct PartContact {
+    std::size_t part;
+    bool part_is_first;  // the part is the joint's first body (its force is f1)
+  };
+  void add_element_forces_on_parts();
+
   OdeOptions options_;
+  DebrisLedger ledger_;
   dWorldID world_ = nullptr;
   dSpaceID space_ = nullptr;
   dJointGroupID contacts_ = nullptr;
@@ -91,14 +103,13 @@ class OdeDebrisWorld final : public DebrisWorld {
   std::vector<dBodyID> parts_;
   std::vector<dJointID> joints_;
   std::vector<dJointFeedback> feedback_;  // per joint (sized once)
-  std::vector<double> break_force_n_;
-  std::vector<bool> broken_;
-  std::vector<double> force_n_;
+  std::deque<dJointFeedback> contact_feedback_;  // per part contact of this step (a deque: ODE keeps pointers)
+  std::vector<PartContact> part_contacts_;
   std::vector<dContactGeom> scratch_;
 };
 
 OdeDebrisWorld::OdeDebrisWorld(const DebrisWorldSpec& spec, const OdeOptions& options)
-    : options_(options) {
+    : options_(options), ledger_(spec.joints, spec.parts.size()) {
   init_ode_once();
   world_ = dWorldCreate();
   dWorldSetGravity(world_, 0, 0, -spec.gravity_m_s2);
@@ -134,7 +145,7 @@ OdeDebrisWorld::OdeDebrisWorld(const DebrisWorldSpec& spec, const OdeOptions& op
 
   for (const DebrisElement& e : spec.elements) {
     dMass mass;
-    const double kg = e.density_kg_m3 * 4.0 / 3.0 * M_PI * e.radius_m * e.radius_m * e.radius_m;
+    const double kg = element_mass_kg(e);
     dMassSetSphereTotal(&mass, kg, e.radius_m);
     dGeomID geom = dCreateSphere(space_, e.radius_m);
     infos_.push_back({GeomInfo::Kind::kElement, e.radius_m, e.friction, e.restitution, kg, e.rolling_friction});
@@ -147,8 +158,6 @@ OdeDebrisWorld::OdeDebrisWorld(const DebrisWorldSpec& spec, const OdeOptions& op
   for (const DebrisPart& part : spec.parts) add_part(part, spec.material);
   feedback_.resize(spec.joints.size());
   for (const DebrisJoint& joint : spec.joints) add_joint(joint);
-  broken_.assign(joints_.size(), false);
-  force_n_.assign(joints_.size(), 0.0);
 }
 
 dBodyID OdeDebrisWorld::add_body(dGeomID geom, const dMass& mass, const Eigen::Vector3d& at) {
@@ -163,7 +172,8 @@ void OdeDebrisWorld::add_part(const DebrisPart& part, const DebrisMaterial& mate
   const ConvexData& c = convex_.emplace_back(prism_convex(part.hull_m));
   dGeomID geom = dCreateConvex(space_, c.planes.data(), static_cast<unsigned int>(c.planes.size() / 4), c.points.data(),
                                static_cast<unsigned int>(c.points.size() / 3), c.polygons.data());
-  infos_.push_back({GeomInfo::Kind::kPart, 0.0, material.building_friction, material.building_restitution, part.mass_kg});
+  infos_.push_back({GeomInfo::Kind::kPart, 0.0, material.building_friction, material.building_restitution, part.mass_kg,
+                    0.0, static_cast<int>(parts_.size())});
   dGeomSetData(geom, &infos_.back());
   dMass mass;
   const Eigen::Vector3d s = 2.0 * part.half_extents_m;
@@ -189,7 +199,6 @@ void OdeDebrisWorld::add_joint(const DebrisJoint& joint) {
   dJointSetFixedParam(j, dParamERP, options_.erp);
   dJointSetFeedback(j, &feedback_[joints_.size()]);
   joints_.push_back(j);
-  break_force_n_.push_back(joint.break_force_n);
 }
 
 OdeDebrisWorld::~OdeDebrisWorld() {
@@ -232,24 +241,38 @@ void OdeDebrisWorld::collide_pair(dGeomID a, dGeomID b) {
     c.surface.rhoN = 0.0;
     dJointID joint = dJointCreateContact(world_, contacts_, &c);
     dJointAttach(joint, ba, bb);
+    const bool part_a = ia->kind == K::kPart && eb, part_b = ib->kind == K::kPart && ea;
+    if (part_a || part_b) {
+      dJointSetFeedback(joint, &contact_feedback_.emplace_back());
+      part_contacts_.push_back({static_cast<std::size_t>((part_a ? ia : ib)->part), part_a});
+    }
   }
 }
 
 void OdeDebrisWorld::step() {
   dRandSetSeed(random_seed_);
+  contact_feedback_.clear();
+  part_contacts_.clear();
   dSpaceCollide(space_, this, &OdeDebrisWorld::near_callback);
   dWorldQuickStep(world_, options_.rigid.time_step_s);
   dJointGroupEmpty(contacts_);
   random_seed_ = dRandGetSeed();
+  ledger_.begin_step();
   for (std::size_t k = 0; k < joints_.size(); ++k) {
-    if (broken_[k]) continue;
+    if (ledger_.broken(k)) continue;
     const dReal* f = feedback_[k].f1;
-    force_n_[k] = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    if (force_n_[k] > break_force_n_[k]) {
-      dJointDestroy(joints_[k]);
-      broken_[k] = true;
-      force_n_[k] = 0.0;
-    }
+    if (ledger_.record_joint(k, std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]))) dJointDestroy(joints_[k]);
+  }
+  add_element_forces_on_parts();
+}
+
+// A contact joint's feedback: f1 the force on its first body, f2 on its second.
+void OdeDebrisWorld::add_element_forces_on_parts() {
+  auto fb = contact_feedback_.cbegin();
+  for (const PartContact& c : part_contacts_) {
+    const dReal* f = c.part_is_first ? fb->f1 : fb->f2;
+    ledger_.add_part_force(c.part, Eigen::Vector3d(f[0], f[1], f[2]));
+    ++fb;
   }
 }
 

@@ -29,6 +29,9 @@ void DebrisRunOptions::validate() const {
   if (!(front_quantile > 0.0 && front_quantile <= 1.0)) {
     throw InputError(fmt::format("debris: front_quantile = {} must lie in (0, 1]", front_quantile));
   }
+  if (!(force_interval_s > 0.0 && std::isfinite(force_interval_s))) {
+    throw InputError(fmt::format("debris: force_interval_s = {} must be > 0", force_interval_s));
+  }
 }
 
 double debris_front_m(const GrainSet& elements, const Eigen::Vector2d& centre_m, const Eigen::Vector2d& direction,
@@ -44,14 +47,13 @@ double debris_front_m(const GrainSet& elements, const Eigen::Vector2d& centre_m,
   return along[k];
 }
 
-namespace {
-
-DebrisFrame make_frame(const DebrisWorld& world, const DebrisSetup& setup, double t, double quantile) {
+DebrisFrame debris_frame(double t, GrainSet elements, std::vector<Pose> parts, int joints_broken,
+                         const DebrisSetup& setup, double quantile) {
   DebrisFrame f;
   f.time_s = t;
-  f.elements = world.elements();
-  f.parts = world.part_poses();
-  for (bool b : world.joints_broken()) f.joints_broken += b ? 1 : 0;
+  f.elements = std::move(elements);
+  f.parts = std::move(parts);
+  f.joints_broken = joints_broken;
   f.front_m = debris_front_m(f.elements, setup.source_centre_m, setup.flow_direction, quantile);
   f.mean_speed_m_s = f.elements.size() > 0 ? f.elements.velocity_m_s.rowwise().norm().mean() : 0.0;
   for (Eigen::Index i = 0; i < f.elements.size(); ++i) {
@@ -60,6 +62,14 @@ DebrisFrame make_frame(const DebrisWorld& world, const DebrisSetup& setup, doubl
     }
   }
   return f;
+}
+
+namespace {
+
+DebrisFrame make_frame(const DebrisWorld& world, const DebrisSetup& setup, double t, double quantile) {
+  int broken = 0;
+  for (bool b : world.joints_broken()) broken += b ? 1 : 0;
+  return debris_frame(t, world.elements(), world.part_poses(), broken, setup, quantile);
 }
 
 void set_front_speeds(std::vector<DebrisFrame>& frames) {
@@ -73,7 +83,7 @@ void set_front_speeds(std::vector<DebrisFrame>& frames) {
 std::vector<BuildingOutcome> building_outcomes(const DebrisSetup& setup, const DebrisWorld& world,
                                                const std::vector<double>& static_force_n, double moved_m) {
   std::vector<BuildingOutcome> out;
-  for (const std::string& name : setup.building_names) out.push_back({name});
+  for (const std::string& name : setup.building_names) out.emplace_back().name = name;
   const std::vector<Pose> poses = world.part_poses();
   for (std::size_t p = 0; p < setup.spec.parts.size(); ++p) {
     BuildingOutcome& b = out.at(static_cast<std::size_t>(setup.spec.parts[p].building));
@@ -91,6 +101,42 @@ std::vector<BuildingOutcome> building_outcomes(const DebrisSetup& setup, const D
   }
   return out;
 }
+
+// The elements' force on each building, binned (debris_run.h).
+class BuildingForces {
+ public:
+  BuildingForces(const DebrisSetup& setup, double dt) : setup_(setup), dt_(dt), impulse_(setup.building_names.size()) {
+    for (auto& i : impulse_) i.setZero();
+    force_n_.resize(setup.building_names.size());
+  }
+  void add_step(const std::vector<Eigen::Vector3d>& part_force_n) {
+    for (std::size_t p = 0; p < part_force_n.size(); ++p) {
+      impulse_.at(static_cast<std::size_t>(setup_.spec.parts.at(p).building)) += part_force_n[p] * dt_;
+    }
+    ++steps_in_bin_;
+  }
+  void close_bin(double t) {
+    if (steps_in_bin_ == 0) return;
+    time_s_.push_back(t);
+    for (std::size_t b = 0; b < impulse_.size(); ++b) {
+      force_n_[b].push_back(impulse_[b].norm() / (steps_in_bin_ * dt_));
+      impulse_[b].setZero();
+    }
+    steps_in_bin_ = 0;
+  }
+  void store(DebrisRunResult& r) const {
+    r.force_time_s = time_s_;
+    for (std::size_t b = 0; b < r.buildings.size(); ++b) r.buildings[b].force_n = force_n_[b];
+  }
+
+ private:
+  const DebrisSetup& setup_;
+  double dt_;
+  std::vector<Eigen::Vector3d> impulse_;  // per building, of the open bin
+  long steps_in_bin_ = 0;
+  std::vector<double> time_s_;
+  std::vector<std::vector<double>> force_n_;
+};
 
 // On a grid `refine` times finer than the ground's (cells at most half the
 // smallest element's radius, at most 8 times finer), then averaged back.
@@ -114,6 +160,8 @@ DebrisRunResult run_debris(DebrisWorld& world, const DebrisSetup& setup, double 
   const long steps = static_cast<long>(std::ceil(duration_s / dt - 1e-9));
   const double interval = options.frame_interval_s > 0.0 ? options.frame_interval_s : duration_s / 20.0;
   const long every = std::max(1L, std::lround(interval / dt));
+  const long force_every = std::max(1L, std::lround(options.force_interval_s / dt));
+  BuildingForces forces(setup, dt);
   DebrisRunResult r;
   const auto wall0 = std::chrono::steady_clock::now();
   const double cpu0 = process_cpu_time_s();
@@ -122,6 +170,8 @@ DebrisRunResult run_debris(DebrisWorld& world, const DebrisSetup& setup, double 
   for (long s = 1; s <= steps; ++s) {
     world.step();
     if (s == 1) static_force_n = world.joint_forces_n();
+    forces.add_step(world.part_element_forces_n());
+    if (s % force_every == 0 || s == steps) forces.close_bin(s * dt);
     if (s % every == 0 || s == steps) r.frames.push_back(make_frame(world, setup, s * dt, options.front_quantile));
   }
   r.cpu_time_s = process_cpu_time_s() - cpu0;
@@ -129,12 +179,27 @@ DebrisRunResult run_debris(DebrisWorld& world, const DebrisSetup& setup, double 
   r.steps = steps;
   r.simulated_s = steps * dt;
   static_force_n.resize(setup.spec.joints.size(), 0.0);
+  r.buildings = building_outcomes(setup, world, static_force_n, options.moved_threshold_m);
+  forces.store(r);
+  finish_debris_result(setup, options.surface, r);
+  return r;
+}
+
+void finish_debris_result(const DebrisSetup& setup, const SurfaceHeightOptions& surface, DebrisRunResult& r) {
+  REPOSE_DEMAND(!r.frames.empty());
   set_front_speeds(r.frames);
   r.runout_m = r.frames.back().front_m - r.frames.front().front_m;
+  r.peak_front_speed_m_s = 0.0;
   for (const DebrisFrame& f : r.frames) r.peak_front_speed_m_s = std::max(r.peak_front_speed_m_s, f.front_speed_m_s);
-  r.deposit = deposit_depth(r.frames.back().elements, setup, options.surface);
-  r.buildings = building_outcomes(setup, world, static_force_n, options.moved_threshold_m);
-  return r;
+  r.deposit = deposit_depth(r.frames.back().elements, setup, surface);
+  for (BuildingOutcome& o : r.buildings) {
+    REPOSE_DEMAND(o.force_n.size() == r.force_time_s.size());
+    o.peak_force_n = o.impulse_n_s = 0.0;
+    for (std::size_t k = 0; k < r.force_time_s.size(); ++k) {
+      o.peak_force_n = std::max(o.peak_force_n, o.force_n[k]);
+      o.impulse_n_s += o.force_n[k] * (r.force_time_s[k] - (k == 0 ? 0.0 : r.force_time_s[k - 1]));
+    }
+  }
 }
 
 namespace {
@@ -156,6 +221,18 @@ ArrayXXdR parts_array(const std::vector<Pose>& parts) {
   return a;
 }
 
+void write_building_forces_csv(const std::string& path, const DebrisRunResult& r) {
+  std::ofstream out(path);
+  out << "time_s";
+  for (const BuildingOutcome& b : r.buildings) out << "," << b.name;
+  out << "\n";
+  for (std::size_t k = 0; k < r.force_time_s.size(); ++k) {
+    out << fmt::format("{:.6g}", r.force_time_s[k]);
+    for (const BuildingOutcome& b : r.buildings) out << fmt::format(",{:.9g}", b.force_n[k]);
+    out << "\n";
+  }
+}
+
 void write_parts_json(const std::string& path, const DebrisSetup& setup) {
   nlohmann::json parts = nlohmann::json::array();
   for (const DebrisPart& p : setup.spec.parts) {
@@ -170,7 +247,8 @@ void write_parts_json(const std::string& path, const DebrisSetup& setup) {
 
 std::vector<std::string> write_debris_run(const DebrisRunResult& r, const DebrisSetup& setup, const std::string& dir) {
   namespace fs = std::filesystem;
-  std::vector<std::string> files = {"terrain.obj", "front.csv", "buildings.csv", "deposit.npy", "parts.json"};
+  std::vector<std::string> files = {"terrain.obj", "front.csv", "buildings.csv", "building_forces.csv", "deposit.npy",
+                                    "parts.json"};
   write_obj((fs::path(dir) / "terrain.obj").string(), setup.spec.terrain);
   std::ofstream front(fs::path(dir) / "front.csv");
   front << "time_s,front_m,front_speed_m_s,mean_speed_m_s,joints_broken\n";
@@ -179,11 +257,14 @@ std::vector<std::string> write_debris_run(const DebrisRunResult& r, const Debris
                          f.joints_broken);
   }
   std::ofstream buildings(fs::path(dir) / "buildings.csv");
-  buildings << "building,parts,parts_moved,max_displacement_m,joints,joints_broken,static_joint_force_n\n";
+  buildings << "building,parts,parts_moved,max_displacement_m,joints,joints_broken,static_joint_force_n,peak_force_n,"
+               "impulse_n_s\n";
   for (const BuildingOutcome& b : r.buildings) {
-    buildings << fmt::format("\"{}\",{},{},{:.9g},{},{},{:.9g}\n", b.name, b.parts, b.parts_moved, b.max_displacement_m,
-                             b.joints, b.joints_broken, b.static_joint_force_n);
+    buildings << fmt::format("\"{}\",{},{},{:.9g},{},{},{:.9g},{:.9g},{:.9g}\n", b.name, b.parts, b.parts_moved,
+                             b.max_displacement_m, b.joints, b.joints_broken, b.static_joint_force_n, b.peak_force_n,
+                             b.impulse_n_s);
   }
+  write_building_forces_csv((fs::path(dir) / "building_forces.csv").string(), r);
   write_height_field_npy((fs::path(dir) / "deposit.npy").string(), r.deposit);
   write_parts_json((fs::path(dir) / "parts.json").string(), setup);
   fs::create_directories(fs::path(dir) / "frames");

@@ -19,13 +19,26 @@ HeightField ground_on(const TerrainScenery& s, const Grid& grid) {
   return sample_height_field(TerrainSurface(s.terrain.mesh), grid, plain_m);
 }
 
+GrainSet elements_of(const DebrisWorldSpec& spec) {
+  GrainSet g;
+  g.position_m.resize(static_cast<Eigen::Index>(spec.elements.size()), 3);
+  g.radius_m.resize(static_cast<Eigen::Index>(spec.elements.size()));
+  for (std::size_t i = 0; i < spec.elements.size(); ++i) {
+    g.position_m.row(static_cast<Eigen::Index>(i)) = spec.elements[i].centre_m.transpose();
+    g.radius_m(static_cast<Eigen::Index>(i)) = spec.elements[i].radius_m;
+  }
+  return g;
+}
+
 HeightField topped(const HeightField& ground, const GrainSet& elements) {
   HeightField h = surface_height(elements, ground.grid());
   h.heights() = h.heights().max(ground.heights());
   return h;
 }
 
-void set_measures(const DebrisRunResult& r, const DebrisSetup& setup, double dt, Run& run) {
+}  // namespace
+
+void set_debris_measures(const DebrisRunResult& r, const DebrisSetup& setup, double dt, Run& run) {
   run.set("element_count", static_cast<double>(setup.spec.elements.size()), "count");
   run.set("part_count", static_cast<double>(setup.spec.parts.size()), "count");
   run.set("joint_count", static_cast<double>(setup.spec.joints.size()), "count");
@@ -47,12 +60,37 @@ void set_measures(const DebrisRunResult& r, const DebrisSetup& setup, double dt,
     run.set(key + ".joints", b.joints, "count");
     run.set(key + ".joints_broken", b.joints_broken, "count");
     run.set(key + ".static_joint_force_n", b.static_joint_force_n, "N");
+    run.set(key + ".peak_force_n", b.peak_force_n, "N");
+    run.set(key + ".impulse_n_s", b.impulse_n_s, "N s");
     broken += b.joints_broken;
     moved += b.parts_moved;
   }
   run.set("joints_broken", broken, "count");
   run.set("parts_moved", moved, "count");
 }
+
+DebrisSetup solver_debris_setup(const TerrainScene& terrain, const Grid& grid, const DebrisMaterial& material,
+                                double rolling_friction_scale, HeightField* initial) {
+  DebrisSetup setup = debris_setup(terrain, material, rolling_friction_scale);
+  setup.scenery.terrain.height_field = ground_on(setup.scenery, grid);
+  if (initial != nullptr) *initial = topped(setup.scenery.terrain.height_field, elements_of(setup.spec));
+  return setup;
+}
+
+Run debris_run_record(const DebrisRunResult& r, const DebrisSetup& setup, const HeightField& initial, double dt,
+                      const std::string& solver) {
+  Run run;
+  run.solver = solver;
+  run.wall_s = r.wall_time_s;
+  run.cpu_s = r.cpu_time_s;
+  run.fields["height_initial"] = initial;
+  run.fields["height_final"] = topped(setup.scenery.terrain.height_field, r.frames.back().elements);
+  run.fields["deposit"] = r.deposit;
+  set_debris_measures(r, setup, dt, run);
+  return run;
+}
+
+namespace {
 
 class CompiledDebris final : public CompiledSolver {
  public:
@@ -73,37 +111,18 @@ class CompiledDebris final : public CompiledSolver {
     check_values(parameters_, values_si, engine_.name);
     DebrisMaterial material;
     material.building_friction = values_si[1];
-    DebrisSetup setup = debris_setup(terrain_, material, values_si[0]);
-    setup.scenery.terrain.height_field = ground_on(setup.scenery, grid_);
-    const HeightField initial = topped(setup.scenery.terrain.height_field, elements_of(setup.spec));
+    HeightField initial;
+    const DebrisSetup setup = solver_debris_setup(terrain_, grid_, material, values_si[0], &initial);
     const auto world = engine_.make_debris_world(setup.spec);
     const DebrisRunResult r = run_debris(*world, setup, duration_s_);
-    Run run;
-    run.solver = engine_.name;
-    run.wall_s = r.wall_time_s;
-    run.cpu_s = r.cpu_time_s;
-    run.fields["height_initial"] = initial;
-    run.fields["height_final"] = topped(setup.scenery.terrain.height_field, r.frames.back().elements);
-    run.fields["deposit"] = r.deposit;
+    Run run = debris_run_record(r, setup, initial, world->time_step_s(), engine_.name);
     run.stages = {"terrain", engine_.name + "-debris"};
-    set_measures(r, setup, world->time_step_s(), run);
     run.details["engine_version"] = engine_.version;
     if (!options.output_dir.empty()) run.files = write_debris_run(r, setup, options.output_dir);
     return run;
   }
 
  private:
-  static GrainSet elements_of(const DebrisWorldSpec& spec) {
-    GrainSet g;
-    g.position_m.resize(static_cast<Eigen::Index>(spec.elements.size()), 3);
-    g.radius_m.resize(static_cast<Eigen::Index>(spec.elements.size()));
-    for (std::size_t i = 0; i < spec.elements.size(); ++i) {
-      g.position_m.row(static_cast<Eigen::Index>(i)) = spec.elements[i].centre_m.transpose();
-      g.radius_m(static_cast<Eigen::Index>(i)) = spec.elements[i].radius_m;
-    }
-    return g;
-  }
-
   TerrainScene terrain_;
   Grid grid_;
   double duration_s_;

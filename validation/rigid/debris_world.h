@@ -22,8 +22,8 @@
 //
 // A joint breaks in the step after the force it carried exceeds its
 // break_force_n: ODE reads each fixed joint's feedback force and destroys
-// it; Bullet disables the constraint when its applied impulse exceeds
-// break_force_n * time step (setBreakingImpulseThreshold), the same rule.
+// it; Bullet reads each constraint's linear feedback force and disables it
+// (debris_ledger.h keeps the joints' state for both).
 
 #include <functional>
 #include <memory>
@@ -98,6 +98,9 @@ class DebrisWorld {
   virtual std::vector<bool> joints_broken() const = 0;
   // Per joint: the magnitude of the force it carried in the last step (N; 0 once broken).
   virtual std::vector<double> joint_forces_n() const = 0;
+  // Per part: the sum of the contact forces elements put on it in the last
+  // step (N; the contact impulses / time step), world frame.
+  virtual std::vector<Eigen::Vector3d> part_element_forces_n() const = 0;
 };
 
 using DebrisWorldFactory = std::function<std::unique_ptr<DebrisWorld>(const DebrisWorldSpec&)>;

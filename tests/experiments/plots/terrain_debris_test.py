@@ -2,12 +2,13 @@
 import math
 import os
 import sys
+import tempfile
 import unittest
 
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "experiments", "plots"))
-from terrain_debris import convex_hull_2d, part_outlines, rotate  # noqa: E402
+from terrain_debris import convex_hull_2d, part_outlines, read_forces, rotate  # noqa: E402
 
 
 class TerrainDebrisTest(unittest.TestCase):
@@ -27,6 +28,16 @@ class TerrainDebrisTest(unittest.TestCase):
         pose = np.array([10.0, 20.0, 5.0, 1.0, 0.0, 0.0, 0.0])
         outline = part_outlines([hull], [pose])[0]
         np.testing.assert_allclose(sorted(map(tuple, outline)), [(9, 19), (9, 21), (11, 19), (11, 21)])
+
+    def test_building_forces_are_read_per_building_and_absent_without_the_file(self):
+        with tempfile.TemporaryDirectory() as d:
+            self.assertIsNone(read_forces(d))
+            with open(os.path.join(d, "building_forces.csv"), "w") as f:
+                f.write("time_s,house,barn\n0.05,10,0\n0.1,20,1.5\n")
+            t, forces = read_forces(d)
+            np.testing.assert_allclose(t, [0.05, 0.1])
+            self.assertEqual(list(forces), ["house", "barn"])
+            np.testing.assert_allclose(forces["barn"], [0, 1.5])
 
 
 if __name__ == "__main__":

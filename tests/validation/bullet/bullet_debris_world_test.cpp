@@ -19,5 +19,9 @@ TEST(BulletDebrisWorld, ASlowBodyLeavesAStrongHouseStanding) {
   expect_a_slow_body_leaves_a_strong_house_standing(make_world);
 }
 
+TEST(BulletDebrisWorld, AnElementRestingOnAPartWeighsOnIt) { expect_a_resting_element_weighs_on_its_part(make_world); }
+
+TEST(BulletDebrisWorld, RollingResistanceStopsAHeavyElement) { expect_rolling_resistance_stops_a_heavy_element(make_world); }
+
 }  // namespace
 }  // namespace repose

@@ -41,6 +41,12 @@ class SlidingWorld final : public DebrisWorld {
   }
   std::vector<bool> joints_broken() const override { return std::vector<bool>(spec_.joints.size(), steps_ > break_after_); }
   std::vector<double> joint_forces_n() const override { return std::vector<double>(spec_.joints.size(), 1.0); }
+  // kPartForceN along x on every part until the joints break, nothing after.
+  std::vector<Eigen::Vector3d> part_element_forces_n() const override {
+    const Eigen::Vector3d f = steps_ > break_after_ ? Eigen::Vector3d::Zero() : Eigen::Vector3d(kPartForceN, 0, 0);
+    return std::vector<Eigen::Vector3d>(spec_.parts.size(), f);
+  }
+  static constexpr double kPartForceN = 10.0;
 
  private:
   DebrisWorldSpec spec_;
@@ -76,6 +82,26 @@ TEST(DebrisRun, PartsMovedAndJointsBrokenAreCountedPerBuilding) {
   EXPECT_NEAR(r.buildings[0].max_displacement_m, 0.5, 1e-12);
   EXPECT_EQ(r.buildings[0].joints_broken, 6);
   EXPECT_EQ(r.frames.back().joints_broken, 6);
+}
+
+// SlidingWorld pushes every part with kPartForceN for 10 steps of 0.01 s.
+TEST(DebrisRun, TheBuildingForceIsTheSumOverItsPartsBinnedInTime) {
+  const DebrisSetup setup = test_support::house_on_flat_ground(1.0e6);
+  SlidingWorld world(setup, Eigen::Vector3d::Zero(), 10);
+  DebrisRunOptions options;
+  options.force_interval_s = 0.05;
+  const DebrisRunResult r = run_debris(world, setup, 0.3, options);
+  ASSERT_EQ(r.force_time_s.size(), 6u);
+  EXPECT_NEAR(r.force_time_s.back(), 0.3, 1e-12);
+  for (const BuildingOutcome& b : r.buildings) {
+    const double f = b.parts * SlidingWorld::kPartForceN;
+    ASSERT_EQ(b.force_n.size(), 6u);
+    EXPECT_NEAR(b.force_n[0], f, 1e-9);
+    EXPECT_NEAR(b.force_n[1], f, 1e-9);
+    EXPECT_EQ(b.force_n[2], 0.0);
+    EXPECT_NEAR(b.peak_force_n, f, 1e-9);
+    EXPECT_NEAR(b.impulse_n_s, f * 0.1, 1e-9);
+  }
 }
 
 TEST(DebrisRun, TheFrontIsAQuantileAlongTheDirection) {

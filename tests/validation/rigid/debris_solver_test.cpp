@@ -36,6 +36,9 @@ class StillWorld final : public DebrisWorld {
   }
   std::vector<bool> joints_broken() const override { return std::vector<bool>(spec_.joints.size(), false); }
   std::vector<double> joint_forces_n() const override { return std::vector<double>(spec_.joints.size(), 0.0); }
+  std::vector<Eigen::Vector3d> part_element_forces_n() const override {
+    return std::vector<Eigen::Vector3d>(spec_.parts.size(), Eigen::Vector3d::Zero());
+  }
 
  private:
   DebrisWorldSpec spec_;

@@ -104,4 +104,61 @@ inline void expect_a_slow_body_leaves_a_strong_house_standing(const MakeDebrisWo
   EXPECT_EQ(run_house(*world, setup, 1.0).joints_broken, 0);
 }
 
+// An element resting on the roof of the house's highest part: after it
+// settles, the elements' force on that part is the element's weight
+// (straight down), on every other part nothing.
+inline void expect_a_resting_element_weighs_on_its_part(const MakeDebrisWorld& make_world) {
+  DebrisSetup setup = house_on_flat_ground(kStrongJointN);
+  std::size_t top = 0;
+  for (std::size_t p = 0; p < setup.spec.parts.size(); ++p) {
+    if (setup.spec.parts[p].centre_m.z() > setup.spec.parts[top].centre_m.z()) top = p;
+  }
+  const DebrisPart& roof = setup.spec.parts[top];
+  DebrisElement rock;
+  rock.radius_m = 0.5;
+  rock.centre_m = roof.centre_m + Eigen::Vector3d(0, 0, roof.half_extents_m.z() + rock.radius_m + 0.01);
+  setup.spec.elements.push_back(rock);
+  const double weight_n = rock.density_kg_m3 * 4.0 / 3.0 * M_PI * std::pow(rock.radius_m, 3) * setup.spec.gravity_m_s2;
+  const auto world = make_world(setup.spec);
+  const long steps = std::lround(1.0 / world->time_step_s());
+  Eigen::Vector3d mean_n = Eigen::Vector3d::Zero();  // over the last fifth of a second
+  const long averaged = std::lround(0.2 / world->time_step_s());
+  double others_n = 0.0;
+  for (long s = 1; s <= steps; ++s) {
+    world->step();
+    if (s <= steps - averaged) continue;
+    const std::vector<Eigen::Vector3d> f = world->part_element_forces_n();
+    mean_n += f[top] / static_cast<double>(averaged);
+    for (std::size_t p = 0; p < f.size(); ++p) others_n = std::max(others_n, p == top ? 0.0 : f[p].norm());
+  }
+  EXPECT_NEAR(mean_n.z(), -weight_n, 0.02 * weight_n);
+  EXPECT_LT(mean_n.head<2>().norm(), 0.02 * weight_n);
+  EXPECT_EQ(others_n, 0.0);
+}
+
+// A 10.5 t element (r = 1 m) launched at 3 m/s along flat ground, far from
+// the house: it slides until it rolls (at 5/7 of its speed, a solid
+// sphere), then rolling resistance (torque mu_r r N) decelerates it at
+// mu_r g / 1.4; it stops within 1.4 v_roll^2 / (2 mu_r g) plus the short
+// slide (here 0.45 m). Rolling resistance must hold at tonne scale too.
+inline void expect_rolling_resistance_stops_a_heavy_element(const MakeDebrisWorld& make_world) {
+  DebrisSetup setup = house_on_flat_ground(kStrongJointN);
+  DebrisElement rock;
+  rock.radius_m = 1.0;
+  rock.friction = 0.5;
+  rock.rolling_friction = 0.1;
+  rock.restitution = 0.1;
+  rock.centre_m = Eigen::Vector3d(-40, 40, rock.radius_m);
+  rock.velocity_m_s = Eigen::Vector3d(3.0, 0, 0);
+  setup.spec.elements = {rock};
+  const double v_roll = 3.0 * 5.0 / 7.0;
+  const double expected_m = 0.45 + 1.4 * v_roll * v_roll / (2.0 * rock.rolling_friction * setup.spec.gravity_m_s2);
+  const auto world = make_world(setup.spec);
+  const long steps = std::lround(6.0 / world->time_step_s());
+  for (long s = 0; s < steps; ++s) world->step();
+  const GrainSet g = world->elements();
+  EXPECT_NEAR(g.position_m(0, 0) - rock.centre_m.x(), expected_m, 0.2 * expected_m);
+  EXPECT_LT(g.velocity_m_s.row(0).norm(), 0.05);
+}
+
 }  // namespace repose::test_support
