@@ -1,6 +1,6 @@
 """Pressure coefficient against Froude number on the wall and the posts (experiments/chute_obstacles.yaml).
 
-usage: python3 chute_obstacles.py EXPERIMENT_DIR
+usage: python3 chute_obstacles.py EXPERIMENT_DIR [FLOW_DIR]
 Reads EXPERIMENT_DIR/summary.csv (chute.mean.* and chute.peak.* of the wall,
 the first object) and each run's forces.csv (the x force on every object,
 in scene order: the wall, then the posts) and chute_impact.csv (the impact
@@ -9,7 +9,11 @@ long as the wall's (impact frames x frame interval) and starting when the
 post first carries 5 % of its peak; its peak, the largest force averaged
 over 10 ms. Its pressure p = F / (b h), b = POST_WIDTH_M, and C = p / (rho
 v^2) with h, v, rho and Fr the flow's mean in the window upstream of the
-wall (downstream of the posts: an approximation, said so in the figure).
+wall (downstream of the posts, where the posts have thinned the flow: a
+poor approximation, said so in the figure) or, given FLOW_DIR (a run of
+experiments/dem_chute_release.yaml), the flow arriving at the posts: its
+run liggghts_short_SLOPE_HEIGHT (the wall where the first row of posts
+stands, the same block per unit width) for the run named *_SLOPE_HEIGHT.
 Writes chute_obstacles.csv (per run and object: Fr, C of the mean and the
 peak) and chute_obstacles.png (C against Fr, the wall and the posts, with
 the design form C = alpha + k/(2 Fr^2) for k = 1, alpha = 1 and 2, and its
@@ -76,32 +80,52 @@ def number(row, key):
     return float(value) if value not in ("", None) else None
 
 
-def rows_of(experiment_dir):
+FLOW_KEYS = ("chute.mean.froude", "chute.mean.depth_m", "chute.mean.speed_m_s", "chute.mean.bulk_density_kg_m3")
+
+
+def incoming_flows(flow_dir):
+    """{(slope, height): (Fr, h, v, rho)} of FLOW_DIR's liggghts_short_SLOPE_HEIGHT runs ({} without one)."""
+    flows = {}
+    for run in read_summary(flow_dir) if flow_dir else []:
+        parts = run["name"].split("_")
+        if run["name"].startswith("liggghts_short_") and len(parts) == 4:
+            values = tuple(number(run, k) for k in FLOW_KEYS)
+            if None not in values:
+                flows[(parts[2], parts[3])] = values
+    return flows
+
+
+def rows_of(experiment_dir, flow_dir=None):
     out = []
+    flows = incoming_flows(flow_dir)
     for run in read_summary(experiment_dir):
         folder = os.path.join(experiment_dir, run["name"])
-        fr, h, v, rho = (number(run, k) for k in ("chute.mean.froude", "chute.mean.depth_m",
-                                                  "chute.mean.speed_m_s", "chute.mean.bulk_density_kg_m3"))
+        fr, h, v, rho = (number(run, k) for k in FLOW_KEYS)
         if None in (fr, h, v, rho) or not os.path.isfile(os.path.join(folder, "forces.csv")):
             continue
         base = {"run": run["name"], "solver": run["solver"], "slope_deg": number(run, "chute.slope_deg"),
                 "froude": fr, "depth_m": h, "speed_m_s": v, "bulk_density_kg_m3": rho,
                 "solid_fraction": rho / 2500.0}
-        out.append(dict(base, object="wall", mean_coefficient=number(run, "chute.mean.coefficient"),
+        out.append(dict(base, object="wall", flow="at the wall", mean_coefficient=number(run, "chute.mean.coefficient"),
                         peak_coefficient=number(run, "chute.peak.coefficient"),
                         peak_froude=number(run, "chute.peak.froude"),
                         mean_force_n=number(run, "chute.mean.force_n"), peak_force_n=number(run, "chute.peak.force_n")))
         duration = FRAME_S * (number(run, "chute.impact_frame_count") or 1.0)
         t, forces = read_forces(os.path.join(folder, "forces.csv"))
+        key = tuple(run["name"].split("_")[-2:])
+        flow = flows.get(key)
+        pfr, ph, pv, prho = flow if flow else (fr, h, v, rho)
+        post = dict(base, froude=pfr, depth_m=ph, speed_m_s=pv, bulk_density_kg_m3=prho, solid_fraction=prho / 2500.0,
+                    flow="arriving" if flow else "at the wall")
         for k, f in enumerate(forces[1:], start=1):
             mean_f, peak_f = post_load(t, f, duration)
-            out.append(dict(base, object=f"post{k}", mean_coefficient=coefficient(mean_f, POST_WIDTH_M, h, rho, v),
-                            peak_coefficient=coefficient(peak_f, POST_WIDTH_M, h, rho, v), peak_froude=fr,
+            out.append(dict(post, object=f"post{k}", mean_coefficient=coefficient(mean_f, POST_WIDTH_M, ph, prho, pv),
+                            peak_coefficient=coefficient(peak_f, POST_WIDTH_M, ph, prho, pv), peak_froude=pfr,
                             mean_force_n=mean_f, peak_force_n=peak_f))
     return out
 
 
-def draw(experiment_dir, rows):
+def draw(experiment_dir, rows, flow_note):
     fig, ax = plt.subplots(figsize=(7.5, 5.5))
     frs = [r["froude"] for r in rows] or [1.0]
     x = np.linspace(0.7 * min(frs), 1.3 * max(frs), 200)
@@ -124,18 +148,19 @@ def draw(experiment_dir, rows):
     ax.set_yscale("log")
     ax.set_xlabel("Fr = v / sqrt(g h cos slope) (the flow upstream of the wall)")
     ax.set_ylabel("p / (rho v^2)")
-    ax.set_title("chute onto staggered posts and a wall (posts: flow measured at the wall)")
+    ax.set_title(f"chute onto staggered posts and a wall (posts: {flow_note})", fontsize=9)
     ax.legend(fontsize=7)
     fig.tight_layout()
     save(fig, experiment_dir, "chute_obstacles.png", dpi=120)
 
 
 def main():
-    if len(sys.argv) != 2:
+    if len(sys.argv) not in (2, 3):
         sys.exit(__doc__)
     experiment_dir = sys.argv[1]
-    rows = rows_of(experiment_dir)
-    columns = ["run", "solver", "slope_deg", "object", "froude", "peak_froude", "depth_m", "speed_m_s",
+    flow_dir = sys.argv[2] if len(sys.argv) == 3 else None
+    rows = rows_of(experiment_dir, flow_dir)
+    columns = ["run", "solver", "slope_deg", "object", "flow", "froude", "peak_froude", "depth_m", "speed_m_s",
                "bulk_density_kg_m3", "solid_fraction", "mean_force_n", "peak_force_n", "mean_coefficient",
                "peak_coefficient"]
     with open(os.path.join(experiment_dir, "chute_obstacles.csv"), "w", newline="") as f:
@@ -143,7 +168,8 @@ def main():
         w.writerow(columns)
         for r in rows:
             w.writerow([f"{r[c]:.6g}" if isinstance(r[c], float) else r[c] for c in columns])
-    draw(experiment_dir, rows)
+    draw(experiment_dir, rows, "flow arriving, from the short chute's window" if flow_dir
+         else "flow measured at the wall, behind them")
     for r in rows:
         print(f"{r['run']:22s} {r['object']:6s} Fr {r['froude']:.2f} phi {r['solid_fraction']:.2f} "
               f"C mean {r['mean_coefficient']:.2f} peak {r['peak_coefficient']:.2f} F {r['peak_force_n']:.3f} N")

@@ -36,5 +36,18 @@ class PostLoad(unittest.TestCase):
         self.assertEqual([list(c) for c in fx], [[1.0, 7.0], [4.0, 10.0]])
 
 
+class IncomingFlow(unittest.TestCase):
+    def test_the_short_chutes_runs_are_found_by_slope_and_release(self):
+        with tempfile.TemporaryDirectory() as d:
+            with open(os.path.join(d, "summary.csv"), "w") as f:
+                f.write("name,solver,wall_s," + ",".join(chute_obstacles.FLOW_KEYS) + "\n")
+                f.write("liggghts_short_35_0.2,liggghts,1,2.0,0.03,1.5,600\n")
+                f.write("liggghts_35_0.2,liggghts,1,3.0,0.02,1.8,400\n")
+                f.write("liggghts_short_45_0.1,liggghts,1,,,,\n")
+            flows = chute_obstacles.incoming_flows(d)
+        self.assertEqual(flows, {("35", "0.2"): (2.0, 0.03, 1.5, 600.0)})
+        self.assertEqual(chute_obstacles.incoming_flows(None), {})
+
+
 if __name__ == "__main__":
     unittest.main()
