@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <utility>
 #include <vector>
 
@@ -57,6 +58,118 @@ void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<std::pai
   }
 }
 
+// Inclined bed (erosion.h): per material, the height differences a pair
+// may have. Along x, d = h(i+1) - h(i) in [lo, hi]; along y, |d| <= across.
+struct InclinedRule {
+  double lo_m, hi_m, across_m;
+  double sigma;
+  int passes;
+};
+
+InclinedRule inclined_rule(const Material& m, double slope_rad, double cell_m) {
+  const double theta = m.repose_angle_rad;
+  const double hi = slope_rad + theta < std::numbers::pi / 2 ? cell_m * std::tan(slope_rad + theta)
+                                                             : std::numeric_limits<double>::infinity();
+  return {cell_m * std::tan(slope_rad - theta), hi, cell_m * std::tan(theta) / std::cos(slope_rad), m.sigma,
+          m.erosion_iterations};
+}
+
+// The flux of the pair (a, b), b the neighbour at +x (along_x) or +y of a:
+// sigma times the excess over the pair's limits, from the cell that loses,
+// or none. Each side's own material decides whether it loses.
+bool inclined_flux(const std::vector<InclinedRule>& rules, int material_a, int material_b, bool along_x, double ha,
+                   double hb, double tolerance_m, int pass, std::int64_t a, std::int64_t b, Flux* flux) {
+  const double d = hb - ha;
+  const InclinedRule& ra = rules[static_cast<std::size_t>(material_a)];
+  const InclinedRule& rb = rules[static_cast<std::size_t>(material_b)];
+  const double a_limit = along_x ? ra.lo_m : -ra.across_m;  // a loses below it
+  const double b_limit = along_x ? rb.hi_m : rb.across_m;   // b loses above it
+  if (pass < ra.passes && a_limit - d > tolerance_m && ha > 0.0) {
+    *flux = {a, b, ra.sigma * (a_limit - d), 0.0};
+    return true;
+  }
+  if (pass < rb.passes && d - b_limit > tolerance_m && hb > 0.0) {
+    *flux = {b, a, rb.sigma * (d - b_limit), 0.0};
+    return true;
+  }
+  return false;
+}
+
+// On an inclined bed a pass may ask a cell for more than it holds (a thin
+// layer on a slope steeper than the angle of repose flows on): each cell's
+// outflow is scaled down to its material, grouped as cap_inflow groups.
+void cap_outflow(const double* h, std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t, std::size_t>>* by_source) {
+  std::vector<Flux>& fx = *fluxes;
+  by_source->clear();
+  for (std::size_t k = 0; k < fx.size(); ++k) by_source->emplace_back(fx[k].from, k);
+  std::sort(by_source->begin(), by_source->end());
+  for (std::size_t first = 0, last = 0; first < by_source->size(); first = last) {
+    const std::int64_t cell = (*by_source)[first].first;
+    double outflow = 0.0;
+    for (last = first; last < by_source->size() && (*by_source)[last].first == cell; ++last) {
+      outflow += fx[(*by_source)[last].second].amount;
+    }
+    if (!(outflow > h[cell])) continue;
+    const double scale = std::max(0.0, h[cell]) / outflow;
+    for (std::size_t k = first; k < last; ++k) fx[(*by_source)[k].second].amount *= scale;
+  }
+}
+
+ErosionResult erode_inclined(const GroundModel& model, const GroundParams& params, const Ceiling& ceiling,
+                             GroundState* state) {
+  ErosionResult result;
+  const Grid& g = model.grid;
+  std::vector<InclinedRule> rules;
+  int passes = 0;
+  for (const Material& m : params.materials) {
+    rules.push_back(inclined_rule(m, model.options.bed_slope_rad, g.cell_size_m));
+    passes = std::max(passes, m.erosion_iterations);
+  }
+  const double tolerance_m = kErosionToleranceFraction * g.cell_size_m;
+  double* h = state->height.heights().data();
+  ErosionMemory& memory = state->erosion;
+  std::vector<Flux> fluxes;
+  std::vector<std::pair<std::int64_t, std::size_t>> scratch;
+  for (int p = 0; p < passes && !memory.empty(); ++p) {
+    fluxes.clear();
+    for (const std::int64_t c : memory.cells()) {
+      const int i = static_cast<int>(c % g.nx), j = static_cast<int>(c / g.nx);
+      for (const auto& o : kNeighbours) {
+        const int ni = i + o[0], nj = j + o[1];
+        if (!g.contains(ni, nj)) continue;  // closed boundary
+        const std::int64_t n = model.cell(ni, nj);
+        if (n < c && memory.contains(n)) continue;  // each pair once
+        ++result.pair_visits;
+        const bool n_after = o[0] + o[1] > 0;  // n is at +x or +y of c
+        const std::int64_t a = n_after ? c : n, b = n_after ? n : c;
+        Flux f;
+        if (!inclined_flux(rules, model.material_at(a), model.material_at(b), o[0] != 0, h[a], h[b], tolerance_m, p,
+                           a, b, &f)) {
+          continue;
+        }
+        f.ceiling_m = f.to == n ? ceiling.at(ni, nj) : ceiling.at(i, j);
+        fluxes.push_back(f);
+      }
+    }
+    if (fluxes.empty()) break;
+    result.passes = p + 1;
+    cap_outflow(h, &fluxes, &scratch);
+    cap_inflow(h, &fluxes, &scratch);
+    for (const Flux& f : fluxes) {
+      if (!(f.amount > 0.0)) continue;
+      h[f.from] = std::max(0.0, h[f.from] - f.amount);  // a drained cell ends at the base, not 1 ulp below it
+      h[f.to] += f.amount;
+      ++result.moves;
+    }
+    for (const Flux& f : fluxes) {
+      if (!(f.amount > 0.0)) continue;
+      memory.touch(f.from);
+      memory.touch(f.to);
+    }
+  }
+  return result;
+}
+
 }  // namespace
 
 std::vector<double> max_height_differences(const GroundModel& model, const GroundParams& params) {
@@ -71,6 +184,28 @@ bool is_settled(const GroundModel& model, const std::vector<double>& max_dh_m, c
   const int i = static_cast<int>(cell % g.nx), j = static_cast<int>(cell / g.nx);
   const double tolerance_m = kErosionToleranceFraction * g.cell_size_m;
   const double h = height.at(i, j);
+  if (model.options.bed_slope_rad > 0.0) {
+    std::vector<InclinedRule> rules;
+    for (const double dh : max_dh_m) {
+      Material m;
+      m.repose_angle_rad = std::atan(dh / g.cell_size_m);
+      rules.push_back(inclined_rule(m, model.options.bed_slope_rad, g.cell_size_m));
+    }
+    for (const auto& o : kNeighbours) {
+      const int ni = i + o[0], nj = j + o[1];
+      if (!g.contains(ni, nj)) continue;
+      const std::int64_t n = model.cell(ni, nj);
+      const bool n_after = o[0] + o[1] > 0;
+      const std::int64_t a = n_after ? cell : n, b = n_after ? n : cell;
+      const double* hs = height.heights().data();
+      Flux f;
+      if (inclined_flux(rules, model.material_at(a), model.material_at(b), o[0] != 0, hs[a], hs[b], tolerance_m, 0, a,
+                        b, &f)) {
+        return false;
+      }
+    }
+    return true;
+  }
   for (const auto& o : kNeighbours) {
     const int ni = i + o[0], nj = j + o[1];
     if (!g.contains(ni, nj)) continue;
@@ -83,6 +218,7 @@ bool is_settled(const GroundModel& model, const std::vector<double>& max_dh_m, c
 
 ErosionResult erode(const GroundModel& model, const GroundParams& params, const Ceiling& ceiling,
                     GroundState* state) {
+  if (model.options.bed_slope_rad > 0.0) return erode_inclined(model, params, ceiling, state);
   ErosionResult result;
   const Grid& g = model.grid;
   std::vector<PairRule> rules;

@@ -24,6 +24,18 @@
 // Never above an object: the flux into a cell is scaled down so that the
 // cell does not rise above the ceiling (the lowest object underside there).
 // Boundary: closed. No pair crosses the grid edge, nothing leaves.
+// Inclined bed (GroundModelSpec::bed_slope_rad = zeta > 0, a bed-aligned
+// chute: x down the slope, heights normal to the bed, gravity tilted): a
+// pair's surface makes the angle atan(d / cell) - zeta with the horizontal
+// along x, so the repose rule |angle| <= theta allows the difference
+// d = h(i+1) - h(i) in [cell tan(zeta - theta), cell tan(zeta + theta)]
+// (no upper limit once zeta + theta >= 90 deg); across the slope the line
+// is level and |d| cos(zeta) <= cell tan(theta). The excess over a limit
+// moves as above, from the side that loses, each side's own material
+// deciding; with zeta > theta even a layer of uniform depth is over-steep,
+// so material flows down the bed until it piles against an object or the
+// grid's end. Heights stay material above the bed: a pass takes no more out
+// of a cell than it holds (each cell's outflows scaled down together).
 // Tolerance: an excess below kErosionToleranceFraction * cell_size is left
 // alone, so a settled slope exceeds tan(theta) by at most that fraction
 // (1e-6), and a settled region stops being active: a remembered cell is

@@ -73,6 +73,9 @@ void validate(const GroundModelSpec& o) {
     throw FieldError("erosion_memory_steps", "an integer in [0, 65000] (the memory counter is 16-bit)",
                      std::to_string(o.erosion_memory_steps));
   }
+  if (!(o.bed_slope_rad >= 0.0 && o.bed_slope_rad < 80.0 * kRadPerDeg)) {
+    throw FieldError("bed_slope_deg", "an angle in [0, 80) deg", yaml_degrees(o.bed_slope_rad / kRadPerDeg));
+  }
   if (o.coarse_factor < 1 || o.coarse_factor > 64) {
     throw FieldError("coarse_factor", "an integer in [1, 64]", std::to_string(o.coarse_factor));
   }
@@ -119,6 +122,7 @@ std::string GroundModelSection::summary() const {
                                  options.sweep ? "sweep" : "no sweep", options.substeps, options.erosion_memory_steps,
                                  options.coarse_factor,
                                  options.collision == GroundModelSpec::Collision::kCpu ? "cpu" : "osmesa");
+  if (options.bed_slope_rad > 0.0) text += fmt::format(", bed inclined {:.6g} deg", options.bed_slope_rad / kRadPerDeg);
   const BekkerBearing& b = free_bodies.bearing;
   text += b.law == BekkerBearing::Law::kOff
               ? std::string("; free bodies: ODE, no bearing sinkage")

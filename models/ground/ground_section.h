@@ -12,6 +12,7 @@
 //     coarse_factor: 2             # coarsening for 'simple' or far objects
 //     far_distance_m: 0            # objects farther than this from the camera use the coarse grid (0: never)
 //     collision: cpu               # cpu | osmesa
+//     bed_slope_deg: 0             # the bed inclined down +x (a bed-aligned chute; erosion.h)
 //     materials:                   # optional: name -> {preset, alpha, repose_angle_deg, sigma, erosion_iterations}
 //       sand: {alpha: 0.9}         # a preset's name: its values, overridden
 //       clay: {preset: mud, sigma: 0.1}
@@ -43,6 +44,11 @@ struct GroundModelSpec {
   double far_distance_m = 0.0;   // objects farther than this from the camera use the coarse grid (0: never)
   enum class Collision { kOsmesa, kCpu };
   Collision collision = Collision::kCpu;
+  // The bed inclined by this angle, falling along +x, as the dem section's
+  // slope_deg: the grid is bed-aligned (x down the slope, heights normal to
+  // the bed) and gravity is tilted. Erosion's repose rule then holds in the
+  // world frame (erosion.h: inclined bed). [0, 80) deg; 0: a level ground.
+  double bed_slope_rad = 0.0;
 };
 
 // Throws FieldError naming the field and the rule. The loader and
@@ -59,6 +65,7 @@ void ground_model_fields(Visitor& v, GroundModelSpec& g) {
   v.number("far_distance_m", g.far_distance_m, Range::any());
   using C = GroundModelSpec::Collision;
   v.choice("collision", g.collision, std::vector<std::pair<std::string, C>>{{"cpu", C::kCpu}, {"osmesa", C::kOsmesa}});
+  v.angle_deg("bed_slope_deg", g.bed_slope_rad, Range::any());
 }
 
 class GroundModelSection final : public SceneSection {

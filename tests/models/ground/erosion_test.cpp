@@ -194,5 +194,113 @@ TEST(ErosionStability, ValidateRefusesSigmaAboveTheLimit) {
   }
 }
 
+// Inclined bed (erosion.h): a chute of `cells` along x (bed-aligned, the bed
+// falling along +x by slope_deg), `rows` across, its first `block_cells`
+// holding a block of height block_m, all remembered by make_ground_state.
+struct Chute {
+  GroundModel model;
+  GroundState state;
+};
+
+Chute chute(double slope_deg, double theta_deg, double sigma, int cells, int rows, int block_cells, double block_m) {
+  Material m = sand();
+  m.repose_angle_rad = theta_deg * kDeg;
+  m.sigma = sigma;
+  GroundModelSpec options;
+  options.bed_slope_rad = slope_deg * kDeg;
+  options.erosion_memory_steps = 2;
+  GroundModel model = make_plain_ground_model(centred_grid(cells, rows, 0.005), m, options);
+  HeightField h(model.grid, 0.0);
+  for (int j = 0; j < rows; ++j) {
+    for (int i = 0; i < block_cells; ++i) h.at(i, j) = block_m * (1.0 + 0.05 * j);
+  }
+  GroundState state = make_ground_state(model, std::move(h));
+  return {std::move(model), std::move(state)};
+}
+
+// Settles with end_step asking is_settled, as ground_step does; checks after
+// every pass that no height goes below the bed. Returns the steps taken.
+int settle_inclined(const GroundModel& model, GroundState* state, int max_steps) {
+  const GroundParams params{model.materials};
+  const std::vector<double> max_dh = max_height_differences(model, params);
+  int s = 0;
+  for (; s < max_steps && !state->erosion.empty(); ++s) {
+    erode(model, params, Ceiling{}, state);
+    EXPECT_GE(state->height.min_height_m(), 0.0) << "step " << s;
+    state->erosion.end_step([&](std::int64_t c) { return is_settled(model, max_dh, state->height, c); });
+  }
+  return s;
+}
+
+// Every pair of a settled surface, both cells holding material, lies within
+// the world-frame repose rule: along x atan(d / cell) - slope in [-theta,
+// theta], across |d| cos(slope) <= cell tan(theta) (to the tolerance).
+void expect_within_the_inclined_rule(const HeightField& h, double slope_deg, double theta_deg) {
+  const double c = h.grid().cell_size_m, tol = 1.01 * kErosionToleranceFraction * c;
+  const double zeta = slope_deg * kDeg, theta = theta_deg * kDeg;
+  for (int j = 0; j < h.grid().ny; ++j) {
+    for (int i = 0; i < h.grid().nx; ++i) {
+      if (i + 1 < h.grid().nx && h.at(i, j) > 0.0 && h.at(i + 1, j) > 0.0) {
+        const double d = h.at(i + 1, j) - h.at(i, j);
+        EXPECT_GE(d, c * std::tan(zeta - theta) - tol) << i << "," << j;
+        if (zeta + theta < std::numbers::pi / 2) EXPECT_LE(d, c * std::tan(zeta + theta) + tol) << i << "," << j;
+      }
+      if (j + 1 < h.grid().ny && h.at(i, j) > 0.0 && h.at(i, j + 1) > 0.0) {
+        EXPECT_LE(std::abs(h.at(i, j + 1) - h.at(i, j)) * std::cos(zeta), c * std::tan(theta) + tol) << i << "," << j;
+      }
+    }
+  }
+}
+
+TEST(InclinedErosion, SettledSurfacesKeepTheWorldAngleOfReposeAndTheirVolume) {
+  for (const auto& [slope_deg, theta_deg] :
+       {std::pair{10.0, 30.0}, std::pair{35.0, 30.0}, std::pair{35.0, 40.0}, std::pair{45.0, 38.0},
+        std::pair{60.0, 35.0}}) {
+    for (const double sigma : {0.1, 0.25}) {
+      Chute c = chute(slope_deg, theta_deg, sigma, 60, 3, 12, 0.06);
+      const double volume = c.state.height.volume_m3();
+      ASSERT_LT(settle_inclined(c.model, &c.state, 200000), 200000) << slope_deg << " " << theta_deg;
+      SCOPED_TRACE(::testing::Message() << slope_deg << " deg bed, " << theta_deg << " deg, sigma " << sigma);
+      expect_within_the_inclined_rule(c.state.height, slope_deg, theta_deg);
+      EXPECT_NEAR(c.state.height.volume_m3(), volume, 1e-12 * volume);
+      EXPECT_TRUE(c.state.height.all_finite());
+    }
+  }
+}
+
+// Steeper than its angle of repose, the block leaves the top of the chute
+// and piles against its closed lower end, the pile's surface rising toward
+// the end (d >= cell tan(slope - theta) > 0): at the least rise, a wedge of
+// the block's area A ends at the height sqrt(2 A tan(slope - theta)). Below
+// it, the block's front slumps down the chute and its back stays in place.
+TEST(InclinedErosion, ABlockSteeperThanReposeRunsDownAndPilesAgainstTheEnd) {
+  Chute steep = chute(35.0, 30.0, 0.2, 150, 1, 20, 0.1);
+  settle_inclined(steep.model, &steep.state, 200000);
+  const HeightField& h = steep.state.height;
+  EXPECT_LT(h.at(0, 0), 1e-6);  // the top drained
+  const double wedge_end_m = std::sqrt(2.0 * (20 * 0.005 * 0.1) * std::tan(5.0 * kDeg));
+  EXPECT_NEAR(h.at(149, 0), wedge_end_m, 0.1 * wedge_end_m);
+  for (int i = 0; i + 1 < 150; ++i) {
+    if (h.at(i, 0) > 0.0) EXPECT_GT(h.at(i + 1, 0), h.at(i, 0)) << i;
+  }
+  Chute gentle = chute(35.0, 60.0, 0.2, 80, 1, 40, 0.02);
+  settle_inclined(gentle.model, &gentle.state, 200000);
+  EXPECT_EQ(gentle.state.height.at(0, 0), 0.02);  // held by the rule along the block
+  EXPECT_GT(gentle.state.height.at(42, 0), 0.0);  // the front slumped down the chute
+  EXPECT_EQ(gentle.state.height.at(79, 0), 0.0);  // and stopped
+}
+
+// A uniform layer on a bed gentler than the angle of repose is at rest:
+// nothing moves and the memory empties; on a steeper bed it flows.
+TEST(InclinedErosion, AUniformLayerRestsBelowTheAngleOfReposeAndFlowsAbove) {
+  for (const auto& [slope_deg, moves] : {std::pair{25.0, false}, std::pair{35.0, true}}) {
+    Chute c = chute(slope_deg, 30.0, 0.2, 20, 1, 20, 0.01);
+    const ArrayXXdR before = c.state.height.heights();
+    settle_inclined(c.model, &c.state, 5);
+    EXPECT_EQ((c.state.height.heights() != before).any(), moves) << slope_deg;
+    EXPECT_EQ(!c.state.erosion.empty(), moves) << slope_deg;
+  }
+}
+
 }  // namespace
 }  // namespace repose
