@@ -8,6 +8,7 @@
 #include "models/core/io/mesh_io.h"
 #include "models/snow/simulate_snow.h"
 #include "models/snow/snow_model.h"
+#include "models/snow/snow_picture_series.h"
 #include "models/snow/snow_section.h"
 #include "models/snow/snow_surface_mesh.h"
 
@@ -68,7 +69,14 @@ class CompiledSnow final : public CompiledSolver {
     const Stopwatch clock;
     const SnowParams params{values_si[0], values_si[1], values_si[2]};
     SnowState state;
-    const SnowRunSummary summary = simulate_snow(model_, params, &state);
+    std::unique_ptr<SnowPictureSeries> pictures;
+    std::function<void(int, const SnowState&)> on_step;
+    if (!options.output_dir.empty() && model_.options.pictures.any()) {
+      pictures = std::make_unique<SnowPictureSeries>(model_, params.snowfall_scale, options.output_dir);
+      pictures->on_state(make_snow_state(model_));
+      on_step = [&](int, const SnowState& s) { pictures->on_state(s); };
+    }
+    const SnowRunSummary summary = simulate_snow(model_, params, &state, on_step);
     Run run;
     run.solver = "snow";
     run.wall_s = clock.wall_s();
@@ -87,6 +95,7 @@ class CompiledSnow final : public CompiledSolver {
     }
     add_measures(run, model_, state, summary);
     if (!options.output_dir.empty()) write_surfaces(run, model_, state, options.output_dir);
+    if (pictures) run.files.insert(run.files.end(), pictures->files().begin(), pictures->files().end());
     return run;
   }
 
