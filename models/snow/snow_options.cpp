@@ -58,8 +58,6 @@ void validate(const SnowOptions& o) {
           "an integer in [1, 1e6]", std::to_string(o.max_stabilisation_passes));
   require(std::isfinite(o.settle_tolerance_m) && o.settle_tolerance_m > 0.0, "settle_tolerance_m",
           "a length > 0 m", yaml_number(o.settle_tolerance_m));
-  require(std::isfinite(o.edge_hold_m) && o.edge_hold_m >= 0.0, "edge_hold_m", "a length >= 0 m",
-          yaml_number(o.edge_hold_m));
   validate(o.pictures);
 }
 

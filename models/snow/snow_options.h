@@ -49,9 +49,6 @@ struct SnowOptions {
   int max_stabilisation_passes = 50;
   // Excess height over the repose slope that is left alone (m). (0, inf)
   double settle_tolerance_m = 1.0e-6;
-  // Snow an edge cell keeps against falling off its map (stabilisation.h;
-  // a departure from the paper, whose rule is 0). [0, inf)
-  double edge_hold_m = 0.0;
   SnowRenderer renderer = SnowRenderer::kCpu;
   // How P is computed: shadow maps (the paper's method) or the ray-cast
   // baseline of its Table 1 (ray_cast_probability.h), for comparisons.

@@ -20,7 +20,7 @@
 //     moved_fraction: 0.2           # stabilisation, (0, 0.25]
 //     max_stabilisation_passes: 50  # per time step
 //     settle_tolerance_m: 1e-6
-//     edge_hold_m: 0                # snow an edge cell keeps against falling off its map (stabilisation.h)
+//     edge_hold_m: 0                # fitted: snow an edge cell keeps against falling off its map, [0, 1]
 //     renderer: cpu                 # cpu | osmesa
 //     probability: shadow_maps      # shadow_maps | ray_cast (the Table 1 baseline)
 //     picture_times_s: [10, 60]     # pictures/snow_t<time>s.png at these times (snow_picture_options.h)
@@ -64,7 +64,7 @@ void snow_fields(Visitor& v, SnowSpec& s) {
   v.number("moved_fraction", s.options.moved_fraction, Range::any());
   v.integer("max_stabilisation_passes", s.options.max_stabilisation_passes, IntRange{});
   v.number("settle_tolerance_m", s.options.settle_tolerance_m, Range::any());
-  v.number("edge_hold_m", s.options.edge_hold_m, Range::any());
+  v.number("edge_hold_m", s.params.edge_hold_m, Range::any());
   v.choice("renderer", s.options.renderer,
            ChoiceTable<SnowRenderer>{{"cpu", SnowRenderer::kCpu}, {"osmesa", SnowRenderer::kOsmesa}});
   using P = SnowOptions::Probability;

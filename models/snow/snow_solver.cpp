@@ -59,6 +59,8 @@ class CompiledSnow final : public CompiledSolver {
          "standard deviation of each angular deviation of a snowfall direction"},
         {"snowfall_scale", "1", 1.0, 0.01, 100.0, spec.params.snowfall_scale,
          "settled snow depth per depth of the scene's snowfall (how loosely snow packs)"},
+        {"edge_hold_m", "m", 1.0, 0.0, 1.0, spec.params.edge_hold_m,
+         "snow an edge cell keeps against falling off its map (a grain layer; more with cohesion)"},
     };
   }
 
@@ -67,7 +69,7 @@ class CompiledSnow final : public CompiledSolver {
   Run run(const std::vector<double>& values_si, const RunOptions& options) const override {
     check_values(parameters_, values_si, "snow");
     const Stopwatch clock;
-    const SnowParams params{values_si[0], values_si[1], values_si[2]};
+    const SnowParams params{values_si[0], values_si[1], values_si[2], values_si[3]};
     SnowState state;
     std::unique_ptr<SnowPictureSeries> pictures;
     std::function<void(int, const SnowState&)> on_step;

@@ -175,7 +175,7 @@ PassResult stabilisation_pass(const std::vector<SnowMap>& maps, const Stabilisat
 
 StabilisationResult stabilise(const SnowModel& model, const SnowParams& params, SnowState* state) {
   const StabilisationRule rule{std::tan(params.repose_angle_rad), model.options.moved_fraction,
-                               model.options.settle_tolerance_m, model.options.edge_hold_m};
+                               model.options.settle_tolerance_m, params.edge_hold_m};
   StabilisationResult result;
   while (result.passes < model.options.max_stabilisation_passes) {
     const PassResult pass = stabilisation_pass(model.maps, rule, &state->depth_m);
