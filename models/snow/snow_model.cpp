@@ -27,13 +27,17 @@ SnowModel build_snow_model(const std::vector<SnowGroupGeometry>& groups, const G
   std::vector<std::vector<TriangleMesh>> group_meshes;
   for (const SnowGroupGeometry& g : groups) {
     if (g.ground != nullptr) {
+      model.ground_map = static_cast<int>(model.maps.size());
       model.maps.push_back(make_ground_snow_map(g.name, *g.ground, grid));
       group_meshes.push_back({ground_surface_mesh(*g.ground)});
     } else {
       model.maps.push_back(make_object_snow_map(g.name, g.meshes, grid, &renderer));
       group_meshes.push_back(g.meshes);
     }
-    for (const TriangleMesh& m : group_meshes.back()) model.occluders.push_back(m);
+    for (const TriangleMesh& m : group_meshes.back()) {
+      model.occluders.push_back(m);
+      model.occluder_map.push_back(static_cast<int>(model.maps.size()) - 1);
+    }
   }
   set_snow_ceilings(group_meshes, &model.maps);
   return model;
@@ -54,6 +58,7 @@ Grid snow_grid(const Grid& ground, double cell_size_m) {
 
 SnowModel build_snow_model(const Scene& scene, const SnowOptions& options) {
   validate(options);
+  validate_picture_times(options.pictures, scene.time.duration_s);
   const HeightField ground = make_initial_height(scene);
   std::vector<SnowGroupGeometry> groups;
   for (const SnowGroupSpec& spec : options.groups) {

@@ -22,6 +22,8 @@ struct SnowModel {
   Grid grid;               // shared by every map
   std::vector<SnowMap> maps;             // one per group, in options.groups order
   std::vector<TriangleMesh> occluders;   // every group's geometry, world coordinates
+  std::vector<int> occluder_map;         // the map (group) of each occluder
+  int ground_map = -1;                   // the ground group's map, -1 when none
 };
 
 // What a group is made of: the ground height field, or meshes in world coordinates.

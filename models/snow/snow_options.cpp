@@ -58,6 +58,7 @@ void validate(const SnowOptions& o) {
           "an integer in [1, 1e6]", std::to_string(o.max_stabilisation_passes));
   require(std::isfinite(o.settle_tolerance_m) && o.settle_tolerance_m > 0.0, "settle_tolerance_m",
           "a length > 0 m", yaml_number(o.settle_tolerance_m));
+  validate(o.pictures);
 }
 
 }  // namespace repose

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "models/snow/snow_picture_options.h"
 #include "models/snow/snowfall_directions.h"
 #include "models/snow/snowfall_rate.h"
 #include "models/snow/top_down_renderer.h"
@@ -53,6 +54,8 @@ struct SnowOptions {
   // baseline of its Table 1 (ray_cast_probability.h), for comparisons.
   enum class Probability { kShadowMaps, kRayCast };
   Probability probability = Probability::kShadowMaps;
+  // Pictures and animation frames of a run (figures only).
+  SnowPictureOptions pictures;
 };
 
 // Throws FieldError (an InputError) naming the scene key (snow_section.h:

@@ -18,6 +18,8 @@ void validate(const SnowParams& params) {
   }
   const double f = params.snowfall_scale;
   if (!(std::isfinite(f) && f > 0.0 && f <= 100.0)) throw FieldError("snowfall_scale", "a number in (0, 100]", yaml_number(f));
+  const double e = params.edge_hold_m;
+  if (!(std::isfinite(e) && e >= 0.0 && e <= 1.0)) throw FieldError("edge_hold_m", "a length in [0, 1] m", yaml_number(e));
 }
 
 }  // namespace repose

@@ -67,7 +67,13 @@ void SnowSection::write_yaml(YAML::Emitter& out) const {
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "time_s" << YAML::Value << yaml_number(k.time_s)
         << YAML::Key << "rate_m_s" << YAML::Value << yaml_number(k.rate_m_s) << YAML::EndMap;
   }
-  out << YAML::EndSeq << YAML::EndMap;
+  out << YAML::EndSeq;
+  if (!spec.options.pictures.times_s.empty()) {
+    out << YAML::Key << "picture_times_s" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const double t : spec.options.pictures.times_s) out << yaml_number(t);
+    out << YAML::EndSeq;
+  }
+  out << YAML::EndMap;
 }
 
 std::string SnowSection::summary() const {
@@ -81,7 +87,7 @@ std::string SnowSection::summary() const {
 
 std::shared_ptr<const SceneSection> read_snow_section(const YamlValue& value, const Scene& common) {
   auto section = std::make_shared<SnowSection>();
-  const YamlMap map = value.map(field_keys<SnowSpec>(kSnowFields, {"groups", "snowfall", "snowfall_rate_m_s"}));
+  const YamlMap map = value.map(field_keys<SnowSpec>(kSnowFields, {"groups", "snowfall", "snowfall_rate_m_s", "picture_times_s"}));
   read_fields_into(map, kSnowFields, section->spec);
   section->spec.options.groups = read_groups(map.required("groups", "a list of snow groups"), common);
   if (map.has("snowfall") && map.has("snowfall_rate_m_s")) {
@@ -89,8 +95,12 @@ std::shared_ptr<const SceneSection> read_snow_section(const YamlValue& value, co
   }
   if (auto rate = map.get("snowfall_rate_m_s")) section->spec.options.snowfall = SnowfallRate(rate->number(Range::non_negative()));
   if (auto keyframes = map.get("snowfall")) section->spec.options.snowfall = read_snowfall(*keyframes);
+  if (auto times = map.get("picture_times_s")) {
+    for (const YamlValue& t : times->list(0)) section->spec.options.pictures.times_s.push_back(t.number(Range::any()));
+  }
   validate_at(map, [&] {
     validate(section->spec.options);
+    validate_picture_times(section->spec.options.pictures, common.time.duration_s);
     validate(section->spec.params);
   });
   return section;

@@ -20,8 +20,15 @@
 //     moved_fraction: 0.2           # stabilisation, (0, 0.25]
 //     max_stabilisation_passes: 50  # per time step
 //     settle_tolerance_m: 1e-6
+//     edge_hold_m: 0                # fitted: snow an edge cell keeps against falling off its map, [0, 1]
 //     renderer: cpu                 # cpu | osmesa
 //     probability: shadow_maps      # shadow_maps | ray_cast (the Table 1 baseline)
+//     picture_times_s: [10, 60]     # pictures/snow_t<time>s.png at these times (snow_picture_options.h)
+//     frame_count: 0                # animation frames/frame_NNNN.png from t = 0 to the end
+//     picture_width_px: 640         # [16, 4096]
+//     picture_height_px: 480
+//     view_elevation_deg: 35        # orthographic camera above the horizontal, [5, 90]
+//     view_azimuth_deg: -60
 //
 // Only scenes with this section run under `--solver snow`.
 
@@ -57,10 +64,16 @@ void snow_fields(Visitor& v, SnowSpec& s) {
   v.number("moved_fraction", s.options.moved_fraction, Range::any());
   v.integer("max_stabilisation_passes", s.options.max_stabilisation_passes, IntRange{});
   v.number("settle_tolerance_m", s.options.settle_tolerance_m, Range::any());
+  v.number("edge_hold_m", s.params.edge_hold_m, Range::any());
   v.choice("renderer", s.options.renderer,
            ChoiceTable<SnowRenderer>{{"cpu", SnowRenderer::kCpu}, {"osmesa", SnowRenderer::kOsmesa}});
   using P = SnowOptions::Probability;
   v.choice("probability", s.options.probability, ChoiceTable<P>{{"shadow_maps", P::kShadowMaps}, {"ray_cast", P::kRayCast}});
+  v.integer("frame_count", s.options.pictures.frame_count, IntRange{});
+  v.integer("picture_width_px", s.options.pictures.width_px, IntRange{});
+  v.integer("picture_height_px", s.options.pictures.height_px, IntRange{});
+  v.angle_deg("view_elevation_deg", s.options.pictures.view_elevation_rad, Range::any());
+  v.angle_deg("view_azimuth_deg", s.options.pictures.view_azimuth_rad, Range::any());
 }
 
 class SnowSection final : public SceneSection {

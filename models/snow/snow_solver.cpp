@@ -8,6 +8,7 @@
 #include "models/core/io/mesh_io.h"
 #include "models/snow/simulate_snow.h"
 #include "models/snow/snow_model.h"
+#include "models/snow/snow_picture_series.h"
 #include "models/snow/snow_section.h"
 #include "models/snow/snow_surface_mesh.h"
 
@@ -58,6 +59,8 @@ class CompiledSnow final : public CompiledSolver {
          "standard deviation of each angular deviation of a snowfall direction"},
         {"snowfall_scale", "1", 1.0, 0.01, 100.0, spec.params.snowfall_scale,
          "settled snow depth per depth of the scene's snowfall (how loosely snow packs)"},
+        {"edge_hold_m", "m", 1.0, 0.0, 1.0, spec.params.edge_hold_m,
+         "snow an edge cell keeps against falling off its map (a grain layer; more with cohesion)"},
     };
   }
 
@@ -66,9 +69,16 @@ class CompiledSnow final : public CompiledSolver {
   Run run(const std::vector<double>& values_si, const RunOptions& options) const override {
     check_values(parameters_, values_si, "snow");
     const Stopwatch clock;
-    const SnowParams params{values_si[0], values_si[1], values_si[2]};
+    const SnowParams params{values_si[0], values_si[1], values_si[2], values_si[3]};
     SnowState state;
-    const SnowRunSummary summary = simulate_snow(model_, params, &state);
+    std::unique_ptr<SnowPictureSeries> pictures;
+    std::function<void(int, const SnowState&)> on_step;
+    if (!options.output_dir.empty() && model_.options.pictures.any()) {
+      pictures = std::make_unique<SnowPictureSeries>(model_, params.snowfall_scale, options.output_dir);
+      pictures->on_state(make_snow_state(model_));
+      on_step = [&](int, const SnowState& s) { pictures->on_state(s); };
+    }
+    const SnowRunSummary summary = simulate_snow(model_, params, &state, on_step);
     Run run;
     run.solver = "snow";
     run.wall_s = clock.wall_s();
@@ -87,6 +97,7 @@ class CompiledSnow final : public CompiledSolver {
     }
     add_measures(run, model_, state, summary);
     if (!options.output_dir.empty()) write_surfaces(run, model_, state, options.output_dir);
+    if (pictures) run.files.insert(run.files.end(), pictures->files().begin(), pictures->files().end());
     return run;
   }
 

@@ -72,7 +72,8 @@ Outflow outflow_of_map(const std::vector<SnowMap>& maps, const std::vector<Array
         if (!g.contains(ni, nj)) continue;
         const Target t = find_target(maps, depth, m, ni, nj, h);
         if (t.map == kNoTarget) continue;
-        const double excess = std::min(h - t.surface_m - drop_at_repose, s);
+        const double held = t.map == static_cast<std::int8_t>(m) ? 0.0 : rule.edge_hold_m;  // falling off the map
+        const double excess = std::min(h - t.surface_m - drop_at_repose, s - held);
         if (!(excess > rule.tolerance_m)) continue;
         targets[d] = t.map;
         excess_of[d] = excess;
@@ -174,7 +175,7 @@ PassResult stabilisation_pass(const std::vector<SnowMap>& maps, const Stabilisat
 
 StabilisationResult stabilise(const SnowModel& model, const SnowParams& params, SnowState* state) {
   const StabilisationRule rule{std::tan(params.repose_angle_rad), model.options.moved_fraction,
-                               model.options.settle_tolerance_m};
+                               model.options.settle_tolerance_m, params.edge_hold_m};
   StabilisationResult result;
   while (result.passes < model.options.max_stabilisation_passes) {
     const PassResult pass = stabilisation_pass(model.maps, rule, &state->depth_m);

@@ -37,6 +37,15 @@
 // so a settled map has no pair steeper than tan(theta) + tolerance / h
 // except where the higher cell holds less than tolerance_m of snow.
 //
+// Edge hold (a departure, off by default): a pair whose snow would fall off
+// the map (onto a lower map or out of the scene) moves only the snow above
+// the first edge_hold_m of the source cell, e_n = min(H_c - H_n - h tan(theta),
+// s_c - edge_hold_m). A granular layer lying flat on a plate up to its edge
+// has no slope to slide down: the DEM snowfall keeps about one grain layer
+// on the table's edge cells (experiments/snow_calibration_*.yaml), where the
+// paper's rule empties them, which its fit then makes up for with a steeper
+// angle.
+//
 // Ceilings (a departure, snow_map.h: set_snow_ceilings): snow never rises
 // above the underside of another group over a cell (a table top over the
 // ground, a box standing on it). What a cell receives in a pass is scaled
@@ -58,6 +67,7 @@ struct StabilisationRule {
   double tan_repose = 1.0;      // tan of the snow angle of repose (may be huge: 90 deg)
   double moved_fraction = 0.2;  // f
   double tolerance_m = 1e-6;
+  double edge_hold_m = 0.0;     // snow kept at a map's edge against falling off it
 };
 
 struct PassResult {

@@ -32,6 +32,9 @@ TEST(SnowParams, RefusalNamesTheField) {
   EXPECT_NE(error_of(SnowParams{0.5, std::nan("")}).find("spread_deg"), std::string::npos);
   EXPECT_NE(error_of(SnowParams{0.5, 0.1, 0.0}).find("snowfall_scale"), std::string::npos);
   EXPECT_NE(error_of(SnowParams{0.5, 0.1, 101.0}).find("snowfall_scale"), std::string::npos);
+  EXPECT_NE(error_of(SnowParams{0.5, 0.1, 1.0, -1e-6}).find("edge_hold_m"), std::string::npos);
+  EXPECT_NE(error_of(SnowParams{0.5, 0.1, 1.0, std::nan("")}).find("edge_hold_m"), std::string::npos);
+  EXPECT_EQ(error_of(SnowParams{0.5, 0.1, 1.0, 0.004}), "");
 }
 
 }  // namespace

@@ -79,6 +79,40 @@ snow:
   EXPECT_EQ(a.options.moved_fraction, b.options.moved_fraction);
 }
 
+TEST(SnowSection, ReadsAndWritesThePictureOptions) {
+  const Scene scene = load(R"(
+snow:
+  groups: [{name: ground, ground: true}]
+  picture_times_s: [0, 1.5]
+  frame_count: 4
+  picture_width_px: 320
+  view_elevation_deg: 90
+)");
+  const SnowPictureOptions& p = scene.section<SnowSection>()->spec.options.pictures;
+  EXPECT_EQ(p.times_s, (std::vector<double>{0.0, 1.5}));
+  EXPECT_EQ(p.frame_count, 4);
+  EXPECT_EQ(p.width_px, 320);
+  EXPECT_NEAR(p.view_elevation_rad, 0.5 * std::numbers::pi, 1e-15);
+  const Scene again = load_scene_from_string(scene_to_yaml(scene), "/tmp/again.yaml", {snow_section_type()});
+  const SnowPictureOptions& q = again.section<SnowSection>()->spec.options.pictures;
+  EXPECT_EQ(q.times_s, p.times_s);
+  EXPECT_EQ(q.frame_count, 4);
+}
+
+TEST(SnowSection, PictureRefusalsNameTheKeyInOneLine) {
+  const std::string groups = "  groups: [{name: ground, ground: true}]\n";
+  for (const auto& [text, key] : std::vector<std::pair<std::string, std::string>>{
+           {"  frame_count: -1\n", "frame_count"},
+           {"  picture_times_s: [1, 0.5]\n", "picture_times_s"},
+           {"  picture_times_s: [3]\n", "picture_times_s"},  // after the run's 2 s
+           {"  picture_width_px: 4\n", "picture_width_px"},
+           {"  view_elevation_deg: 0\n", "view_elevation_deg"}}) {
+    const std::string e = error_of("snow:\n" + groups + text);
+    EXPECT_NE(e.find(key), std::string::npos) << text << " -> " << e;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+  }
+}
+
 TEST(SnowSection, RefusalsNameTheKey) {
   const std::string groups = "  groups: [{name: ground, ground: true}]\n";
   EXPECT_NE(error_of("snow:\n" + groups + "  moved_fraction: 0.3\n").find("moved_fraction"), std::string::npos);

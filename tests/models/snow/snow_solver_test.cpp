@@ -30,10 +30,11 @@ TEST(SnowSolver, RunsASceneAndReportsFieldsAndMeasures) {
   std::string why;
   ASSERT_TRUE(solver.can_run(scene, &why)) << why;
   const auto compiled = solver.compile(scene);
-  ASSERT_EQ(compiled->parameters().size(), 3u);
+  ASSERT_EQ(compiled->parameters().size(), 4u);
   EXPECT_EQ(compiled->parameters()[0].name, "repose_angle_deg");
   EXPECT_EQ(compiled->parameters()[1].name, "spread_deg");
   EXPECT_EQ(compiled->parameters()[2].name, "snowfall_scale");
+  EXPECT_EQ(compiled->parameters()[3].name, "edge_hold_m");
   const repose::Run run = compiled->run(compiled->default_values(), RunOptions{});
   EXPECT_EQ(run.solver, "snow");
   const ArrayXXdR& ground = run.field("height_initial").heights();

@@ -212,6 +212,34 @@ TEST(Stabilisation, SnowWithNothingBelowLeavesTheSceneAndIsCounted) {
   EXPECT_NEAR(total(d) + left / model.grid.cell_area_m2(), before, 1e-12 * before);
 }
 
+// Edge hold: the paper's rule (hold 0) empties a plate's edge cells, since
+// their slope to the ground far below is always too steep; with a hold, each
+// edge cell keeps exactly that much, the flank rises from it at the angle,
+// and no snow is lost.
+TEST(Stabilisation, EdgeCellsKeepTheEdgeHoldAndNoMore) {
+  const HeightField ground(centred_grid(16));
+  const SnowModel model = plates_over_ground(ground, {plate(0.04, 0.04, 0.1)}, SnowOptions{});
+  const auto edge_depths = [&](double hold, std::vector<double>* edges, double* centre) {
+    std::vector<ArrayXXdR> d = zero_depths(model);
+    d[1] = model.maps[1].base.covered.cast<double>() * 0.03;
+    const double before = total(d);
+    double left = 0.0;
+    settle(model, StabilisationRule{std::tan(30 * kDeg), 0.2, 1e-10, hold}, &d, &left);
+    EXPECT_NEAR(total(d), before, 1e-12 * before);
+    for (int k = 5; k <= 10; ++k) edges->push_back(d[1](k, 4)), edges->push_back(d[1](4, k));
+    *centre = d[1](8, 8);
+  };
+  ASSERT_TRUE(model.maps[1].covered(4, 8) && !model.maps[1].covered(3, 8));
+  std::vector<double> bare, held;
+  double centre_bare = 0.0, centre_held = 0.0;
+  edge_depths(0.0, &bare, &centre_bare);
+  edge_depths(0.004, &held, &centre_held);
+  for (const double e : bare) EXPECT_LT(e, 1e-9);
+  for (const double e : held) EXPECT_NEAR(e, 0.004, 2e-9);
+  // the flank rises at tan(30 deg) per cell from the edge either way: 4 mm higher with the hold
+  EXPECT_NEAR(centre_held - centre_bare, 0.004, 1e-6);
+}
+
 // Ceilings: snow sliding on the ground never enters a block standing on it,
 // and under a table top never rises above the top's underside; none is lost.
 TEST(Stabilisation, SnowStaysUnderCeilings) {
