@@ -26,6 +26,12 @@ void TearRunOptions::validate() const {
   if (!(std::isfinite(stop_at_depth_m) && stop_at_depth_m >= 0.0)) {
     throw FieldError("stop_at_depth_m", "a depth >= 0 m", fmt::format("{}", stop_at_depth_m));
   }
+  for (std::size_t k = 0; k < snapshot_times_s.size(); ++k) {
+    const double t = snapshot_times_s[k];
+    if (!(std::isfinite(t) && t >= 0.0 && (k == 0 || t >= snapshot_times_s[k - 1]))) {
+      throw FieldError("snapshot_times_s", "ascending times >= 0 s", fmt::format("{} (entry {})", t, k));
+    }
+  }
   implicit_solver.validate();
 }
 
@@ -55,6 +61,10 @@ void pull(const SheetModel& model, const TearRunOptions& options, const Progress
     impulse = impulse.size() == 0 ? Eigen::Matrix3Xd(run->time_step_s * run->state.grip_force_n)
                                   : Eigen::Matrix3Xd(impulse + run->time_step_s * run->state.grip_force_n);
     if ((s + 1) % sample_every == 0) sample_grip_force(&impulse, run);
+    while (run->snapshots.size() < options.snapshot_times_s.size() &&
+           run->state.time_s >= options.snapshot_times_s[run->snapshots.size()]) {
+      run->snapshots.push_back(run->state);
+    }
     if (s % check_every == 0) report(progress, static_cast<double>(s) / static_cast<double>(steps), "tearing");
     // the tear deepens only on a step that tears a cell: judged on every
     // such step (and the first, for a notch already deep enough), the run

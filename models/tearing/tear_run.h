@@ -25,6 +25,9 @@ struct TearRunOptions {
   // Stop at the end of the first step whose tear reaches this depth below
   // the top edge (m); 0: run the whole duration.
   double stop_at_depth_m = 0.0;
+  // Times (s, ascending, >= 0) at which to keep a copy of the sheet's state
+  // (TearRun::snapshots), for figures over time; not read from scenes.
+  std::vector<double> snapshot_times_s;
   // The implicit integrator's linear solver (implicit_integrator.h); not
   // read from scenes: the benchmark compares preconditioners over whole tears.
   ImplicitSolverOptions implicit_solver;
@@ -60,6 +63,10 @@ struct TearRun {
   // 7 % off the work in TearRun tests).
   std::vector<double> force_time_s;
   std::vector<Eigen::Matrix3Xd> grip_force_n;
+  // The state at the end of the first step reaching each of
+  // options.snapshot_times_s that the run reached (a run stopped early by
+  // stop_at_depth_m has fewer).
+  std::vector<SheetState> snapshots;
   double wall_seconds = 0.0;
 };
 
