@@ -10,6 +10,7 @@
 #include "models/core/config/fields.h"
 #include "models/tearing/explicit_integrator.h"
 #include "models/tearing/implicit_integrator.h"
+#include "models/tearing/sheet_forces.h"
 #include "models/tearing/stable_time_step.h"
 
 namespace repose {
@@ -81,6 +82,24 @@ void pull(const SheetModel& model, const TearRunOptions& options, const Progress
 
 }  // namespace
 
+EnergyLedger energy_ledger(const SheetModel& model, const SheetParams& params, const SheetState& state) {
+  EnergyLedger e;
+  e.stored_j = potential_energy(model, params, state);
+  const Eigen::Vector3d& g = model.spec.gravity_m_per_s2;
+  for (int v = 0; v < model.vertex_count(); ++v) {
+    for (int a = 0; a < 3; ++a) {
+      if (model.held_axes[static_cast<std::size_t>(v)] & (1u << a)) continue;
+      const double m = model.mass_kg[v], speed = state.velocities(a, v);
+      e.kinetic_j += 0.5 * m * speed * speed;
+      e.gravity_j += m * g[a] * (state.positions(a, v) - model.rest_positions(a, v));
+    }
+  }
+  e.damping_j = state.damping_loss_j;
+  e.fracture_j = state.torn_energy_j;
+  e.residual_j = state.grip_work_j + e.gravity_j - e.stored_j - e.kinetic_j - e.damping_j - e.fracture_j;
+  return e;
+}
+
 TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearRunOptions& options,
                  const ProgressFn& progress) {
   options.validate();
@@ -101,6 +120,7 @@ TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearR
   run.steps = run.state.steps;
   run.path = measure_tear_path(model, run.state);
   run.grip_work_j = run.state.grip_work_j;
+  run.ledger = energy_ledger(model, params, run.state);
   // the notch is not torn by the pull: take it off when the tear holds it
   const bool from_notch = !model.notch_cells.empty() && run.path.holds_notch;
   const double notch_depth_m = from_notch ? static_cast<double>(model.notch_cells.size()) * model.cell_size_m : 0.0;

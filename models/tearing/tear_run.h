@@ -35,6 +35,26 @@ struct TearRunOptions {
   void validate() const;  // throws FieldError (an InputError) naming the field
 };
 
+// Where the grips' work went by the end of a run (J): the sheet starts at
+// rest in its rest shape, so
+//   grip work + gravity's work = stored + kinetic + damping + fracture + residual,
+// the residual being the integrator's own energy error plus what the ledger
+// does not itemise (bending terms that stop acting when their cells tear,
+// the dashpots of stiffness_damping_s). Kinetic energy and gravity's work
+// are over the free degrees of freedom (the grips move the held ones and
+// carry their weight). damping_j is 0 for the implicit integrator, whose
+// damping then sits in the residual.
+struct EnergyLedger {
+  double stored_j = 0.0;     // elastic, intact springs and acting bending terms
+  double kinetic_j = 0.0;    // free degrees of freedom
+  double gravity_j = 0.0;    // work gravity did on them
+  double damping_j = 0.0;    // SheetState::damping_loss_j
+  double fracture_j = 0.0;   // SheetState::torn_energy_j
+  double residual_j = 0.0;
+};
+
+EnergyLedger energy_ledger(const SheetModel& model, const SheetParams& params, const SheetState& state);
+
 struct TearRun {
   SheetState state;
   TearPath path;
@@ -67,6 +87,7 @@ struct TearRun {
   // options.snapshot_times_s that the run reached (a run stopped early by
   // stop_at_depth_m has fewer).
   std::vector<SheetState> snapshots;
+  EnergyLedger ledger;  // at the end of the run
   double wall_seconds = 0.0;
 };
 

@@ -219,6 +219,24 @@ TEST(TearRun, RefusesOptionsOutsideTheirRanges) {
   }
 }
 
+// The ledger accounts for the grips' work through a tear: what is stored,
+// moving, dragged away by damping and taken by the tear, with only the
+// integrator's small energy error left over.
+TEST(TearRun, TheEnergyLedgerAccountsForTheGripsWork) {
+  const SheetModel model = notched_twisted_sheet();
+  const TearRun run = run_tear(model, SheetParams{}, stop_at_24_mm());
+  const EnergyLedger& e = run.ledger;
+  ASSERT_GT(run.tear_length_m, 0.0);
+  EXPECT_GT(e.stored_j, 0.0);
+  EXPECT_GT(e.kinetic_j, 0.0);
+  EXPECT_GT(e.damping_j, 0.1 * run.grip_work_j);  // 2000 /s of damping: a large share
+  EXPECT_GT(e.fracture_j, 0.0);
+  EXPECT_EQ(e.gravity_j, 0.0);  // free_sheet_spec has no gravity
+  EXPECT_LT(std::abs(e.residual_j), 0.02 * run.grip_work_j)
+      << "stored " << e.stored_j << " kinetic " << e.kinetic_j << " damping " << e.damping_j << " fracture "
+      << e.fracture_j << " grips " << run.grip_work_j;
+}
+
 // Snapshots are the states at the end of the first step reaching each time,
 // and the run itself does not change for taking them.
 TEST(TearRun, KeepsTheStateAtEachSnapshotTime) {
