@@ -88,6 +88,32 @@ ColouredTriangles object_triangles(const std::vector<TriangleMesh>& objects, con
   return t;
 }
 
+// A coloured mesh smooth-shaded: area-weighted vertex normals turned towards the eye.
+ColouredTriangles coloured_mesh_triangles(const ColouredMesh& m, const Eigen::Vector3d& origin,
+                                          const Eigen::Vector3d& eye, const RenderImageOptions& o) {
+  ColouredTriangles t;
+  const Eigen::Index nv = m.mesh.V.rows();
+  std::vector<Eigen::Vector3d> normals(static_cast<std::size_t>(nv), Eigen::Vector3d::Zero());
+  for (Eigen::Index f = 0; f < m.mesh.F.rows(); ++f) {
+    const Eigen::Vector3d a = m.mesh.V.row(m.mesh.F(f, 0)), b = m.mesh.V.row(m.mesh.F(f, 1)),
+                          c = m.mesh.V.row(m.mesh.F(f, 2));
+    const Eigen::Vector3d n = (b - a).cross(c - a);  // twice the area, along the normal
+    for (int k = 0; k < 3; ++k) normals[static_cast<std::size_t>(m.mesh.F(f, k))] += n;
+  }
+  for (Eigen::Index v = 0; v < nv; ++v) {
+    const Eigen::Vector3d p = m.mesh.V.row(v);
+    Eigen::Vector3d n = normals[static_cast<std::size_t>(v)];
+    n = n.squaredNorm() > 0.0 ? n.normalized() : Eigen::Vector3d((eye - p).normalized());
+    if (n.dot(eye - p) < 0) n = -n;
+    push_vertex(&t, p - origin, m.vertex_rgb[static_cast<std::size_t>(v)].cwiseMax(0.0).cwiseMin(1.0) * lambert(n, o));
+  }
+  for (Eigen::Index f = 0; f < m.mesh.F.rows(); ++f) {
+    for (int k = 0; k < 3; ++k) t.indices.push_back(static_cast<unsigned>(m.mesh.F(f, k)));
+  }
+  if (t.indices.empty()) t.xyz.clear();  // nothing to draw (unindexed drawing would misread the vertices)
+  return t;
+}
+
 void draw(const ColouredTriangles& t) {
   if (t.xyz.empty()) return;
   glEnableClientState(GL_VERTEX_ARRAY);
@@ -131,10 +157,10 @@ Eigen::Matrix4d projection_matrix(const CameraSpec& camera, double near_m, doubl
 }
 
 // Near and far planes that bracket everything drawn, for the depth buffer's resolution.
-void clip_planes(const ColouredTriangles& ground, const ColouredTriangles& objects, const Eigen::Matrix4d& view,
-                 double* near_m, double* far_m) {
+void clip_planes(const std::vector<const ColouredTriangles*>& parts, const Eigen::Matrix4d& view, double* near_m,
+                 double* far_m) {
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
-  for (const ColouredTriangles* t : {&ground, &objects}) {
+  for (const ColouredTriangles* t : parts) {
     for (std::size_t k = 0; k + 2 < t->xyz.size(); k += 3) {
       const double depth = -view.row(2).dot(Eigen::RowVector4d(t->xyz[k], t->xyz[k + 1], t->xyz[k + 2], 1.0));
       lo = std::min(lo, depth);
@@ -185,6 +211,34 @@ RgbImage downsample(const std::vector<std::uint8_t>& rgba, int width, int height
   return img;
 }
 
+// Draws the parts (relative to camera.target_m) into the current context
+// (made current at the supersampled size) and reads the image back.
+RgbImage draw_parts(const std::vector<const ColouredTriangles*>& parts, const CameraSpec& camera,
+                    const RenderImageOptions& options, const OsmesaContext& context) {
+  const Eigen::Matrix4d view = view_matrix(camera);
+  double near_m = 0, far_m = 0;
+  clip_planes(parts, view, &near_m, &far_m);
+  const Eigen::Matrix4d projection = projection_matrix(camera, near_m, far_m);
+
+  glMatrixMode(GL_PROJECTION);
+  glLoadMatrixd(projection.data());  // Eigen is column-major, as GL expects
+  glMatrixMode(GL_MODELVIEW);
+  glLoadMatrixd(view.data());
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_LIGHTING);
+  glDisable(GL_DITHER);
+  glShadeModel(GL_SMOOTH);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  const Eigen::Vector3d bg = options.background_rgb.cwiseMax(0.0).cwiseMin(1.0);
+  glClearColor(static_cast<float>(bg.x()), static_cast<float>(bg.y()), static_cast<float>(bg.z()), 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  for (const ColouredTriangles* t : parts) draw(*t);
+  glFinish();
+  return downsample(context.rgba(), camera.width_px, camera.height_px, options.supersample);
+}
+
 }  // namespace
 
 CameraSpec default_camera(const HeightField& field, const std::vector<TriangleMesh>& objects, int width_px,
@@ -225,29 +279,27 @@ RgbImage render_image(const HeightField& field, const std::vector<TriangleMesh>&
 
   const ColouredTriangles ground = ground_triangles(field, camera.target_m, options);
   const ColouredTriangles bodies = object_triangles(objects, camera.target_m, camera.position_m, options);
-  const Eigen::Matrix4d view = view_matrix(camera);
-  double near_m = 0, far_m = 0;
-  clip_planes(ground, bodies, view, &near_m, &far_m);
-  const Eigen::Matrix4d projection = projection_matrix(camera, near_m, far_m);
+  return draw_parts({&ground, &bodies}, camera, options, context);
+}
 
-  glMatrixMode(GL_PROJECTION);
-  glLoadMatrixd(projection.data());  // Eigen is column-major, as GL expects
-  glMatrixMode(GL_MODELVIEW);
-  glLoadMatrixd(view.data());
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_LIGHTING);
-  glDisable(GL_DITHER);
-  glShadeModel(GL_SMOOTH);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  const Eigen::Vector3d bg = options.background_rgb.cwiseMax(0.0).cwiseMin(1.0);
-  glClearColor(static_cast<float>(bg.x()), static_cast<float>(bg.y()), static_cast<float>(bg.z()), 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  draw(ground);
-  draw(bodies);
-  glFinish();
-  return downsample(context.rgba(), camera.width_px, camera.height_px, s);
+RgbImage render_coloured_meshes(const std::vector<ColouredMesh>& meshes, const CameraSpec& camera,
+                                const RenderImageOptions& options) {
+  const int s = options.supersample;
+  OsmesaContext context(1, 1);
+  validate(camera, options, context.max_size_px());
+  for (const ColouredMesh& m : meshes) {
+    if (m.vertex_rgb.size() != static_cast<std::size_t>(m.mesh.V.rows())) {
+      throw InputError("render: a coloured mesh needs one colour per vertex (" + std::to_string(m.mesh.V.rows()) +
+                       " vertices, " + std::to_string(m.vertex_rgb.size()) + " colours)");
+    }
+  }
+  context.make_current(camera.width_px * s, camera.height_px * s);
+  std::vector<ColouredTriangles> parts;
+  parts.reserve(meshes.size());
+  for (const ColouredMesh& m : meshes) parts.push_back(coloured_mesh_triangles(m, camera.target_m, camera.position_m, options));
+  std::vector<const ColouredTriangles*> pointers;
+  for (const ColouredTriangles& t : parts) pointers.push_back(&t);
+  return draw_parts(pointers, camera, options, context);
 }
 
 std::optional<Eigen::Vector2d> project_to_image(const CameraSpec& camera, const Eigen::Vector3d& point_m) {

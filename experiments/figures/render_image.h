@@ -44,6 +44,20 @@ CameraSpec default_camera(const HeightField& field, const std::vector<TriangleMe
 RgbImage render_image(const HeightField& field, const std::vector<TriangleMesh>& objects, const CameraSpec& camera,
                       const RenderImageOptions& options = {});
 
+// A triangle mesh with a colour per vertex (0..1, one per row of mesh.V),
+// smooth-shaded with area-weighted vertex normals and lit on the side that
+// faces the camera (for sheets seen from either side).
+struct ColouredMesh {
+  TriangleMesh mesh;
+  std::vector<Eigen::Vector3d> vertex_rgb;
+};
+
+// The meshes alone (no ground), through the same camera, light, background and
+// supersampling as render_image; throws InputError as render_image does, and
+// for a mesh whose vertex_rgb does not have a colour per vertex.
+RgbImage render_coloured_meshes(const std::vector<ColouredMesh>& meshes, const CameraSpec& camera,
+                                const RenderImageOptions& options = {});
+
 // Where a world point lands in the image: (column, row) in pixels from the
 // top-left corner, or nothing when it is behind the camera.
 std::optional<Eigen::Vector2d> project_to_image(const CameraSpec& camera, const Eigen::Vector3d& point_m);

@@ -5,7 +5,8 @@
 // same clump positions and sizes for both grains (only the angle turns), so
 // the comparison is paired (sign test). Writes tearing_grain.csv (one row
 // per run), a summary on stdout, and for the first seed the tear maps, the
-// layered tear edges and the fibre images.
+// layered tear edges, the fibre images and lit 3-D renders of the torn sheet
+// (OSMesa, tear_render.h) at the end, at its tip and over the pull.
 //
 //   build/bin/tearing_grain --seeds 8 --out DIR
 //
@@ -39,6 +40,7 @@
 #include "models/tearing/tear_edge_layers.h"
 #include "models/tearing/tear_image.h"
 #include "models/tearing/tear_run.h"
+#include "experiments/tearing/tear_render.h"
 
 namespace {
 
@@ -53,6 +55,8 @@ struct Settings {
   double exponent = 3.0;
   double strength_exponent = 1.0;
   double stop_depth_m = 0.06;
+  int render_frames = 6;  // lit 3-D renders of seed 1 over time (tear_render.h)
+  double render_azimuth_deg = -25.0;
   std::string out = "tearing_grain_out";
 };
 
@@ -106,6 +110,26 @@ void summarise(const std::vector<Row>& rows, const char* name, double (*measure)
              sign_test_p(wins, static_cast<int>(across.size())));
 }
 
+// Seed 1's tear in 3-D, lit (OSMesa): tear_render_<grain>_seed1.png at the
+// end, and tear_render_<grain>_seed1_frame<k>.png over the pull.
+void write_renders(const Settings& s, const SheetModel& model, const FibreImages& images, const TearRun& run,
+                   const char* grain) {
+  TearRenderOptions look;
+  look.azimuth_deg = s.render_azimuth_deg;
+  const TearEdgeOptions edge;
+  write_png_rgb(fmt::format("{}/tear_render_{}_seed1.png", s.out, grain), render_tear(model, run.state, images, edge, look));
+  TearRenderOptions close = look;
+  close.close_up_m = 0.012;
+  write_png_rgb(fmt::format("{}/tear_render_{}_seed1_tip.png", s.out, grain), render_tear(model, run.state, images, edge, close));
+  for (std::size_t k = 0; k < run.snapshots.size(); ++k) {
+    const SheetState& at = run.snapshots[k];
+    write_png_rgb(fmt::format("{}/tear_render_{}_seed1_frame{}_{:.1f}ms.png", s.out, grain, k + 1, 1e3 * at.time_s),
+                  render_tear(model, at, images, edge, look));
+    write_png_rgb(fmt::format("{}/tear_render_{}_seed1_frame{}_{:.1f}ms_tip.png", s.out, grain, k + 1, 1e3 * at.time_s),
+                  render_tear(model, at, images, edge, close));
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -119,6 +143,8 @@ int main(int argc, char** argv) {
   app.add_option("--exponent", s.exponent, "stiffness ~ fibre density^exponent");
   app.add_option("--stop-depth", s.stop_depth_m, "stop once the tear is this deep (m)");
   app.add_option("--strength-exponent", s.strength_exponent, "tear strain ~ fibre density^exponent");
+  app.add_option("--render-frames", s.render_frames, "3-D renders of seed 1 over the pull (0: only the end)");
+  app.add_option("--render-azimuth", s.render_azimuth_deg, "camera turned about the vertical from face on (deg)");
   app.add_option("--out", s.out, "output folder");
   CLI11_PARSE(app, argc, argv);
   std::filesystem::create_directories(s.out);
@@ -137,7 +163,9 @@ int main(int argc, char** argv) {
       std::mt19937_64 rng(seed);
       const FibreImages images = draw_fibre_images(spec.fibres, spec.width_m, spec.height_m, rng);
       const SheetModel model = build_sheet_model(spec, images);
-      TearRun run = run_tear(model, params, options);
+      TearRunOptions these = options;
+      for (int k = 1; seed == 1 && k < s.render_frames; ++k) these.snapshot_times_s.push_back(s.duration_s * k / s.render_frames);
+      TearRun run = run_tear(model, params, these);
       const TearPath& p = run.path;
       csv << fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.6g},{:.6g},{},{:.6g},{:.4g}\n", seed, grain,
                          p.tortuosity, p.roughness_m, p.deviation_m, p.depth_m, run.tear_length_m, p.tear_cells,
@@ -155,6 +183,7 @@ int main(int argc, char** argv) {
         const TearEdgeOptions edge;
         write_png_rgb(fmt::format("{}/tear_edge_{}_seed{}.png", s.out, grain, seed),
                       draw_layered_tear_edge(images, trace_layer_cuts(model, run.state, images, edge), edge));
+        write_renders(s, model, images, run, grain);
       }
       rows.push_back({seed, grain, std::move(run)});
     }

@@ -193,7 +193,8 @@ int main(int argc, char** argv) {
     write_paper_fit_report(spec, x, u, starts[best].cost, run_cases(tensile, x, kTensileMeasures),
                            spec.tear_scene.empty() ? std::map<std::string, std::map<std::string, double>>{}
                                                    : run_cases(compile_cases(spec.tear_scene, spec.tear_seeds, false), x,
-                                                               {"tear.work_per_length_j_per_m", "grip.peak_force_n"}),
+                                                               {"tear.work_per_length_j_per_m", "tear.fracture_energy_per_length_j_per_m",
+                                                                "grip.peak_force_n"}),
                            static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC, out);
     for (const Start& s : starts) {
       std::printf("start: cost %.6g after %d iterations (%s)\n", s.cost, s.iterations, s.termination.c_str());

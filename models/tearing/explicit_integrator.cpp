@@ -40,7 +40,9 @@ int ExplicitIntegrator::step(SheetState* state) {
         state->velocities(a, v) = speed;
         state->positions(a, v) = model_.rest_positions(a, v) + speed * t_next;
       } else {
-        state->velocities(a, v) = (state->velocities(a, v) + dt_ * (forces_(a, v) / m + g[a])) * damping;
+        const double undamped = state->velocities(a, v) + dt_ * (forces_(a, v) / m + g[a]);
+        state->damping_loss_j += 0.5 * m * undamped * undamped * (1.0 - damping * damping);
+        state->velocities(a, v) = undamped * damping;
         state->positions(a, v) += dt_ * state->velocities(a, v);
       }
     }

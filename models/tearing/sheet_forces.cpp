@@ -46,12 +46,19 @@ struct CellStretch {
   bool over = false;
 };
 
-CellStretch stretch_of(const std::array<CellSpring, 6>& springs, const Eigen::Matrix3Xd& x, double limit) {
+// `limit` is the cell's tear strain; with SheetSpec::isotropic_tear_energy
+// (`isotropic`) each spring's is limit / sqrt(its direction factor).
+CellStretch stretch_of(const std::array<CellSpring, 6>& springs, const Eigen::Matrix3Xd& x, double limit,
+                       const SpringConstants* isotropic = nullptr) {
   CellStretch s;
   for (int k = 0; k < 6; ++k) {
     s.d[k] = x.col(springs[k].b) - x.col(springs[k].a);
     s.length[k] = s.d[k].norm();
-    s.over = s.over || s.length[k] > (1.0 + limit) * springs[k].rest_length_m;
+    double spring_limit = limit;
+    if (isotropic != nullptr && isotropic->anisotropy != 0.0) {
+      spring_limit /= std::sqrt(1.0 + isotropic->anisotropy * std::cos(2.0 * (springs[k].direction_rad - isotropic->grain_rad)));
+    }
+    s.over = s.over || s.length[k] > (1.0 + spring_limit) * springs[k].rest_length_m;
   }
   return s;
 }
@@ -119,7 +126,10 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
 }
 
 bool cell_overstretched(const SheetModel& model, const SheetParams& params, const SheetState& state, int c) {
-  return stretch_of(cell_springs(model, c), state.positions, cell_tear_strain(model, params, c)).over;
+  const SpringConstants k = spring_constants(model, params);
+  return stretch_of(cell_springs(model, c), state.positions, cell_tear_strain(model, params, c),
+                    model.spec.isotropic_tear_energy ? &k : nullptr)
+      .over;
 }
 
 int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
@@ -131,7 +141,8 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
   for (int c = 0; c < model.cell_count(); ++c) {
     if (!state->intact(c)) continue;
     const std::array<CellSpring, 6> springs = cell_springs(model, c);
-    const CellStretch s = stretch_of(springs, state->positions, cell_tear_strain(model, params, c));
+    const CellStretch s = stretch_of(springs, state->positions, cell_tear_strain(model, params, c),
+                                     model.spec.isotropic_tear_energy ? &k : nullptr);
     if (s.over) {
       state->torn_step[static_cast<std::size_t>(c)] = step_number;
       state->torn_energy_j += cell_spring_energy(springs, s, k, model.cell_stiffness[c]);

@@ -55,6 +55,17 @@ struct SheetSpec {
   // mesh); kEnergy sets the strain from SheetParams::tear_energy_j_per_m and
   // the cell size, so the work per unit tear length does not.
   TearRule tear_rule = TearRule::kStrain;
+  // With fibre anisotropy a, a spring along the grain is (1 + a) stiffer; if
+  // its tear strain stays the cell's, it tears holding (1 + a) times the
+  // energy, so a tear's fracture energy follows the stiffness (measured:
+  // across / along ~ (1 + a) / (1 - a), experiments/tearing_paper_fit.yaml).
+  // true: each spring's tear strain is the cell's divided by sqrt of its
+  // direction factor 1 + a cos 2(direction - grain), so every spring tears
+  // holding the same energy whatever its direction (the fracture energy
+  // isotropic, its strength ratio the square root of the stiffness ratio),
+  // as the tear resistance of paper barely follows its fibre orientation.
+  // false, the default: one strain per cell (the seed's rule).
+  bool isotropic_tear_energy = false;
   // Velocity damping (1/s): each step v /= 1 + damping_per_s * dt (air drag
   // and internal losses lumped, applied implicitly so it never destabilises).
   double damping_per_s = 2.0e3;

@@ -27,6 +27,11 @@ struct SheetState {
   // itself took out of the sheet, apart from what the grips put into the
   // flaps' motion, drag and the strain still stored (tear_run.h).
   double torn_energy_j = 0.0;
+  // The kinetic energy (J) the mass-proportional damping (damping_per_s) has
+  // taken from the free vertices, summed over the run; the explicit
+  // integrator keeps it (the implicit one leaves it 0: its damping is inside
+  // the solve). For the energy ledger (tear_run.h).
+  double damping_loss_j = 0.0;
 
   bool intact(int cell) const { return torn_step[static_cast<std::size_t>(cell)] < 0; }
   int torn_count() const;

@@ -10,6 +10,7 @@
 #include "models/core/config/fields.h"
 #include "models/tearing/explicit_integrator.h"
 #include "models/tearing/implicit_integrator.h"
+#include "models/tearing/sheet_forces.h"
 #include "models/tearing/stable_time_step.h"
 
 namespace repose {
@@ -25,6 +26,12 @@ void TearRunOptions::validate() const {
   }
   if (!(std::isfinite(stop_at_depth_m) && stop_at_depth_m >= 0.0)) {
     throw FieldError("stop_at_depth_m", "a depth >= 0 m", fmt::format("{}", stop_at_depth_m));
+  }
+  for (std::size_t k = 0; k < snapshot_times_s.size(); ++k) {
+    const double t = snapshot_times_s[k];
+    if (!(std::isfinite(t) && t >= 0.0 && (k == 0 || t >= snapshot_times_s[k - 1]))) {
+      throw FieldError("snapshot_times_s", "ascending times >= 0 s", fmt::format("{} (entry {})", t, k));
+    }
   }
   implicit_solver.validate();
 }
@@ -55,6 +62,10 @@ void pull(const SheetModel& model, const TearRunOptions& options, const Progress
     impulse = impulse.size() == 0 ? Eigen::Matrix3Xd(run->time_step_s * run->state.grip_force_n)
                                   : Eigen::Matrix3Xd(impulse + run->time_step_s * run->state.grip_force_n);
     if ((s + 1) % sample_every == 0) sample_grip_force(&impulse, run);
+    while (run->snapshots.size() < options.snapshot_times_s.size() &&
+           run->state.time_s >= options.snapshot_times_s[run->snapshots.size()]) {
+      run->snapshots.push_back(run->state);
+    }
     if (s % check_every == 0) report(progress, static_cast<double>(s) / static_cast<double>(steps), "tearing");
     // the tear deepens only on a step that tears a cell: judged on every
     // such step (and the first, for a notch already deep enough), the run
@@ -70,6 +81,24 @@ void pull(const SheetModel& model, const TearRunOptions& options, const Progress
 }
 
 }  // namespace
+
+EnergyLedger energy_ledger(const SheetModel& model, const SheetParams& params, const SheetState& state) {
+  EnergyLedger e;
+  e.stored_j = potential_energy(model, params, state);
+  const Eigen::Vector3d& g = model.spec.gravity_m_per_s2;
+  for (int v = 0; v < model.vertex_count(); ++v) {
+    for (int a = 0; a < 3; ++a) {
+      if (model.held_axes[static_cast<std::size_t>(v)] & (1u << a)) continue;
+      const double m = model.mass_kg[v], speed = state.velocities(a, v);
+      e.kinetic_j += 0.5 * m * speed * speed;
+      e.gravity_j += m * g[a] * (state.positions(a, v) - model.rest_positions(a, v));
+    }
+  }
+  e.damping_j = state.damping_loss_j;
+  e.fracture_j = state.torn_energy_j;
+  e.residual_j = state.grip_work_j + e.gravity_j - e.stored_j - e.kinetic_j - e.damping_j - e.fracture_j;
+  return e;
+}
 
 TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearRunOptions& options,
                  const ProgressFn& progress) {
@@ -91,6 +120,7 @@ TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearR
   run.steps = run.state.steps;
   run.path = measure_tear_path(model, run.state);
   run.grip_work_j = run.state.grip_work_j;
+  run.ledger = energy_ledger(model, params, run.state);
   // the notch is not torn by the pull: take it off when the tear holds it
   const bool from_notch = !model.notch_cells.empty() && run.path.holds_notch;
   const double notch_depth_m = from_notch ? static_cast<double>(model.notch_cells.size()) * model.cell_size_m : 0.0;

@@ -25,12 +25,35 @@ struct TearRunOptions {
   // Stop at the end of the first step whose tear reaches this depth below
   // the top edge (m); 0: run the whole duration.
   double stop_at_depth_m = 0.0;
+  // Times (s, ascending, >= 0) at which to keep a copy of the sheet's state
+  // (TearRun::snapshots), for figures over time; not read from scenes.
+  std::vector<double> snapshot_times_s;
   // The implicit integrator's linear solver (implicit_integrator.h); not
   // read from scenes: the benchmark compares preconditioners over whole tears.
   ImplicitSolverOptions implicit_solver;
 
   void validate() const;  // throws FieldError (an InputError) naming the field
 };
+
+// Where the grips' work went by the end of a run (J): the sheet starts at
+// rest in its rest shape, so
+//   grip work + gravity's work = stored + kinetic + damping + fracture + residual,
+// the residual being the integrator's own energy error plus what the ledger
+// does not itemise (bending terms that stop acting when their cells tear,
+// the dashpots of stiffness_damping_s). Kinetic energy and gravity's work
+// are over the free degrees of freedom (the grips move the held ones and
+// carry their weight). damping_j is 0 for the implicit integrator, whose
+// damping then sits in the residual.
+struct EnergyLedger {
+  double stored_j = 0.0;     // elastic, intact springs and acting bending terms
+  double kinetic_j = 0.0;    // free degrees of freedom
+  double gravity_j = 0.0;    // work gravity did on them
+  double damping_j = 0.0;    // SheetState::damping_loss_j
+  double fracture_j = 0.0;   // SheetState::torn_energy_j
+  double residual_j = 0.0;
+};
+
+EnergyLedger energy_ledger(const SheetModel& model, const SheetParams& params, const SheetState& state);
 
 struct TearRun {
   SheetState state;
@@ -60,6 +83,11 @@ struct TearRun {
   // 7 % off the work in TearRun tests).
   std::vector<double> force_time_s;
   std::vector<Eigen::Matrix3Xd> grip_force_n;
+  // The state at the end of the first step reaching each of
+  // options.snapshot_times_s that the run reached (a run stopped early by
+  // stop_at_depth_m has fewer).
+  std::vector<SheetState> snapshots;
+  EnergyLedger ledger;  // at the end of the run
   double wall_seconds = 0.0;
 };
 

@@ -19,6 +19,7 @@ void sheet_fields(V& v, SheetSpec& s) {
   v.number("stiffness_density_exponent", s.stiffness_density_exponent, Range::closed(0, 8));
   v.number("tear_strain_density_exponent", s.tear_strain_density_exponent, Range::closed(0, 8));
   v.choice("tear_rule", s.tear_rule, ChoiceTable<TearRule>{{"strain", TearRule::kStrain}, {"energy", TearRule::kEnergy}});
+  v.boolean("isotropic_tear_energy", s.isotropic_tear_energy);
   v.number("damping_per_s", s.damping_per_s, Range::non_negative());
   v.number("stiffness_damping_s", s.stiffness_damping_s, Range::non_negative());
   v.vec3("gravity_m_per_s2", s.gravity_m_per_s2, Range::any());

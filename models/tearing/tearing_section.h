@@ -21,6 +21,7 @@
 //     tear_rule: strain             # strain (the seed's, default) | energy (tear_limit.h)
 //     tear_energy_j_per_m: 0.16     # parameter tear_energy (tear_rule: energy)
 //     fibre_anisotropy: 0           # parameter fibre_anisotropy: springs along the grain (1 + a) stiffer
+//     isotropic_tear_energy: false  # true: springs' tear strains scaled so each tears at one energy (sheet_spec.h)
 //     integrator: explicit          # explicit | implicit
 //     time_step_fraction: 0.9       # of the explicit stable step (implicit: may exceed 1)
 //     stop_at_depth_m: 0.06         # stop once the tear is this deep (0: run time.duration_s)

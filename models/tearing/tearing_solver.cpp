@@ -151,6 +151,15 @@ class CompiledTearing final : public CompiledSolver {
     run->set("tear.fracture_energy_per_length_j_per_m", t.fracture_energy_per_tear_length_j_per_m, "J/m");
     run->set("grip.peak_force_n", t.peak_grip_force_n, "N");
     run->set("grip.work_j", t.grip_work_j, "J");
+    // the energy ledger (tear_run.h), J, and per unit tear length, J/m
+    const std::pair<const char*, double> ledger[] = {
+        {"stored", t.ledger.stored_j},   {"kinetic", t.ledger.kinetic_j},   {"gravity", t.ledger.gravity_j},
+        {"damping", t.ledger.damping_j}, {"fracture", t.ledger.fracture_j}, {"residual", t.ledger.residual_j}};
+    for (const auto& [name, joules] : ledger) {
+      run->set(fmt::format("energy.{}_j", name), joules, "J");
+      run->set(fmt::format("energy.{}_per_length_j_per_m", name), t.tear_length_m > 0.0 ? joules / t.tear_length_m : 0.0,
+               "J/m");
+    }
     run->set("steps", static_cast<double>(t.steps), "count");
     run->set("time_step_s", t.time_step_s, "s");
     run->set("stable_time_step_s", t.stable_time_step_s, "s");

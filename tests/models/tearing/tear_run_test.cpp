@@ -209,6 +209,52 @@ TEST(TearRun, RefusesOptionsOutsideTheirRanges) {
   options = {};
   options.duration_s = 0.0;
   EXPECT_THROW(run_tear(model, SheetParams{}, options), InputError);
+  options = {};
+  options.snapshot_times_s = {0.002, 0.001};
+  try {
+    run_tear(model, SheetParams{}, options);
+    FAIL() << "descending snapshot times were accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("snapshot_times_s"), std::string::npos) << e.what();
+  }
+}
+
+// The ledger accounts for the grips' work through a tear: what is stored,
+// moving, dragged away by damping and taken by the tear, with only the
+// integrator's small energy error left over.
+TEST(TearRun, TheEnergyLedgerAccountsForTheGripsWork) {
+  const SheetModel model = notched_twisted_sheet();
+  const TearRun run = run_tear(model, SheetParams{}, stop_at_24_mm());
+  const EnergyLedger& e = run.ledger;
+  ASSERT_GT(run.tear_length_m, 0.0);
+  EXPECT_GT(e.stored_j, 0.0);
+  EXPECT_GT(e.kinetic_j, 0.0);
+  EXPECT_GT(e.damping_j, 0.1 * run.grip_work_j);  // 2000 /s of damping: a large share
+  EXPECT_GT(e.fracture_j, 0.0);
+  EXPECT_EQ(e.gravity_j, 0.0);  // free_sheet_spec has no gravity
+  EXPECT_LT(std::abs(e.residual_j), 0.02 * run.grip_work_j)
+      << "stored " << e.stored_j << " kinetic " << e.kinetic_j << " damping " << e.damping_j << " fracture "
+      << e.fracture_j << " grips " << run.grip_work_j;
+}
+
+// Snapshots are the states at the end of the first step reaching each time,
+// and the run itself does not change for taking them.
+TEST(TearRun, KeepsTheStateAtEachSnapshotTime) {
+  const SheetModel model = notched_twisted_sheet();
+  TearRunOptions options = stop_at_24_mm();
+  const TearRun plain = run_tear(model, SheetParams{}, options);
+  options.snapshot_times_s = {0.0, 0.001, 0.001, 0.002, 1.0};
+  const TearRun run = run_tear(model, SheetParams{}, options);
+  ASSERT_EQ(run.snapshots.size(), 4u);  // 1 s is never reached
+  for (std::size_t k = 0; k < run.snapshots.size(); ++k) {
+    const SheetState& s = run.snapshots[k];
+    EXPECT_GE(s.time_s, options.snapshot_times_s[k]);
+    EXPECT_LT(s.time_s, options.snapshot_times_s[k] + run.time_step_s * (1 + 1e-9));
+    EXPECT_EQ(s.positions.cols(), model.vertex_count());
+  }
+  EXPECT_EQ(run.snapshots[1].time_s, run.snapshots[2].time_s);
+  EXPECT_EQ(run.state.positions, plain.state.positions);
+  EXPECT_EQ(run.state.torn_step, plain.state.torn_step);
 }
 
 }  // namespace
