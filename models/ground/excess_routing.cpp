@@ -257,9 +257,12 @@ class Rings {
     rings_.emplace_back();
     const std::vector<std::int64_t> last = rings_[static_cast<std::size_t>(k - 1)];
     for (const std::int64_t c : last) {
+      const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
       for (const auto& o : kNeighbours) {
-        const int ni = cell_i(c, g.nx) + o[0], nj = cell_j(c, g.nx) + o[1];
-        if (g.contains(ni, nj) && is_open(in_, ni, nj)) add(k, ni, nj);
+        const int ni = i + o[0], nj = j + o[1];
+        // a cell already in a ring needs no second look (is_open is the costly part)
+        if (!g.contains(ni, nj) || of(ni, nj) != -1) continue;
+        if (is_open(in_, ni, nj)) add(k, ni, nj);
       }
     }
     // by away(), then index: the keys found once, not in every comparison
