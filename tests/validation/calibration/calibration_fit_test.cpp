@@ -11,6 +11,7 @@
 #include "validation/calibration/calibration_fit.h"
 #include "validation/calibration/calibration_loader.h"
 #include "validation/calibration/calibration_problem.h"
+#include "tests/validation/calibration/tiny_snow_table.h"
 
 namespace repose {
 namespace {
@@ -60,18 +61,7 @@ TEST(CalibrationFit, AgainstDemIndentReducesCostAndRepeatsBitForBit) {
 TEST(CalibrationFit, SceneErrorScoresTheEntrysField) {
   const std::string dir = std::string(REPOSE_SOURCE_DIR) + "/experiments";
   const std::string scene = std::string(::testing::TempDir()) + "/scene_error_table.yaml";
-  std::ofstream(scene) << R"(name: tiny_table
-seed: 2
-time: {step_s: 1.0, duration_s: 4.0}
-ground: {extent_m: [0.4, 0.4], cell_size_m: 0.02, initial_height: {kind: flat, height_m: 0.0}}
-objects:
-  - {name: top, shape: box, half_extents_m: [0.1, 0.1, 0.01], motion: [{time_s: 0, position_m: [0, 0, 0.1]}]}
-snow:
-  groups: [{name: ground, ground: true}, {name: table, objects: [top]}]
-  spread_deg: 5
-  direction_count: 8
-  snowfall_rate_m_s: 0.01
-)";
+  std::ofstream(scene) << testing::tiny_snow_table_yaml(4.0);
   const std::string yaml = "scenes:\n  - scene: " + scene + "\n    name: top\n    field: snow_depth_final.table\n" +
                            "    reference: {heuristic: {snow.repose_angle_deg: 40}}\n"
                            "    observables: [{kind: height_field}]\n"

@@ -19,6 +19,7 @@
 #include "models/core/solver/run.h"
 #include "validation/calibration/calibration_fit.h"
 #include "validation/calibration/calibration_loader.h"
+#include "tests/validation/calibration/tiny_snow_table.h"
 
 namespace repose {
 namespace {
@@ -176,18 +177,7 @@ TEST(CalibrationProblem, SnowMapsAreComparedByFieldAndTheAngleIsRecovered) {
   const fs::path root = fs::temp_directory_path() / ("repose_snow_field_" + std::to_string(::getpid()));
   fs::create_directories(root);
   const fs::path scene = root / "table.yaml";
-  std::ofstream(scene) << R"(name: tiny_table
-seed: 2
-time: {step_s: 1.0, duration_s: 6.0}
-ground: {extent_m: [0.4, 0.4], cell_size_m: 0.02, initial_height: {kind: flat, height_m: 0.0}}
-objects:
-  - {name: top, shape: box, half_extents_m: [0.1, 0.1, 0.01], motion: [{time_s: 0, position_m: [0, 0, 0.1]}]}
-snow:
-  groups: [{name: ground, ground: true}, {name: table, objects: [top]}]
-  spread_deg: 5
-  direction_count: 8
-  snowfall_rate_m_s: 0.01
-)";
+  std::ofstream(scene) << testing::tiny_snow_table_yaml(6.0);
   const std::string entry = "  - scene: " + scene.string() + "\n    reference: {heuristic: {snow.repose_angle_deg: 40}}\n" +
                             "    observables: [{kind: height_field}]\n";
   const std::string yaml = "scenes:\n" + entry + "    name: top\n    field: snow_depth_final.table\n" + entry +
