@@ -7,6 +7,7 @@
 #include <cmath>
 #include <utility>
 
+#include "models/core/base/error.h"
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"
@@ -194,18 +195,29 @@ class Rings {
   // exact, so mirror images tie exactly). Within a ring, material moves
   // only away from the centre, so a cell in a concave corner of the region,
   // whose open neighbours share its ring, still has a way out.
-  std::int64_t away(std::int64_t c) const {
+  std::int64_t away(int i, int j) const {
     const Footprint& fp = in_.region.fp;
-    const std::int64_t nx = in_.model.grid.nx;
-    const std::int64_t di = 2 * (c % nx) - (2 * fp.i0 + fp.ni - 1), dj = 2 * (c / nx) - (2 * fp.j0 + fp.nj - 1);
+    const std::int64_t di = 2 * static_cast<std::int64_t>(i) - (2 * fp.i0 + fp.ni - 1);
+    const std::int64_t dj = 2 * static_cast<std::int64_t>(j) - (2 * fp.j0 + fp.nj - 1);
     return di * di + dj * dj;
   }
   // -1 for a cell not reached yet (or never).
+  int of(int i, int j) const { return window_.contains(i, j) ? ring_of_[slot(i, j)] : -1; }
   int of(std::int64_t c) const {
     const int nx = in_.model.grid.nx;
-    const int i = cell_i(c, nx), j = cell_j(c, nx);
-    return window_.contains(i, j) ? ring_of_[slot(i, j)] : -1;
+    return of(cell_i(c, nx), cell_j(c, nx));
   }
+  // The place of a reached cell in the order of visits (ring, then away(),
+  // then index): rings are numbered as they grow, each sorted, so a smaller
+  // rank is visited first. Ring 0 (the covered cells) is never visited.
+  int rank(std::int64_t c) const {
+    const int nx = in_.model.grid.nx;
+    return rank_of_[slot(cell_i(c, nx), cell_j(c, nx))];
+  }
+  // The cell of a rank, its ring and its away().
+  std::int64_t cell_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].cell; }
+  int ring_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].ring; }
+  std::int64_t away_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].away; }
 
  private:
   std::size_t slot(int i, int j) const {
@@ -217,14 +229,18 @@ class Rings {
     const Footprint& fp = in_.region.fp;
     const Footprint old = window_;
     const std::vector<int> old_rings = std::move(ring_of_);
+    const std::vector<int> old_ranks = std::move(rank_of_);
     const int i0 = std::max(0, fp.i0 - margin), j0 = std::max(0, fp.j0 - margin);
     window_ = Footprint{i0, j0, std::min(g.nx, fp.i0 + fp.ni + margin) - i0, std::min(g.ny, fp.j0 + fp.nj + margin) - j0};
     ring_of_.assign(static_cast<std::size_t>(window_.ni) * window_.nj, -1);
+    rank_of_.assign(ring_of_.size(), -1);
     margin_ = margin;
     if (old_rings.empty()) return;
     for (int j = old.j0; j < old.j0 + old.nj; ++j) {
       for (int i = old.i0; i < old.i0 + old.ni; ++i) {
-        ring_of_[slot(i, j)] = old_rings[static_cast<std::size_t>(j - old.j0) * old.ni + (i - old.i0)];
+        const std::size_t o = static_cast<std::size_t>(j - old.j0) * old.ni + (i - old.i0);
+        ring_of_[slot(i, j)] = old_rings[o];
+        rank_of_[slot(i, j)] = old_ranks[o];
       }
     }
   }
@@ -241,21 +257,37 @@ class Rings {
     rings_.emplace_back();
     const std::vector<std::int64_t> last = rings_[static_cast<std::size_t>(k - 1)];
     for (const std::int64_t c : last) {
+      const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
       for (const auto& o : kNeighbours) {
-        const int ni = cell_i(c, g.nx) + o[0], nj = cell_j(c, g.nx) + o[1];
-        if (g.contains(ni, nj) && is_open(in_, ni, nj)) add(k, ni, nj);
+        const int ni = i + o[0], nj = j + o[1];
+        // a cell already in a ring needs no second look (is_open is the costly part)
+        if (!g.contains(ni, nj) || of(ni, nj) != -1) continue;
+        if (is_open(in_, ni, nj)) add(k, ni, nj);
       }
     }
-    std::sort(rings_.back().begin(), rings_.back().end(), [&](std::int64_t a, std::int64_t b) {
-      const std::int64_t da = away(a), db = away(b);
-      return da != db ? da < db : a < b;
-    });
+    // by away(), then index: the keys found once, not in every comparison
+    std::vector<std::pair<std::int64_t, std::int64_t>> keyed;
+    keyed.reserve(rings_.back().size());
+    for (const std::int64_t c : rings_.back()) keyed.emplace_back(away(cell_i(c, g.nx), cell_j(c, g.nx)), c);
+    std::sort(keyed.begin(), keyed.end());
+    for (std::size_t m = 0; m < keyed.size(); ++m) {
+      const std::int64_t c = keyed[m].second;
+      rings_.back()[m] = c;
+      rank_of_[slot(cell_i(c, g.nx), cell_j(c, g.nx))] = static_cast<int>(by_rank_.size());
+      by_rank_.push_back({c, keyed[m].first, k});
+    }
   }
   const ExcessRouting& in_;
   Footprint window_;
   int margin_ = 0;
   std::vector<std::vector<std::int64_t>> rings_;
   std::vector<int> ring_of_;  // over window_; -1: not reached
+  std::vector<int> rank_of_;  // over window_; -1: not reached or ring 0
+  struct Ranked {
+    std::int64_t cell, away;
+    int ring;
+  };
+  std::vector<Ranked> by_rank_;
 };
 
 struct Shed {
@@ -268,9 +300,9 @@ struct Shed {
 // Whether material may pass from c (ring k) to n: outwards to ring k + 1,
 // or within ring k away from the centre. Both orders are strict, so
 // material never comes back.
-bool onward(const Rings& rings, std::int64_t c, int k, std::int64_t n) {
-  const int kn = rings.of(n);
-  return kn == k + 1 || (kn == k && rings.away(n) > rings.away(c));
+bool onward(const Rings& rings, int i, int j, int k, int ni, int nj) {
+  const int kn = rings.of(ni, nj);
+  return kn == k + 1 || (kn == k && rings.away(ni, nj) > rings.away(i, j));
 }
 
 // What cell c of ring k passes on (amount 0: nothing).
@@ -291,7 +323,7 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k,
       if (tier <= 1 && in.dir.backward(o[0], o[1])) continue;
       const int ni = i + o[0], nj = j + o[1];
       const bool inside = g.contains(ni, nj);
-      if (inside && !onward(rings, c, k, in.model.cell(ni, nj))) continue;
+      if (inside && !onward(rings, i, j, k, ni, nj)) continue;
       lowest = std::min(lowest, inside ? state.height.at(ni, nj) : h - mine);  // beyond the edge: as the edge was
       s.to[s.n][0] = ni, s.to[s.n][1] = nj, ++s.n;
     }
@@ -312,19 +344,30 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k,
 void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& holding, Rings* rings,
                    Received* received, GroundState* state) {
   const Grid& g = in.model.grid;
-  using Entry = std::tuple<int, std::int64_t, std::int64_t>;  // ring, away, cell: the order of visits
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-  for (const std::int64_t c : holding) queue.emplace(rings->of(c), rings->away(c), c);
+  // the ranks waiting, smallest first; a cell is queued once: it is only
+  // ever given to by cells visited before it (onward() is strict)
+  std::priority_queue<int, std::vector<int>, std::greater<>> queue;
+  std::vector<char> queued;
+  auto enqueue = [&](std::int64_t c) {
+    const int r = rings->rank(c);
+    REPOSE_DEMAND(r >= 0);  // open cells are in rings 1 and on, ranked as their ring grows
+    if (static_cast<std::size_t>(r) >= queued.size()) queued.resize(static_cast<std::size_t>(r) + 1, 0);
+    if (queued[static_cast<std::size_t>(r)]) return;
+    queued[static_cast<std::size_t>(r)] = 1;
+    queue.push(r);
+  };
+  for (const std::int64_t c : holding) enqueue(c);
   std::vector<Shed> sheds;
   while (!queue.empty()) {
-    const auto [k, away, first] = queue.top();
+    const int k = rings->ring_of_rank(queue.top());
+    const std::int64_t away = rings->away_of_rank(queue.top());
     rings->at(k + 1);  // its onward neighbours are known
     sheds.clear();
-    for (std::int64_t last = -1; !queue.empty() && std::get<0>(queue.top()) == k && std::get<1>(queue.top()) == away;) {
-      const std::int64_t c = std::get<2>(queue.top());
+    while (!queue.empty()) {
+      const int r = queue.top();
+      if (rings->ring_of_rank(r) != k || rings->away_of_rank(r) != away) break;
+      const std::int64_t c = rings->cell_of_rank(r);
       queue.pop();
-      if (c == last) continue;  // queued twice
-      last = c;
       const Shed s = shed_of(in, *rings, c, k, *received, *state);
       if (s.amount > 0.0) sheds.push_back(s);
     }
@@ -333,9 +376,7 @@ void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& hol
       for (int t = 0; t < s.n; ++t) {
         const int ti = s.to[t][0], tj = s.to[t][1];
         deposit(in, ti, tj, s.amount / s.n, received, state);
-        if (!g.contains(ti, tj)) continue;
-        const std::int64_t n = in.model.cell(ti, tj);
-        queue.emplace(rings->of(n), rings->away(n), n);
+        if (g.contains(ti, tj)) enqueue(in.model.cell(ti, tj));
       }
     }
   }
