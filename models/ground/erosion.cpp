@@ -60,6 +60,27 @@ void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<std::pai
 
 // Inclined bed (erosion.h): per material, the height differences a pair
 // may have. Along x, d = h(i+1) - h(i) in [lo, hi]; along y, |d| <= across.
+// Moves each flux's material and then remembers both cells of every move
+// (all moves first: touching cells changes nothing the moves read). The
+// inclined rule floors a drained cell at the base, so a cell emptied to
+// round-off ends at 0, not 1 ulp below it. Returns the moves made.
+enum class FloorAtZero { kNo, kYes };
+long long apply_fluxes(const std::vector<Flux>& fluxes, FloorAtZero floor, double* h, ErosionMemory* memory) {
+  long long moves = 0;
+  for (const Flux& f : fluxes) {
+    if (!(f.amount > 0.0)) continue;
+    h[f.from] = floor == FloorAtZero::kYes ? std::max(0.0, h[f.from] - f.amount) : h[f.from] - f.amount;
+    h[f.to] += f.amount;
+    ++moves;
+  }
+  for (const Flux& f : fluxes) {
+    if (!(f.amount > 0.0)) continue;
+    memory->touch(f.from);
+    memory->touch(f.to);
+  }
+  return moves;
+}
+
 struct InclinedRule {
   double lo_m, hi_m, across_m;
   double sigma;
@@ -155,17 +176,7 @@ ErosionResult erode_inclined(const GroundModel& model, const GroundParams& param
     result.passes = p + 1;
     cap_outflow(h, &fluxes, &scratch);
     cap_inflow(h, &fluxes, &scratch);
-    for (const Flux& f : fluxes) {
-      if (!(f.amount > 0.0)) continue;
-      h[f.from] = std::max(0.0, h[f.from] - f.amount);  // a drained cell ends at the base, not 1 ulp below it
-      h[f.to] += f.amount;
-      ++result.moves;
-    }
-    for (const Flux& f : fluxes) {
-      if (!(f.amount > 0.0)) continue;
-      memory.touch(f.from);
-      memory.touch(f.to);
-    }
+    result.moves += apply_fluxes(fluxes, FloorAtZero::kYes, h, &memory);
   }
   return result;
 }
@@ -267,17 +278,7 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
 
     cap_inflow(h, &fluxes, &capped);
 
-    for (const Flux& f : fluxes) {
-      if (!(f.amount > 0.0)) continue;
-      h[f.from] -= f.amount;
-      h[f.to] += f.amount;
-      ++result.moves;
-    }
-    for (const Flux& f : fluxes) {
-      if (!(f.amount > 0.0)) continue;
-      memory.touch(f.from);
-      memory.touch(f.to);
-    }
+    result.moves += apply_fluxes(fluxes, FloorAtZero::kNo, h, &memory);
   }
   return result;
 }
