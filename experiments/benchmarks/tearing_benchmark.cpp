@@ -68,6 +68,11 @@
 // 340 ms). Every part is bound by memory bandwidth, which the other jobs
 // share; each lever in reach (no per-step allocation, a block product in
 // the CG loop, a looser tolerance) is worth ~1.05-1.3x, not the 8x missing.
+// Measured 2026-11-26 19:19 on a quiet machine (load 0.3, nothing else
+// running; median of 3, CPU time): BM_ExplicitStep/50 253 us (3,960
+// steps/s), BM_ImplicitStep/200 (Jacobi) 729 ms (1.4 steps/s, 108 it.),
+// BM_ImplicitStepMultigrid/200 362 ms (2.76 steps/s, 8.7 it.), /50 17.5 ms.
+// So the load was not what kept it from 20 steps/s: it is missed 7.2x.
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter=WholeTear/50   (minutes: one tear each)

@@ -13,6 +13,7 @@
 #include <Eigen/Geometry>
 
 #include "models/core/base/error.h"
+#include "models/core/gl/coloured_triangles.h"
 #include "models/core/gl/osmesa_context.h"
 
 namespace repose {
@@ -20,21 +21,6 @@ namespace repose {
 namespace {
 
 constexpr double kDefaultElevationRad = 35.0 * std::numbers::pi / 180.0;
-
-// Vertices relative to the camera target (float keeps its precision near the
-// view), a colour per vertex, drawn as unindexed or indexed triangles.
-struct ColouredTriangles {
-  std::vector<float> xyz;
-  std::vector<std::uint8_t> rgb;
-  std::vector<unsigned> indices;  // empty: every three vertices are a triangle
-};
-
-std::uint8_t to_byte(double v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
-
-void push_vertex(ColouredTriangles* t, const Eigen::Vector3d& p, const Eigen::Vector3d& rgb) {
-  for (int k = 0; k < 3; ++k) t->xyz.push_back(static_cast<float>(p[k]));
-  for (int k = 0; k < 3; ++k) t->rgb.push_back(to_byte(rgb[k]));
-}
 
 double lambert(const Eigen::Vector3d& normal, const RenderImageOptions& o) {
   const double diffuse = std::max(0.0, normal.dot(o.light_direction.normalized()));
@@ -57,7 +43,7 @@ ColouredTriangles ground_triangles(const HeightField& field, const Eigen::Vector
       const Eigen::Vector3d normal = Eigen::Vector3d(-dhdx, -dhdy, 1.0).normalized();
       const double s = hi > lo ? (field.at(i, j) - lo) / (hi - lo) : 0.5;
       const Eigen::Vector3d colour = ((1 - s) * o.ground_low_rgb + s * o.ground_high_rgb) * lambert(normal, o);
-      push_vertex(&t, Eigen::Vector3d(g.centre_x(i), g.centre_y(j), field.at(i, j)) - origin, colour);
+      t.add_vertex(Eigen::Vector3d(g.centre_x(i), g.centre_y(j), field.at(i, j)) - origin, colour);
     }
   }
   for (int j = 0; j + 1 < g.ny; ++j) {
@@ -82,7 +68,7 @@ ColouredTriangles object_triangles(const std::vector<TriangleMesh>& objects, con
       n.normalize();
       if (n.dot(eye - a) < 0) n = -n;
       const Eigen::Vector3d colour = o.object_rgb * lambert(n, o);
-      for (const Eigen::Vector3d* p : {&a, &b, &c}) push_vertex(&t, *p - origin, colour);
+      for (const Eigen::Vector3d* p : {&a, &b, &c}) t.add_vertex(*p - origin, colour);
     }
   }
   return t;
@@ -105,28 +91,13 @@ ColouredTriangles coloured_mesh_triangles(const ColouredMesh& m, const Eigen::Ve
     Eigen::Vector3d n = normals[static_cast<std::size_t>(v)];
     n = n.squaredNorm() > 0.0 ? n.normalized() : Eigen::Vector3d((eye - p).normalized());
     if (n.dot(eye - p) < 0) n = -n;
-    push_vertex(&t, p - origin, m.vertex_rgb[static_cast<std::size_t>(v)].cwiseMax(0.0).cwiseMin(1.0) * lambert(n, o));
+    t.add_vertex(p - origin, m.vertex_rgb[static_cast<std::size_t>(v)].cwiseMax(0.0).cwiseMin(1.0) * lambert(n, o));
   }
   for (Eigen::Index f = 0; f < m.mesh.F.rows(); ++f) {
     for (int k = 0; k < 3; ++k) t.indices.push_back(static_cast<unsigned>(m.mesh.F(f, k)));
   }
   if (t.indices.empty()) t.xyz.clear();  // nothing to draw (unindexed drawing would misread the vertices)
   return t;
-}
-
-void draw(const ColouredTriangles& t) {
-  if (t.xyz.empty()) return;
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_COLOR_ARRAY);
-  glVertexPointer(3, GL_FLOAT, 0, t.xyz.data());
-  glColorPointer(3, GL_UNSIGNED_BYTE, 0, t.rgb.data());
-  if (t.indices.empty()) {
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(t.xyz.size() / 3));
-  } else {
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(t.indices.size()), GL_UNSIGNED_INT, t.indices.data());
-  }
-  glDisableClientState(GL_COLOR_ARRAY);
-  glDisableClientState(GL_VERTEX_ARRAY);
 }
 
 // World-to-eye rotation and translation relative to the target (gluLookAt).
@@ -186,32 +157,8 @@ void validate(const CameraSpec& c, const RenderImageOptions& o, int max_px) {
   if (!c.up.allFinite() || view.normalized().cross(c.up).norm() < 1e-9) fail("up must not be along the view direction");
 }
 
-// Average s x s blocks of the bottom-up RGBA buffer into a top-down RGB image.
-RgbImage downsample(const std::vector<std::uint8_t>& rgba, int width, int height, int s) {
-  RgbImage img;
-  img.width = width;
-  img.height = height;
-  img.rgb.resize(static_cast<std::size_t>(width) * height * 3);
-  const int big_width = width * s;
-  for (int row = 0; row < height; ++row) {
-    const int big_row0 = (height - 1 - row) * s;  // GL row 0 is the bottom
-    for (int col = 0; col < width; ++col) {
-      for (int k = 0; k < 3; ++k) {
-        int sum = 0;
-        for (int dy = 0; dy < s; ++dy) {
-          for (int dx = 0; dx < s; ++dx) {
-            sum += rgba[(static_cast<std::size_t>(big_row0 + dy) * big_width + col * s + dx) * 4 + k];
-          }
-        }
-        img.rgb[(static_cast<std::size_t>(row) * width + col) * 3 + k] =
-            static_cast<std::uint8_t>((sum + s * s / 2) / (s * s));
-      }
-    }
-  }
-  return img;
-}
-
-// Draws the parts (relative to camera.target_m) into the current context
+// Draws the parts (vertices relative to camera.target_m, so that float keeps
+// its precision near the view) into the current context
 // (made current at the supersampled size) and reads the image back.
 RgbImage draw_parts(const std::vector<const ColouredTriangles*>& parts, const CameraSpec& camera,
                     const RenderImageOptions& options, const OsmesaContext& context) {
@@ -234,9 +181,9 @@ RgbImage draw_parts(const std::vector<const ColouredTriangles*>& parts, const Ca
   glClearColor(static_cast<float>(bg.x()), static_cast<float>(bg.y()), static_cast<float>(bg.z()), 1.0f);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  for (const ColouredTriangles* t : parts) draw(*t);
+  for (const ColouredTriangles* t : parts) draw_triangles(*t);
   glFinish();
-  return downsample(context.rgba(), camera.width_px, camera.height_px, options.supersample);
+  return read_image(context, camera.width_px, camera.height_px, options.supersample);
 }
 
 }  // namespace

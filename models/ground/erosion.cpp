@@ -33,29 +33,37 @@ struct PairRule {
   int passes;
 };
 
-// Never above an object: scales the inflow of each capped cell (one under
-// an object) down to its room. The fluxes into capped cells are grouped by
-// cell, in flux order within a cell, so each inflow sums in flux order; a
-// sorted list of (cell, flux index), not a hash map, so that a pass
-// allocates nothing (`capped` is scratch, kept between passes).
-void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t, std::size_t>>* capped) {
+// Groups the fluxes listed in `groups` (cell, flux index) by cell and
+// scales each group down to what its cell can take or give,
+// `capacity(cell, first flux of the group)` >= 0. A sorted list, not a hash
+// map, so that a pass allocates nothing (`groups` is scratch kept between
+// passes) and each group sums in flux order.
+template <typename Capacity>
+void scale_groups(std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t, std::size_t>>* groups,
+                  Capacity capacity) {
   std::vector<Flux>& fx = *fluxes;
-  capped->clear();
-  for (std::size_t k = 0; k < fx.size(); ++k) {
-    if (std::isfinite(fx[k].ceiling_m)) capped->emplace_back(fx[k].to, k);
-  }
-  std::sort(capped->begin(), capped->end());
-  for (std::size_t first = 0, last = 0; first < capped->size(); first = last) {
-    const std::int64_t cell = (*capped)[first].first;
-    double inflow = 0.0;
-    for (last = first; last < capped->size() && (*capped)[last].first == cell; ++last) {
-      inflow += fx[(*capped)[last].second].amount;
+  std::sort(groups->begin(), groups->end());
+  for (std::size_t first = 0, last = 0; first < groups->size(); first = last) {
+    const std::int64_t cell = (*groups)[first].first;
+    double total = 0.0;
+    for (last = first; last < groups->size() && (*groups)[last].first == cell; ++last) {
+      total += fx[(*groups)[last].second].amount;
     }
-    const double room = std::max(0.0, fx[(*capped)[first].second].ceiling_m - h[cell]);
-    if (!(inflow > room)) continue;
-    const double scale = room / inflow;
-    for (std::size_t k = first; k < last; ++k) fx[(*capped)[k].second].amount *= scale;
+    const double allowed = capacity(cell, fx[(*groups)[first].second]);
+    if (!(total > allowed)) continue;
+    const double scale = allowed / total;
+    for (std::size_t k = first; k < last; ++k) fx[(*groups)[k].second].amount *= scale;
   }
+}
+
+// Never above an object: scales the inflow of each capped cell (one under
+// an object) down to its room.
+void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t, std::size_t>>* capped) {
+  capped->clear();
+  for (std::size_t k = 0; k < fluxes->size(); ++k) {
+    if (std::isfinite((*fluxes)[k].ceiling_m)) capped->emplace_back((*fluxes)[k].to, k);
+  }
+  scale_groups(fluxes, capped, [h](std::int64_t cell, const Flux& f) { return std::max(0.0, f.ceiling_m - h[cell]); });
 }
 
 // Inclined bed (erosion.h): per material, the height differences a pair
@@ -118,22 +126,11 @@ bool inclined_flux(const std::vector<InclinedRule>& rules, int material_a, int m
 
 // On an inclined bed a pass may ask a cell for more than it holds (a thin
 // layer on a slope steeper than the angle of repose flows on): each cell's
-// outflow is scaled down to its material, grouped as cap_inflow groups.
+// outflow is scaled down to its material.
 void cap_outflow(const double* h, std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t, std::size_t>>* by_source) {
-  std::vector<Flux>& fx = *fluxes;
   by_source->clear();
-  for (std::size_t k = 0; k < fx.size(); ++k) by_source->emplace_back(fx[k].from, k);
-  std::sort(by_source->begin(), by_source->end());
-  for (std::size_t first = 0, last = 0; first < by_source->size(); first = last) {
-    const std::int64_t cell = (*by_source)[first].first;
-    double outflow = 0.0;
-    for (last = first; last < by_source->size() && (*by_source)[last].first == cell; ++last) {
-      outflow += fx[(*by_source)[last].second].amount;
-    }
-    if (!(outflow > h[cell])) continue;
-    const double scale = std::max(0.0, h[cell]) / outflow;
-    for (std::size_t k = first; k < last; ++k) fx[(*by_source)[k].second].amount *= scale;
-  }
+  for (std::size_t k = 0; k < fluxes->size(); ++k) by_source->emplace_back((*fluxes)[k].from, k);
+  scale_groups(fluxes, by_source, [h](std::int64_t cell, const Flux&) { return std::max(0.0, h[cell]); });
 }
 
 ErosionResult erode_inclined(const GroundModel& model, const GroundParams& params, const Ceiling& ceiling,

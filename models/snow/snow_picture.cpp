@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "models/core/base/error.h"
+#include "models/core/gl/coloured_triangles.h"
 #include "models/core/gl/osmesa_context.h"
 #include "models/snow/snow_surface_mesh.h"
 
@@ -57,11 +58,6 @@ Camera make_camera(const SnowModel& model, const SnowPictureOptions& o, double z
   return c;
 }
 
-// Flat-shaded triangles: 3 vertices (NDC) and 3 colours per triangle.
-struct Batch {
-  std::vector<float> xyz, rgb;
-};
-
 double lambert(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
   static const Eigen::Vector3d kSun = Eigen::Vector3d(-0.4, -0.6, 1.0).normalized();
   Eigen::Vector3d n = (b - a).cross(c - a);
@@ -70,13 +66,13 @@ double lambert(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::
   return 0.45 + 0.55 * std::abs(n.dot(kSun));  // both faces lit: open meshes show their insides
 }
 
-void add_triangle(const Camera& cam, const Eigen::Vector3d (&p)[3], const Rgb& colour, Batch* b) {
+// A flat-shaded triangle, its vertices in pixels about the picture's centre.
+void add_triangle(const Camera& cam, const Eigen::Vector3d (&p)[3], const Rgb& colour, ColouredTriangles* b) {
   const double shade = lambert(p[0], p[1], p[2]);
   for (const Eigen::Vector3d& q : p) {
-    b->xyz.push_back(static_cast<float>((q.dot(cam.right) - cam.u0) * cam.scale));
-    b->xyz.push_back(static_cast<float>((q.dot(cam.up) - cam.v0) * cam.scale));
-    b->xyz.push_back(static_cast<float>(2.0 * (q.dot(cam.toward) - cam.w0) / cam.w_span));  // glOrtho negates: nearer is smaller
-    for (const double k : colour) b->rgb.push_back(static_cast<float>(std::clamp(k * shade, 0.0, 1.0)));
+    b->add_vertex(Eigen::Vector3d((q.dot(cam.right) - cam.u0) * cam.scale, (q.dot(cam.up) - cam.v0) * cam.scale,
+                                  2.0 * (q.dot(cam.toward) - cam.w0) / cam.w_span),  // glOrtho negates: nearer is smaller
+                  Eigen::Vector3d(colour[0], colour[1], colour[2]) * shade);
   }
 }
 
@@ -90,7 +86,7 @@ Rgb ground_rgb(double mean_depth_m, double full_m) {
 // The mesh's triangles in `colour`; with `depth` (the ground's snow, on
 // `grid`), each coloured by the mean depth at its corners (cell centres).
 void add_mesh(const Camera& cam, const TriangleMesh& mesh, const Rgb& colour, const ArrayXXdR* depth, const Grid& grid,
-              Batch* b) {
+              ColouredTriangles* b) {
   for (Eigen::Index f = 0; f < mesh.F.rows(); ++f) {
     const Eigen::Vector3d p[3] = {mesh.V.row(mesh.F(f, 0)).transpose(), mesh.V.row(mesh.F(f, 1)).transpose(),
                                   mesh.V.row(mesh.F(f, 2)).transpose()};
@@ -106,17 +102,6 @@ void add_mesh(const Camera& cam, const TriangleMesh& mesh, const Rgb& colour, co
     }
     add_triangle(cam, p, ground_rgb(d, 0.25 * grid.cell_size_m), b);
   }
-}
-
-void draw(const Batch& b) {
-  if (b.xyz.empty()) return;
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_COLOR_ARRAY);
-  glVertexPointer(3, GL_FLOAT, 0, b.xyz.data());
-  glColorPointer(3, GL_FLOAT, 0, b.rgb.data());
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(b.xyz.size() / 3));
-  glDisableClientState(GL_COLOR_ARRAY);
-  glDisableClientState(GL_VERTEX_ARRAY);
 }
 
 }  // namespace
@@ -150,7 +135,7 @@ SnowPictureRenderer::~SnowPictureRenderer() = default;
 RgbImage SnowPictureRenderer::render(const SnowState& state) {
   REPOSE_DEMAND(state.depth_m.size() == model_.maps.size());
   const Camera cam = make_camera(model_, options_, z_top_m_);
-  Batch objects, snow;
+  ColouredTriangles objects, snow;
   for (std::size_t k = 0; k < model_.occluders.size(); ++k) {
     if (model_.occluder_map[k] != model_.ground_map) add_mesh(cam, model_.occluders[k], kObjectRgb, nullptr, model_.grid, &objects);
   }
@@ -178,24 +163,13 @@ RgbImage SnowPictureRenderer::render(const SnowState& state) {
   glClearColor(kSnowPictureBackground[0] / 255.0f, kSnowPictureBackground[1] / 255.0f,
                kSnowPictureBackground[2] / 255.0f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  draw(objects);
+  draw_triangles(objects);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(-1.0f, -4.0f);  // snow over the surface it lies on wins the depth test
-  draw(snow);
+  draw_triangles(snow);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glFinish();
-  RgbImage img;
-  img.width = options_.width_px;
-  img.height = options_.height_px;
-  img.rgb.resize(static_cast<std::size_t>(img.width) * img.height * 3);
-  const std::vector<std::uint8_t>& rgba = context_->rgba();
-  for (int y = 0; y < img.height; ++y) {
-    const std::size_t src_row = static_cast<std::size_t>(img.height - 1 - y) * img.width;  // GL row 0 at the bottom
-    for (int x = 0; x < img.width; ++x) {
-      for (int a = 0; a < 3; ++a) img.rgb[(static_cast<std::size_t>(y) * img.width + x) * 3 + a] = rgba[(src_row + x) * 4 + a];
-    }
-  }
-  return img;
+  return read_image(*context_, options_.width_px, options_.height_px, 1);
 }
 
 }  // namespace repose

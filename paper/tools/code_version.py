@@ -81,7 +81,14 @@ def library_folders(libraries, target):
 
 
 def solver_folders(libraries, solver):
-    """Folders of solver NAME (target repose_NAME); KeyError when no such library exists yet."""
+    """Folders of solver NAME (target repose_NAME); KeyError when no such library exists yet.
+
+    `--solver liggghts` runs dem scenes through repose_liggghts and terrain
+    (debris) scenes through repose_liggghts_debris, which links it and the
+    debris set-up the rigid engines share (validation/rigid, models/terrain):
+    an input made from a terrain scene lists solver `liggghts_debris`, so that
+    the dem inputs do not go stale whenever the debris code changes.
+    """
     return library_folders(libraries, "repose_" + solver.replace("-", "_"))
 
 

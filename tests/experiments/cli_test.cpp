@@ -288,7 +288,7 @@ TEST(Cli, RunSetOverridesASceneKeyAndIsCheckedLikeTheFile) {
   const std::string a = read_all(cwd.path / "a" / "height_initial.npy");
   EXPECT_EQ(a, read_all(cwd.path / "same" / "height_initial.npy"));
   EXPECT_NE(a, read_all(cwd.path / "other" / "height_initial.npy"));
-  for (const std::string& bad : {"seed", "no_such_key=1", "seed=-1"}) {
+  for (const char* bad : {"seed", "no_such_key=1", "seed=-1"}) {
     const Result r = run_repose({"run", scene.string(), "--out", "bad", "--set", bad}, cwd.path);
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
     EXPECT_TRUE(is_one_line(r.err)) << r.err;

@@ -40,6 +40,12 @@ class CodeVersionTest(unittest.TestCase):
         for solver in ("ground", "liggghts", "bullet", "ode", "snow", "tearing", "terrain"):
             self.assertIn("models/core/base", solver_folders(libraries, solver), solver)
 
+    def test_liggghts_terrain_inputs_name_the_debris_library_and_dem_ones_do_not(self):
+        libraries = cmake_libraries(tools_path.REPOSITORY)
+        self.assertIn("validation/liggghts_debris", solver_folders(libraries, "liggghts_debris"))
+        self.assertIn("validation/liggghts", solver_folders(libraries, "liggghts_debris"))
+        self.assertNotIn("validation/liggghts_debris", solver_folders(libraries, "liggghts"))
+
 
 if __name__ == "__main__":
     unittest.main()
