@@ -21,9 +21,10 @@ Per observable:
                front speed, force, impulse and parts moved 0; the front stays
                where it starts; the height map stays the undisturbed terrain
                with the source on it (height_initial)
-The height map is compared on the cells where any run (or the source) lies
-more than 1 cm above the bare terrain (the `terrain` run's height_final,
-else the lowest of all maps), so the untouched hill does not dilute it.
+The deposit map is the final height map less the bare terrain (the `terrain`
+run's height_final, else the lowest of all maps), compared on the cells where
+any run (or the source) lies more than 1 cm above the terrain, so the
+untouched hill does not dilute it.
 """
 import csv
 import json
@@ -44,7 +45,7 @@ SCALARS = [  # (key, manifest results path, unit, scale to the unit)
     ("house_joints_broken", "building.house.joints_broken", "joints", 1.0),
     ("barn_peak_force", "building.barn.peak_force_n", "MN", 1e-6),
 ]
-CURVES = [("front", "front_m", "m"), ("height_map", None, "m")]
+CURVES = [("front", "front_m", "m"), ("deposit_map", None, "m")]
 DEPOSIT_THRESHOLD_M = 0.01
 
 
@@ -133,7 +134,9 @@ def yardstick_rows(groups, terrain=None):
     mask = deposit_mask(maps, terrain)
 
     def curve(run, key):
-        return on_times(t, run["front_t"], run["front"]) if key == "front" else run["final"][mask]
+        if key == "front":
+            return on_times(t, run["front_t"], run["front"])
+        return (run["final"] - terrain)[mask]  # the depth above the bare terrain
 
     rows = []
     for key, _, unit, _ in SCALARS:
@@ -154,7 +157,7 @@ def yardstick_rows(groups, terrain=None):
         if key == "front":  # the front stays where it starts
             nothing = np.full_like(ref_mean, np.mean([r["front"][0] for r in ref]))
         else:  # the undisturbed terrain with the source on it
-            nothing = np.mean([r["initial"] for r in ref], axis=0)[mask]
+            nothing = (np.mean([r["initial"] for r in ref], axis=0) - terrain)[mask]
         for group, runs in groups.items():
             curves = [curve(r, key) for r in runs]
             # mean: over time (cells) of the seeds' mean; spread: the group's own seed-to-seed noise

@@ -55,7 +55,7 @@ class DebrisYardsticksTest(unittest.TestCase):
         self.assertGreater(front_l["nothing"], 20.0)
         # the height map on the cells any run or the source covers (two of four): the reference
         # seeds agree (noise 0); Bullet's deposit is 1 m higher on one of them, the source 1 m on the other
-        maps_l, maps_b = by(rows, "height_map", "liggghts"), by(rows, "height_map", "bullet")
+        maps_l, maps_b = by(rows, "deposit_map", "liggghts"), by(rows, "deposit_map", "bullet")
         self.assertEqual(maps_l["noise"], 0.0)
         self.assertAlmostEqual(maps_b["error"], math.sqrt(0.5))
         self.assertAlmostEqual(maps_b["nothing"], math.sqrt((4.0 + 1.0) / 2))
