@@ -117,13 +117,17 @@ for scene in chute_rock chute_rock_45; do
   done
 done
 # the debris flow on generated terrain against two buildings (issue 14,
-# item 4): one run per engine (the scene has no random bed)
-scenes[terrain_debris]=experiments/scenes/terrain_debris.yaml
-for engine in bullet ode; do
-  scenes[terrain_debris_$engine]=experiments/scenes/terrain_debris.yaml
-  solvers[terrain_debris_$engine]=$engine
+# item 4): each engine on three random beds (the elements' radii and
+# placement drawn from the seed), LIGGGHTS' the reference and its noise
+for seed in "${seeds[@]}"; do
+  scenes[terrain_debris/seed$seed]=experiments/scenes/terrain_debris.yaml
+  order+=("terrain_debris/seed$seed")
+  for engine in bullet ode; do
+    scenes[terrain_debris_$engine/seed$seed]=experiments/scenes/terrain_debris.yaml
+    solvers[terrain_debris_$engine/seed$seed]=$engine
+    order+=("terrain_debris_$engine/seed$seed")
+  done
 done
-order+=(terrain_debris terrain_debris_bullet terrain_debris_ode)
 if [[ $# -gt 0 ]]; then order=("$@"); fi
 
 # the files kept in data/NAME (the rest of the run folder is large or

@@ -12,8 +12,13 @@ the same files, validation/liggghts_debris) and writes, per run:
                           outline (red once it has moved more than 5 cm);
 and for all runs together debris_front.png: the front along the flow, its
 speed, the joints broken and the force of the elements on each building
-(binned, building_forces.csv) against time, one colour per engine, one line
-style per building.
+(binned, building_forces.csv) against time, one colour per engine (its
+seeds NAME_seed_N in the same colour), one line style per building.
+With LIGGGHTS on two or more beds (folders liggghts_seed_N) it writes the
+yardsticks (debris_yardsticks.py): debris_yardsticks.csv and .txt (per
+observable and engine: seed mean and spread, difference to LIGGGHTS' mean,
+LIGGGHTS' seed-to-seed noise, doing nothing's error) and
+debris_yardsticks.png (each engine's error beside the noise and doing nothing).
 A run folder with terrain_mesh.obj (the terrain solver's) gets its contour
 and mesh figure through terrain_figure.py: the chain from key contours on.
 """
@@ -31,6 +36,7 @@ import numpy as np  # noqa: E402
 from figure_output import save  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import debris_yardsticks  # noqa: E402
 import terrain_figure  # noqa: E402
 
 MOVED_M = 0.05  # as DebrisRunOptions::moved_threshold_m
@@ -133,20 +139,31 @@ def draw_frames(folder, name, out_dir):
 STYLES = ["-", "--", ":", "-."]
 
 
+def engine_of(name):
+    """A run's group: NAME for NAME_seed_N, else the name itself."""
+    m = debris_yardsticks.SEED_FOLDER.match(name)
+    return m.group("group") if m else name
+
+
 def draw_fronts(runs, out_dir):
     fig, axes = plt.subplots(1, 4, figsize=(18, 4))
-    for k, (name, folder) in enumerate(runs):
-        colour = "C{}".format(k)
+    engines = list(dict.fromkeys(engine_of(name) for name, _ in runs))
+    for name, folder in runs:
+        engine = engine_of(name)
+        colour = "C{}".format(engines.index(engine))
+        first = name == engine or name.endswith("_seed_1")  # one legend entry per engine
+        label = engine if first else None
         d = read_front(folder)
-        axes[0].plot(d["time_s"], d["front_m"], color=colour, label=name)
-        axes[1].plot(d["time_s"], d["front_speed_m_s"], color=colour, label=name + " front")
-        axes[1].plot(d["time_s"], d["mean_speed_m_s"], "--", color=colour, label=name + " mean element")
-        axes[2].step(d["time_s"], d["joints_broken"], where="post", color=colour, label=name)
+        axes[0].plot(d["time_s"], d["front_m"], color=colour, label=label)
+        axes[1].plot(d["time_s"], d["front_speed_m_s"], color=colour, label=label and label + " front")
+        axes[1].plot(d["time_s"], d["mean_speed_m_s"], "--", color=colour, label=label and label + " mean element")
+        axes[2].step(d["time_s"], d["joints_broken"], where="post", color=colour, label=label)
         forces = read_forces(folder)
         if forces is not None:
             t, by_building = forces
             for j, (building, f) in enumerate(by_building.items()):
-                axes[3].plot(t, f / 1e6, STYLES[j % len(STYLES)], color=colour, label="{} {}".format(name, building))
+                axes[3].plot(t, f / 1e6, STYLES[j % len(STYLES)], color=colour,
+                             label=label and "{} {}".format(label, building))
     labels = ["front along the flow (m)", "speed (m/s)", "joints broken", "force of the elements on a building (MN)"]
     for ax, label in zip(axes, labels):
         ax.set_xlabel("time (s)")
@@ -155,6 +172,40 @@ def draw_fronts(runs, out_dir):
     fig.tight_layout()
     save(fig, out_dir, "debris_front.png", dpi=110)
     plt.close(fig)
+
+
+def draw_yardsticks(rows, out_dir):
+    """Per observable: each engine's error to LIGGGHTS' mean beside LIGGGHTS' noise and doing nothing."""
+    observables = list(dict.fromkeys(r["observable"] for r in rows))
+    cols = 3
+    fig, axes = plt.subplots((len(observables) + cols - 1) // cols, cols, figsize=(15, 3.2 * ((len(observables) + 2) // 3)),
+                             squeeze=False)
+    for ax, observable in zip(axes.flat, observables):
+        mine = [r for r in rows if r["observable"] == observable and r["group"] != debris_yardsticks.REFERENCE]
+        ax.bar(range(len(mine)), [abs(r["error"]) for r in mine], color="tab:orange")
+        ax.set_xticks(range(len(mine)))
+        ax.set_xticklabels([r["group"] for r in mine], rotation=20, fontsize=7)
+        ref = rows[[r["observable"] for r in rows].index(observable)]
+        ax.axhline(ref["noise"], color="tab:blue", ls=":", label="LIGGGHTS seed-to-seed noise")
+        ax.axhline(ref["nothing"], color="k", ls="--", label="doing nothing")
+        ax.set_title("{} ({}): |error| to LIGGGHTS' mean".format(observable, ref["unit"]), fontsize=9)
+        ax.legend(fontsize=7)
+    for ax in list(axes.flat)[len(observables):]:
+        ax.axis("off")
+    fig.tight_layout()
+    save(fig, out_dir, "debris_yardsticks.png", dpi=110)
+    plt.close(fig)
+
+
+def write_yardsticks(out_dir):
+    """The yardstick table and figure when LIGGGHTS ran two or more beds."""
+    rows = debris_yardsticks.yardsticks(out_dir)
+    if rows is None:
+        return
+    debris_yardsticks.write_csv(os.path.join(out_dir, "debris_yardsticks.csv"), rows)
+    with open(os.path.join(out_dir, "debris_yardsticks.txt"), "w") as f:
+        f.write(debris_yardsticks.format_table(rows) + "\n")
+    draw_yardsticks(rows, out_dir)
 
 
 def main():
@@ -176,6 +227,7 @@ def main():
             draw_frames(folder, name, out_dir)
     if runs:
         draw_fronts(runs, out_dir)
+    write_yardsticks(out_dir)
 
 
 if __name__ == "__main__":

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <random>
 
 #include <fmt/format.h>
 
@@ -17,6 +19,12 @@ void ElementSource::validate() const {
   if (layers.empty()) throw InputError("terrain: elements: layers needs at least one layer");
   if (!(gap_fraction >= 0.0 && gap_fraction < 1.0)) {
     throw InputError(fmt::format("terrain: elements: gap_fraction = {} must lie in [0, 1)", gap_fraction));
+  }
+  if (!(radius_spread >= 0.0 && radius_spread < 1.0)) {
+    throw InputError(fmt::format("terrain: elements: radius_spread = {} must lie in [0, 1)", radius_spread));
+  }
+  if (!(position_jitter >= 0.0 && position_jitter <= 1.0)) {
+    throw InputError(fmt::format("terrain: elements: position_jitter = {} must lie in [0, 1]", position_jitter));
   }
   for (std::size_t i = 0; i < layers.size(); ++i) {
     const ElementLayer& l = layers[i];
@@ -90,6 +98,25 @@ std::optional<double> rest_height_m(const TerrainSurface& surface, const std::ve
   return z;
 }
 
+// One lattice point's sphere in a random bed (element_layers.h): its radius
+// and its centre moved within its room. Always draws three numbers, so a
+// point's draw does not depend on whether earlier points were kept.
+struct BedDraw {
+  double radius_m;
+  Point2 xy;
+};
+
+BedDraw draw_bed(std::mt19937_64& rng, const ElementSource& source, double layer_radius_m, const Point2& lattice) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double u_radius = unit(rng), u_distance = unit(rng), u_angle = unit(rng);
+  const double r = layer_radius_m * (1.0 - source.radius_spread * u_radius);
+  const double room_m = (layer_radius_m - r) + 0.5 * source.gap_fraction * layer_radius_m;
+  // uniform over the disc of radius jitter * room
+  const double d = source.position_jitter * room_m * std::sqrt(u_distance);
+  const double a = 2.0 * std::numbers::pi * u_angle;
+  return {r, lattice + d * Point2(std::cos(a), std::sin(a))};
+}
+
 }  // namespace
 
 ElementLayout place_element_layers(const TerrainSurface& surface, const ElementSource& source) {
@@ -101,6 +128,7 @@ ElementLayout place_element_layers(const TerrainSurface& surface, const ElementS
   // two spheres closer than a cell horizontally are the only ones that can touch
   ElementGrid grid(box, 2.0 * largest_m * (1.0 + source.gap_fraction));
   ElementLayout layout;
+  std::mt19937_64 rng(source.seed);
   int row_index = 0;
   for (std::size_t l = 0; l < source.layers.size(); ++l) {
     const ElementLayer& layer = source.layers[l];
@@ -111,16 +139,17 @@ ElementLayout place_element_layers(const TerrainSurface& surface, const ElementS
       const std::size_t earlier_rows = layout.elements.size();
       for (double y = box.min().y() + shift; y <= box.max().y(); y += spacing_m) {
         for (double x = box.min().x() + shift; x <= box.max().x(); x += spacing_m) {
-          const Point2 xy(x, y);
+          const BedDraw bed = draw_bed(rng, source, layer.radius_m, Point2(x, y));
+          const Point2& xy = bed.xy;
           if (!contains_point(source.region_m, xy)) continue;
           const std::optional<double> z = rest_height_m(surface, layout.elements, earlier_rows, grid, xy,
-                                                        layer.radius_m, source.gap_fraction);
+                                                        bed.radius_m, source.gap_fraction);
           if (!z) {
             ++layout.skipped_off_terrain;
             continue;
           }
           grid.add(static_cast<int>(layout.elements.size()), xy);
-          layout.elements.push_back({Eigen::Vector3d(x, y, *z), layer.radius_m, static_cast<int>(l)});
+          layout.elements.push_back({Eigen::Vector3d(xy.x(), xy.y(), *z), bed.radius_m, static_cast<int>(l)});
         }
       }
     }

@@ -31,10 +31,12 @@ std::vector<KeyContour> read_inline_contours(const YamlValue& list) {
 }
 
 ElementSource read_elements(const YamlValue& value) {
-  const YamlMap m = value.map({"region_m", "gap_fraction", "layers"});
+  const YamlMap m = value.map({"region_m", "gap_fraction", "radius_spread", "position_jitter", "layers"});
   ElementSource src;
   src.region_m = read_points(m.required("region_m", "a list of [x, y]"));
   src.gap_fraction = m.number_or("gap_fraction", Range::right_open(0.0, 1.0), src.gap_fraction);
+  src.radius_spread = m.number_or("radius_spread", Range::right_open(0.0, 1.0), src.radius_spread);
+  src.position_jitter = m.number_or("position_jitter", Range::closed(0.0, 1.0), src.position_jitter);
   for (const YamlValue& item : m.required("layers", "a list of layers").list(1)) {
     const YamlMap l = item.map({"name", "radius_m", "rows", "friction", "restitution", "density_kg_m3", "rolling_friction"});
     ElementLayer layer;
@@ -86,6 +88,8 @@ void write_elements(YAML::Emitter& out, const ElementSource& e) {
   out << YAML::Key << "elements" << YAML::Value << YAML::BeginMap;
   write_points(out, "region_m", e.region_m);
   out << YAML::Key << "gap_fraction" << YAML::Value << yaml_number(e.gap_fraction);
+  out << YAML::Key << "radius_spread" << YAML::Value << yaml_number(e.radius_spread);
+  out << YAML::Key << "position_jitter" << YAML::Value << yaml_number(e.position_jitter);
   out << YAML::Key << "layers" << YAML::Value << YAML::BeginSeq;
   for (const ElementLayer& l : e.layers) {
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "name" << YAML::Value << l.name << YAML::Key << "radius_m"
@@ -156,9 +160,11 @@ const TerrainSection& terrain_section(const Scene& scene) {
 
 SectionType terrain_section_type() {
   return {TerrainSection::kKey, "key contours, moving elements and buildings (models/terrain/terrain_section.h)",
-          [](const YamlValue& value, const Scene&) -> std::shared_ptr<const SceneSection> {
+          [](const YamlValue& value, const Scene& scene) -> std::shared_ptr<const SceneSection> {
             auto section = std::make_shared<TerrainSection>();
             section->scene = read_terrain_section(value);
+            // the random bed follows the scene's seed (read before its sections)
+            if (section->scene.elements) section->scene.elements->seed = scene.seed;
             return section;
           },
           false};

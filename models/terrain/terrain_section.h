@@ -13,6 +13,8 @@
 //     elements:                        # optional (element_layers.h)
 //       region_m: [[10, 10], [30, 10], [30, 30], [10, 30]]
 //       gap_fraction: 0.01
+//       radius_spread: 0.2             # optional, a random bed drawn from the scene's seed
+//       position_jitter: 1             # optional (both 0 by default: a regular lattice)
 //       layers: [{name: bed, radius_m: 1, rows: 2, friction: 0.6, restitution: 0.1, density_kg_m3: 2500,
 //                 rolling_friction: 0.1}]   # the last two: rigid engines only
 //     buildings:                       # optional (building.h)

@@ -66,9 +66,16 @@ ElementSource two_layer_source() {
   return src;
 }
 
-TEST(ElementLayers, NoTwoElementsOverlapAndAllRestOnOrAboveTheSurface) {
-  const Slope slope = cone_slope();
-  const ElementLayout layout = place_element_layers(slope.surface, two_layer_source());
+ElementSource random_bed_source(std::uint64_t seed) {
+  ElementSource src = two_layer_source();
+  src.gap_fraction = 0.02;
+  src.radius_spread = 0.3;
+  src.position_jitter = 1.0;
+  src.seed = seed;
+  return src;
+}
+
+void expect_no_overlap_and_rest_on_the_surface(const Slope& slope, const ElementLayout& layout) {
   const auto& es = layout.elements;
   ASSERT_GT(es.size(), 200u);
   EXPECT_EQ(layout.skipped_off_terrain, 0);
@@ -89,6 +96,93 @@ TEST(ElementLayers, NoTwoElementsOverlapAndAllRestOnOrAboveTheSurface) {
   });
   EXPECT_GE(touching, static_cast<int>(first_row) - 2);
   EXPECT_GT(touching, 50);
+}
+
+TEST(ElementLayers, NoTwoElementsOverlapAndAllRestOnOrAboveTheSurface) {
+  const Slope slope = cone_slope();
+  expect_no_overlap_and_rest_on_the_surface(slope, place_element_layers(slope.surface, two_layer_source()));
+}
+
+TEST(ElementLayers, ARandomBedKeepsItsElementsApartAndOnTheSurface) {
+  const Slope slope = cone_slope();
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    SCOPED_TRACE(seed);
+    expect_no_overlap_and_rest_on_the_surface(slope, place_element_layers(slope.surface, random_bed_source(seed)));
+  }
+}
+
+TEST(ElementLayers, TheSeedDrawsTheRadiiOverTheirRangeAndMovesTheCentres) {
+  const Slope slope = cone_slope();
+  const ElementSource src1 = random_bed_source(1), src2 = random_bed_source(2);
+  const ElementLayout a = place_element_layers(slope.surface, src1);
+  const ElementLayout again = place_element_layers(slope.surface, src1);
+  const ElementLayout b = place_element_layers(slope.surface, src2);
+  ASSERT_EQ(a.elements.size(), again.elements.size());
+  for (std::size_t i = 0; i < a.elements.size(); ++i) ASSERT_EQ(a.elements[i].centre_m, again.elements[i].centre_m);
+  const std::size_t n = std::min(a.elements.size(), b.elements.size());
+  int radius_differs = 0, xy_differs = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    radius_differs += a.elements[i].radius_m != b.elements[i].radius_m;
+    xy_differs += (a.elements[i].centre_m.head<2>() - b.elements[i].centre_m.head<2>()).norm() > 1e-6;
+  }
+  EXPECT_GT(radius_differs, static_cast<int>(n * 9 / 10));
+  EXPECT_GT(xy_differs, static_cast<int>(n * 9 / 10));
+  // each layer's radii fill [r (1 - spread), r]: uniform, so their mean is r (1 - spread / 2)
+  for (int layer = 0; layer < 2; ++layer) {
+    const double r = src1.layers[static_cast<std::size_t>(layer)].radius_m;
+    double lo = INFINITY, hi = 0.0, sum = 0.0;
+    int count = 0;
+    for (const PlacedElement& e : a.elements) {
+      if (e.layer != layer) continue;
+      lo = std::min(lo, e.radius_m), hi = std::max(hi, e.radius_m), sum += e.radius_m, ++count;
+    }
+    ASSERT_GT(count, 50);
+    EXPECT_GE(lo, r * (1.0 - src1.radius_spread));
+    EXPECT_LE(hi, r);
+    EXPECT_LT(lo, r * (1.0 - 0.9 * src1.radius_spread));
+    EXPECT_GT(hi, r * (1.0 - 0.1 * src1.radius_spread));
+    // standard error of the mean of a uniform over 0.3 r: 0.087 r / sqrt(count); 4 of them
+    EXPECT_NEAR(sum / count, r * (1.0 - 0.5 * src1.radius_spread), 4.0 * 0.087 * r / std::sqrt(count));
+  }
+}
+
+TEST(ElementLayers, WithoutSpreadOrJitterTheSeedIsNotUsed) {
+  const Slope slope = cone_slope();
+  ElementSource one = two_layer_source(), two = two_layer_source();
+  two.seed = 2;
+  const ElementLayout a = place_element_layers(slope.surface, one), b = place_element_layers(slope.surface, two);
+  ASSERT_EQ(a.elements.size(), b.elements.size());
+  for (std::size_t i = 0; i < a.elements.size(); ++i) {
+    EXPECT_EQ(a.elements[i].centre_m, b.elements[i].centre_m);
+    EXPECT_EQ(a.elements[i].radius_m, one.layers[static_cast<std::size_t>(a.elements[i].layer)].radius_m);
+  }
+}
+
+TEST(ElementLayers, ARandomBedsBadSpreadOrJitterNamesTheField) {
+  ElementSource src = two_layer_source();
+  src.radius_spread = 1.0;
+  EXPECT_THROW(
+      {
+        try {
+          src.validate();
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("radius_spread = 1"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      InputError);
+  src.radius_spread = 0.0;
+  src.position_jitter = -0.1;
+  EXPECT_THROW(
+      {
+        try {
+          src.validate();
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("position_jitter = -0.1"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      InputError);
 }
 
 TEST(ElementLayers, LayersStackInOrder) {

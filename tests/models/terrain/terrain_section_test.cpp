@@ -55,6 +55,23 @@ terrain:
   EXPECT_EQ(s.buildings[0].storeys, 2);
 }
 
+TEST(TerrainSection, ReadsARandomBedsSpreadAndJitter) {
+  const TerrainScene s = read(std::string("terrain:\n  key_contours: [{height_m: 0, points_m: ") + kSquare + R"(}]
+  elements:
+    region_m: [[10, 10], [30, 10], [30, 30]]
+    radius_spread: 0.25
+    position_jitter: 0.5
+    layers: [{radius_m: 0.5}]
+)");
+  ASSERT_TRUE(s.elements.has_value());
+  EXPECT_DOUBLE_EQ(s.elements->radius_spread, 0.25);
+  EXPECT_DOUBLE_EQ(s.elements->position_jitter, 0.5);
+  const std::string bad = error_of(std::string("terrain:\n  key_contours: [{height_m: 0, points_m: ") + kSquare +
+                                   "}]\n  elements: {region_m: [[10, 10], [30, 10], [30, 30]], radius_spread: 1, "
+                                   "layers: [{radius_m: 0.5}]}\n");
+  EXPECT_NE(bad.find("radius_spread"), std::string::npos) << bad;
+}
+
 TEST(TerrainSection, ErrorsNameTheKey) {
   const std::string unknown = error_of(std::string("terrain:\n  slope: 3\n  key_contours: [{height_m: 0, points_m: ") +
                                        kSquare + "}]\n");

@@ -86,3 +86,36 @@ TEST(TerrainSolver, BadSectionIsRefusedAtTheKey) {
 
 }  // namespace
 }  // namespace repose
+
+namespace repose {
+namespace {
+
+// The random bed follows the scene's top-level seed (which `--set seed=N`
+// and an experiment's seed sweep change), and the section writes the
+// spread and jitter back.
+TEST(TerrainSolver, TheScenesSeedDrawsTheElementsBed) {
+  const std::string elements = R"(  elements:
+    region_m: [[-10, -10], [10, -10], [10, 10], [-10, 10]]
+    radius_spread: 0.2
+    position_jitter: 1
+    layers: [{radius_m: 0.5}]
+)";
+  const Scene one = load(std::string("seed: 1\n") + kScene + elements);
+  const Scene two = load(std::string("seed: 2\n") + kScene + elements);
+  ASSERT_TRUE(terrain_section(two).scene.elements.has_value());
+  EXPECT_EQ(terrain_section(one).scene.elements->seed, 1u);
+  EXPECT_EQ(terrain_section(two).scene.elements->seed, 2u);
+  const TerrainScenery a = generate_scenery(terrain_section(one).scene);
+  const TerrainScenery b = generate_scenery(terrain_section(two).scene);
+  ASSERT_GT(a.elements.elements.size(), 100u);
+  EXPECT_NE(a.elements.elements[0].radius_m, b.elements.elements[0].radius_m);
+  YAML::Emitter out;
+  two.section<TerrainSection>()->write_yaml(out);
+  const TerrainScene back = read_terrain_section(parse_yaml(out.c_str(), "written.yaml"));
+  ASSERT_TRUE(back.elements.has_value());
+  EXPECT_EQ(back.elements->radius_spread, 0.2);
+  EXPECT_EQ(back.elements->position_jitter, 1.0);
+}
+
+}  // namespace
+}  // namespace repose
