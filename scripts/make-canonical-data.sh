@@ -104,6 +104,14 @@ for cohesion in 0 1e5 3e5; do
     done
   done
 done
+# the dry heap scene of the snow angle of repose (issue 13): a plate 24 cm
+# (60 grains) wide, endless along y, under 4 cm of vertical snowfall; the
+# ridge on it is ~10 grains tall (experiments/snow_calibration_c0_ridge.yaml)
+for seed in "${seeds[@]}"; do
+  name="snowfall_ridge_c0/seed$seed"
+  scenes[$name]=experiments/scenes/snowfall_ridge.yaml
+  order+=("$name")
+done
 # the rock-scale chute of the Bullet calibration (issue 14, item 6): the fit
 # slope (35 deg) and the held-out one (45 deg) in LIGGGHTS, the reference,
 # and in Bullet with its default contact parameters (the unfitted rung), on

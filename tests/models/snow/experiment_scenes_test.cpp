@@ -1,4 +1,6 @@
-// Every experiments/scenes/snow_*.yaml loads with the registry's sections,
+// Every experiments/scenes/snow_*.yaml and snowfall_*.yaml (the DEM
+// snowfall references' scenes, which the snow calibrations run under the
+// snow solver) loads with the registry's sections,
 // compiles under the snow solver and runs (its first two steps: the whole
 // runs are experiments), conserving snow.
 #include <filesystem>
@@ -17,7 +19,8 @@ TEST(ExperimentScenes, EverySnowSceneRunsAndConserves) {
   int count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
-    if (name.rfind("snow_", 0) != 0 || entry.path().extension() != ".yaml") continue;
+    const bool snow = name.rfind("snow_", 0) == 0 || name.rfind("snowfall_", 0) == 0;
+    if (!snow || entry.path().extension() != ".yaml") continue;
     SCOPED_TRACE(name);
     Scene scene = load_scene(entry.path().string(), solver_registry().sections());
     scene.time.duration_s = 2.0 * scene.time.step_s;
@@ -31,7 +34,7 @@ TEST(ExperimentScenes, EverySnowSceneRunsAndConserves) {
     EXPECT_TRUE(run.field("height_final").all_finite());
     ++count;
   }
-  EXPECT_GE(count, 2);  // table, primitives
+  EXPECT_GE(count, 7);  // table, primitives, the snowfall tables, roofs and ridge
 }
 
 }  // namespace

@@ -62,6 +62,36 @@ TEST(SimulateSnow, StraightDownSnowReachesUnderATableByFallingAndSliding) {
   EXPECT_NEAR(state.time_s, 12.0, 1e-12);
 }
 
+// A pedestal (a plate 20 cells wide, high above the ground) under vertical
+// snowfall deeper than the heap it can hold: the heap's flank along the
+// axis through its middle rises at the angle from the edge (the rule's
+// tolerance allows tan(theta) + 1e-6 m / 1 cm; the bound 0.005 on tan is
+// 0.3 deg at 25 deg), and the snow that fell is on the maps to round-off.
+// Snow piled on a 4-neighbour grid is steeper along the diagonals
+// (Stabilisation.PointSnowfallBuilds...): only the axis flank is the angle.
+TEST(SimulateSnow, APedestalUnderVerticalSnowfallHoldsAHeapWhoseAxisFlankIsAtTheAngle) {
+  const HeightField ground(centred_grid(30));
+  SnowOptions o = testing::vertical_snow_options(1);
+  o.snowfall = SnowfallRate(5e-3);
+  o.max_stabilisation_passes = 2000;
+  const SnowModel model = with_time(plates_over_ground(ground, {plate(0.1, 0.1, 0.3)}, o), 1.0, 14.0);
+  for (double angle_deg : {18.5, 25.0, 35.0}) {
+    SnowState state;
+    const SnowRunSummary summary = simulate_snow(model, SnowParams{angle_deg * kDeg, 0.0}, &state);
+    EXPECT_EQ(summary.unsettled_steps, 0);
+    EXPECT_NEAR(summary.imbalance_m3, 0.0, 1e-12 * state.ledger.fallen_m3);
+    // the middle row (j = 15) from the plate's west edge (i = 5) inwards: depth 0 there, then the flank
+    const ArrayXXdR& top = state.depth_m[1];
+    ASSERT_TRUE(model.maps[1].covered(5, 15) && !model.maps[1].covered(4, 15));
+    const double tan_theta = std::tan(angle_deg * kDeg), h = model.grid.cell_size_m;
+    const int flank_cells = std::min(9, static_cast<int>(0.07 / (h * tan_theta)));  // below 7 cm of snowfall
+    for (int k = 1; k <= flank_cells; ++k) {
+      EXPECT_NEAR((top(15, 5 + k) - top(15, 5 + k - 1)) / h, tan_theta, 0.005) << angle_deg << " deg, cell " << k;
+      EXPECT_NEAR(top(15, 5 + k), top(5 + k, 15), 1e-12);  // the same along y: the square plate's symmetry
+    }
+  }
+}
+
 TEST(SimulateSnow, BuildsFromASceneAndRefusesUnknownObjects) {
   const std::string yaml = R"(
 name: snow_table
