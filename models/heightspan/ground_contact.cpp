@@ -81,9 +81,22 @@ void push_back_into(SpanMap* map, int i, int j, int k, double level, double amou
   map->begin(map->cell(i, j))[k].material_m += amount;
 }
 
+// The ground cell in front of the object from map cell (i, j), going
+// against `back`: the first with no span of the map over it; false when it
+// lies off the ground's grid (or the object does not move sideways).
+bool cell_ahead(const SpanMap& map, const Grid& ground, CellOffset off, int i, int j, std::array<int, 2> back,
+                int* gi, int* gj) {
+  if (back[0] == 0 && back[1] == 0) return false;
+  int ci = i - back[0], cj = j - back[1];
+  while (map.grid.contains(ci, cj) && map.count(map.cell(ci, cj)) > 0) ci -= back[0], cj -= back[1];
+  *gi = ci + off.di, *gj = cj + off.dj;
+  return ground.contains(*gi, *gj);
+}
+
 }  // namespace
 
-double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state, const Eigen::Vector3d& motion_m) {
+double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state, const Eigen::Vector3d& motion_m,
+                      double intake_layer_m) {
   const Grid& g = model.grid;
   const CellOffset off = ground_offset(map->grid, g);
   const std::array<int, 2> back = back_step(motion_m);
@@ -99,15 +112,25 @@ double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state
       if (!(h > s[0].top_m)) continue;
       // the ground's material is [0, h]; each piece above the lowest top goes onto a span
       auto piece = [&](double lo, double hi) { return std::max(0.0, std::min(h, hi) - std::max(lo, 0.0)); };
+      double ahead = 0.0;  // pushed in front of the object (above the intake layer)
+      int ai = 0, aj = 0;
       for (int k = 0; k < n; ++k) {
         const double gap_top = k + 1 < n ? s[k + 1].bottom_m : std::numeric_limits<double>::infinity();
-        const double scooped = piece(s[k].top_m, gap_top);
+        double scooped = piece(s[k].top_m, gap_top);
+        if (k == 0 && scooped > intake_layer_m && cell_ahead(*map, g, off, i, j, back, &ai, &aj)) {
+          ahead = scooped - intake_layer_m;
+          scooped = intake_layer_m;
+        }
         if (scooped > 0.0) push_back_into(map, i, j, k, std::min(h, gap_top), scooped, back);
         if (k + 1 < n) s[k + 1].material_m += piece(s[k + 1].bottom_m, s[k + 1].top_m);  // out of the solid
       }
       const double left = std::clamp(s[0].top_m, 0.0, h);
-      moved += (h - left) * g.cell_area_m2();
+      moved += (h - left - ahead) * g.cell_area_m2();
       h = left;
+      if (ahead > 0.0) {
+        state->height.at(ai, aj) += ahead;
+        state->erosion.touch(model.cell(ai, aj));
+      }
       push_overflow_up(map, c);
       state->erosion.touch(model.cell(gi, gj));
     }

@@ -17,12 +17,23 @@
 //     as the DEM's grains are rammed in by those behind them, rather than
 //     heaping at its lip (departure: the paper leaves the material on the
 //     span that met it). Along the motion's main axis (x or y) only;
+//     While it moves sideways, the lowest span's top takes in at most
+//     intake_layer_m of the ground it meets in a cell (the mouth admits one
+//     layer as it advances); the ground above that layer is pushed ahead,
+//     onto the first ground cell in front of the object along the motion
+//     (no span of the map over it): the wedge a bucket drives ahead of its
+//     lip, which the DEM shows and which spills around the bucket rather
+//     than into it (issue 12; departure from the paper). Without a cell
+//     ahead on the ground grid it goes in. Pressing (no sideways motion)
+//     takes in everything;
 //   - what is left between the lowest span's bottom and top is the ground
 //     model's intersection, compressed and displaced as the ground model
 //     does (models/ground/displacement.h), by the caller.
 // Departure: the map samples the object at its own cell centres, which lie
 // within half a cell of the ground's (the map moves with the object); each
 // map cell stands for the ground cell holding its centre.
+
+#include <limits>
 
 #include "models/ground/collision.h"
 #include "models/heightspan/span_map.h"
@@ -46,7 +57,9 @@ Underside underside_of(const SpanMap& map, const Grid& ground, double top_m);
 // the volume moved (m^3). Cells that changed join the erosion memory.
 // motion_m: the object's move this substep; ground scooped while it moves
 // sideways is pushed back into it (ground_contact.cpp: push_back_into).
+// intake_layer_m: the layer taken in per cell while moving sideways (above).
 double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state,
-                      const Eigen::Vector3d& motion_m = Eigen::Vector3d::Zero());
+                      const Eigen::Vector3d& motion_m = Eigen::Vector3d::Zero(),
+                      double intake_layer_m = std::numeric_limits<double>::infinity());
 
 }  // namespace repose

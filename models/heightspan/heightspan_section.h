@@ -11,6 +11,10 @@
 //     max_substep_angle_deg: 5      # ... nor turns more than this per substep
 //     bulk_density_kg_m3: 1600      # to report held material as mass (LIGGGHTS reports kg)
 //     particle_spread_m_s: 0.02     # std. dev. of the horizontal velocity added to released particles
+//     intake_layer_m: 1.0e6         # the thickest layer of ground (m of height) a span's top takes in per
+//                                   # cell it advances into while the object moves sideways; the ground above
+//                                   # it is pushed ahead of the object (the wedge ahead of a bucket's lip);
+//                                   # 1e6: no limit (every bit met goes in). Fitted as heightspan.intake_layer_m
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
 //     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}
@@ -33,6 +37,7 @@ struct HeightSpanSpec {
   double max_substep_angle_rad = 0.08726646259971647;  // 5 deg, [0.01, 180] deg
   double bulk_density_kg_m3 = 1600.0;  // (0, 1e5]
   double particle_spread_m_s = 0.02;   // [0, 100]
+  double intake_layer_m = 1e6;         // (0, 1e6]; 1e6: no limit (ground_contact.h)
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
   enum class SpanMaps { kCpu, kOsmesa };
   SpanMaps span_maps = SpanMaps::kCpu;
@@ -49,6 +54,7 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
   v.angle_deg("max_substep_angle_deg", s.max_substep_angle_rad, Range::any());
   v.number("bulk_density_kg_m3", s.bulk_density_kg_m3, Range::any());
   v.number("particle_spread_m_s", s.particle_spread_m_s, Range::any());
+  v.number("intake_layer_m", s.intake_layer_m, Range::any());
   v.number("frame_interval_s", s.frame_interval_s, Range::any());
   using M = HeightSpanSpec::SpanMaps;
   v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});

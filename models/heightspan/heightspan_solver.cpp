@@ -119,21 +119,29 @@ class CompiledHeightSpan final : public CompiledSolver {
   explicit CompiledHeightSpan(const Scene& scene)
       : model_(build_heightspan_model(scene)), initial_(make_initial_height(scene)), parameters_(model_.ground) {
     if (model_.held.empty()) check_counts(model_.ground);  // the ground path: as the ground solver checks
+    infos_ = parameters_.infos();
+    infos_.push_back({"intake_layer_m", "m", 1.0, 1e-9, 1e6, model_.options.intake_layer_m,
+                      "the thickest ground layer a span's top takes in per cell while moving sideways; the rest "
+                      "is pushed ahead (heightspan.intake_layer_m; 1e6: no limit)"});
   }
 
-  const std::vector<ParameterInfo>& parameters() const override { return parameters_.infos(); }
+  const std::vector<ParameterInfo>& parameters() const override { return infos_; }
 
   Run run(const std::vector<double>& values_si, const RunOptions& options) const override {
-    check_values(parameters_.infos(), values_si, "heightspan");
+    check_values(infos_, values_si, "heightspan");
     const Stopwatch clock;
-    const GroundParams params = parameters_.params_for(model_.ground, values_si);
+    const std::vector<double> material(values_si.begin(), values_si.end() - 1);
+    const GroundParams params = parameters_.params_for(model_.ground, material);
+    HeightSpanModel model = model_;
+    model.options.intake_layer_m = values_si.back();
+    validate(model.options);
     Run run;
     run.solver = "heightspan";
     run.fields["height_initial"] = initial_;
     if (model_.held.empty()) {
       run_ground_path(params, options, &run);
     } else {
-      run_spans(params, options, &run);
+      run_spans(model, params, options, &run);
     }
     nlohmann::json ground_path = nlohmann::json::array();
     for (const int o : model_.ground_path) ground_path.push_back(object_name(model_, o));
@@ -155,23 +163,23 @@ class CompiledHeightSpan final : public CompiledSolver {
     run->details["built"] = {{"span_maps", nlohmann::json::array()}, {"particles", false}, {"path", "ground model"}};
   }
 
-  void run_spans(const GroundParams& params, const RunOptions& options, Run* run) const {
+  void run_spans(const HeightSpanModel& model, const GroundParams& params, const RunOptions& options, Run* run) const {
     FrameFn frame;
-    const FrameView view = frame_view(model_, initial_);
+    const FrameView view = frame_view(model, initial_);
     if (!options.output_dir.empty()) {
       fs::create_directories(fs::path(options.output_dir) / "frames");
       frame = [&](int n, const HeightSpanState& state) {
         const std::string png = fmt::format("frames/frame_{:04d}.png", n), npy = fmt::format("frames/height_{:04d}.npy", n);
-        write_png_rgb((fs::path(options.output_dir) / png).string(), render_frame(model_, state, view));
+        write_png_rgb((fs::path(options.output_dir) / png).string(), render_frame(model, state, view));
         write_npy_2d((fs::path(options.output_dir) / npy).string(), state.ground.height.heights());
         run->files.push_back(png);
         run->files.push_back(npy);
       };
     }
-    const HeightSpanRun r = simulate_heightspan(model_, params, initial_, options.progress, frame);
+    const HeightSpanRun r = simulate_heightspan(model, params, initial_, options.progress, frame);
     run->fields["height_final"] = r.final_height;
     run->stages = r.stages;
-    add_measures(model_, r, run);
+    add_measures(model, r, run);
     nlohmann::json maps = nlohmann::json::array();
     for (const HeldObject& h : model_.held) maps.push_back(object_name(model_, h.object));
     run->details["built"] = {{"span_maps", maps},
@@ -189,6 +197,7 @@ class CompiledHeightSpan final : public CompiledSolver {
   HeightSpanModel model_;
   HeightField initial_;
   MaterialParameters parameters_;
+  std::vector<ParameterInfo> infos_;  // the materials' (parameters_), then intake_layer_m
 };
 
 }  // namespace

@@ -3,7 +3,8 @@
 // repose Solver, for scenes with a `heightspan:` section. Compiling builds
 // the HeightSpanModel once; its parameters are the ground model's, by the
 // same names ("sand.alpha", "sand.repose_angle_deg", "sand.sigma";
-// models/ground/material_parameters.h), so a calibration fits them alike.
+// models/ground/material_parameters.h), so a calibration fits them alike,
+// and its own "intake_layer_m" (heightspan.intake_layer_m, m; ground_contact.h).
 // A scene where no object holds material runs the ground model itself
 // (simulate_ground) and builds no span map and no particles.
 //

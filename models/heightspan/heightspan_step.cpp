@@ -50,7 +50,7 @@ void substep(const HeightSpanModel& model, const GroundParams& params, Underside
     report->resampled += move_spans(model, model.held[k], to[o], motion / dt_s, *state->peeler, &spans, &state->particles,
                                      &state->rng)
                              .resampled;
-    report->taken_up_m3 += take_up_ground(ground, &spans.map, &state->ground, motion);
+    report->taken_up_m3 += take_up_ground(ground, &spans.map, &state->ground, motion, model.options.intake_layer_m);
     ceiling.undersides.push_back(underside_of(spans.map, ground.grid, top_at(ground.objects[o], to[o])));
     motions.push_back(motion);
   }

@@ -116,5 +116,77 @@ TEST(GroundContact, GroundScoopedWhileMovingSidewaysIsPushedToTheBackNeverAboveI
   }
 }
 
+// Over the map cells whose lowest span's top is under the ground: the sum of
+// what each would take in, min(the ground above the top, the intake layer).
+double expected_intake_m3(const HeightSpanModel& model, const HeightSpanState& state, double layer_m) {
+  const SpanMap& map = state.held[0].map;
+  const CellOffset off = ground_offset(map.grid, model.ground.grid);
+  double sum = 0.0;
+  for (int j = 0; j < map.grid.ny; ++j) {
+    for (int i = 0; i < map.grid.nx; ++i) {
+      const std::int64_t c = map.cell(i, j);
+      if (map.count(c) == 0 || !model.ground.grid.contains(i + off.di, j + off.dj)) continue;
+      const double above = state.ground.height.at(i + off.di, j + off.dj) - map.begin(c)[0].top_m;
+      sum += std::clamp(above, 0.0, layer_m);
+    }
+  }
+  return sum * model.ground.grid.cell_area_m2();
+}
+
+// An upright bucket (floor top at 2 cm, centre x = 0.1) in a flat bed `bed_m` deep,
+// moved 1 mm along +x (dx = 0: pressed) with the intake layer `layer_m`.
+struct Taken {
+  double held_m3 = 0.0, expected_m3 = 0.0, ahead_gain_m3 = 0.0, balance_m3 = 0.0;
+};
+Taken drag_through(double bed_m, double layer_m, double dx) {
+  Scene s = bed_scene(40, 40, 0.005, bed_m, {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.1, 0.1, 0.04)})}, 1);
+  const HeightSpanModel model = build_heightspan_model(s);
+  HeightSpanState state = make_heightspan_state(model, make_initial_height(s));
+  const double before = accounted_m3(state);
+  Taken t;
+  t.expected_m3 = expected_intake_m3(model, state, dx == 0.0 ? 1e9 : layer_m);
+  const HeightField ground0 = state.ground.height;
+  take_up_ground(model.ground, &state.held[0].map, &state.ground, Eigen::Vector3d(dx, 0.0, 0.0), layer_m);
+  t.held_m3 = state.held[0].map.material_m3();
+  for (int j = 0; j < 40; ++j) {
+    for (int i = 28; i < 40; ++i) {  // in front of the bucket (its outer rim ends at x = 0.14)
+      t.ahead_gain_m3 += (state.ground.height.at(i, j) - ground0.at(i, j)) * model.ground.grid.cell_area_m2();
+    }
+  }
+  t.balance_m3 = accounted_m3(state) - before;
+  return t;
+}
+
+TEST(GroundContact, MovingSidewaysALipTakesInOneIntakeLayerAndPushesTheRestAhead) {
+  for (const double bed : {0.022, 0.03}) {  // 2 mm and 1 cm above the floor's top
+    SCOPED_TRACE(bed);
+    const Taken t = drag_through(bed, 0.004, 0.001);
+    EXPECT_GT(t.held_m3, 0.0);
+    EXPECT_NEAR(t.held_m3, t.expected_m3, 1e-15);
+    EXPECT_NEAR(t.balance_m3, 0.0, 1e-15);
+    // what the lip does not take in lies in front of the bucket
+    const Taken all = drag_through(bed, 1e6, 0.001);
+    EXPECT_NEAR(t.ahead_gain_m3, all.held_m3 - t.held_m3, 1e-15);
+    EXPECT_EQ(all.ahead_gain_m3, 0.0);
+  }
+}
+
+TEST(GroundContact, ADraggedBucketFillsInTheRatioOfTheLayersItTakesIn) {
+  // 2 mm and 10 mm of ground above the floor: without a limit the intakes are
+  // in the ratio 5; with a 4 mm intake layer, 4 / 2 = 2
+  const double shallow = drag_through(0.022, 1e6, 0.001).held_m3, deep = drag_through(0.03, 1e6, 0.001).held_m3;
+  EXPECT_NEAR(deep / shallow, 5.0, 1e-9);
+  const double shallow_l = drag_through(0.022, 0.004, 0.001).held_m3, deep_l = drag_through(0.03, 0.004, 0.001).held_m3;
+  EXPECT_NEAR(shallow_l, shallow, 1e-15);  // a thinner layer than the limit goes in whole
+  EXPECT_NEAR(deep_l / shallow_l, 2.0, 1e-9);
+}
+
+TEST(GroundContact, PressingTakesInEverythingWhateverTheIntakeLayer) {
+  const Taken t = drag_through(0.03, 0.004, 0.0);
+  EXPECT_NEAR(t.held_m3, t.expected_m3, 1e-15);
+  EXPECT_NEAR(t.held_m3, drag_through(0.03, 1e6, 0.0).held_m3, 1e-15);
+  EXPECT_EQ(t.ahead_gain_m3, 0.0);
+}
+
 }  // namespace
 }  // namespace repose

@@ -60,6 +60,15 @@ TEST(HeightSpanSection, ValidateNamesTheField) {
   spec = {};
   spec.particle_spread_m_s = std::nan("");
   EXPECT_THROW(validate(spec), FieldError);
+  spec = {};
+  spec.intake_layer_m = 0.0;  // a lip that takes in nothing would never fill: refused
+  try {
+    validate(spec);
+    FAIL();
+  } catch (const FieldError& e) {
+    EXPECT_EQ(e.field(), "intake_layer_m");
+  }
+  EXPECT_EQ(HeightSpanSpec{}.intake_layer_m, 1e6);  // the default: no limit
 }
 
 TEST(HeightSpanSection, WritesWhatItReads) {

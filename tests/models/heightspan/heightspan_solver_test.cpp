@@ -28,14 +28,30 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const Scene s = small_scoop();
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size());
-  for (std::size_t k = 0; k < compiled->parameters().size(); ++k) {
+  // the ground's, then its own intake layer
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 1);
+  EXPECT_EQ(compiled->parameters().back().name, "intake_layer_m");
+  EXPECT_EQ(compiled->parameters().back().value_si, HeightSpanSpec{}.intake_layer_m);
+  for (std::size_t k = 0; k < ground->parameters().size(); ++k) {
     EXPECT_EQ(compiled->parameters()[k].name, ground->parameters()[k].name);
     EXPECT_EQ(compiled->parameters()[k].value_si, ground->parameters()[k].value_si);
   }
   EXPECT_NO_THROW(compiled->parameter_index("sand.repose_angle_deg"));
   std::vector<double> values = compiled->default_values();
   values[compiled->parameter_index("sand.sigma")] = 0.3;  // above the stability limit
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, AFittedIntakeLayerReachesTheRun) {
+  // a thin intake layer holds less than no limit on the same scoop
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  std::vector<double> values = compiled->default_values();
+  const double all = compiled->run(values, {}).measure("mass_held_max_kg.bucket").value;
+  values[compiled->parameter_index("intake_layer_m")] = 0.0005;
+  const double thin = compiled->run(values, {}).measure("mass_held_max_kg.bucket").value;
+  EXPECT_GT(thin, 0.0);
+  EXPECT_LT(thin, all);
+  values[compiled->parameter_index("intake_layer_m")] = 0.0;
   EXPECT_THROW(compiled->run(values, {}), InputError);
 }
 

@@ -74,6 +74,41 @@ TEST(HeightSpanStep, RandomScoopsConserveMaterialEveryStep) {
   }
 }
 
+Scene with_intake_layer(Scene s, double layer_m) {
+  HeightSpanSection section = heightspan_section(s);
+  section.options.intake_layer_m = layer_m;
+  return with_heightspan(std::move(s), section);
+}
+
+TEST(HeightSpanStep, RandomScoopsWithAnIntakeLayerConserveMaterialEveryStep) {
+  std::mt19937_64 rng(20261126);
+  std::uniform_real_distribution<double> depth(0.0, 0.025), drag(0.0, 0.08), tilt(0.0, 95.0), speed(0.05, 0.6),
+      layer(0.0002, 0.01);
+  for (int trial = 0; trial < 8; ++trial) {
+    const double d = depth(rng), l = drag(rng), t = tilt(rng), v = speed(rng), m = layer(rng);
+    const std::string where =
+        fmt::format("trial {} (depth {} m, drag {} m, tilt {} deg, speed {} m/s, layer {} m)", trial, d, l, t, v, m);
+    run_checked(with_intake_layer(scoop(d, l, t, v, static_cast<std::uint64_t>(trial)), m), where);
+    if (HasFailure()) break;
+  }
+}
+
+TEST(HeightSpanStep, AThinnerIntakeLayerHoldsLessAndLeavesMoreAheadOfTheBucket) {
+  // the same scoop 15 mm deep: a 2 mm layer takes in less than no limit does and
+  // leaves the rest as a wedge in front of where the drag ended (x > 0.17, beyond the lip)
+  const Checked all = run_checked(scoop(0.015, 0.08, 80.0, 0.15, 1), "no limit");
+  const Checked thin = run_checked(with_intake_layer(scoop(0.015, 0.08, 80.0, 0.15, 1), 0.002), "2 mm");
+  EXPECT_LT(thin.held_max_m3, 0.8 * all.held_max_m3);
+  auto ahead_m3 = [](const HeightSpanState& st) {
+    double sum = 0.0;
+    for (int j = 0; j < st.ground.height.ny(); ++j) {
+      for (int i = 34; i < st.ground.height.nx(); ++i) sum += st.ground.height.at(i, j);
+    }
+    return sum;
+  };
+  EXPECT_GT(ahead_m3(thin.state), ahead_m3(all.state));
+}
+
 TEST(HeightSpanStep, TiltedBucketDraggedThroughSandFills) {
   const Checked c = run_checked(scoop(0.015, 0.08, 80.0, 0.15, 1), "scoop");
   const double bucket_inside_m3 = 0.07 * 0.07 * 0.045;

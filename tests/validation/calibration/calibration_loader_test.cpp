@@ -87,8 +87,9 @@ TEST(CalibrationLoader, ReadsTheScoopCalibrationsSeriesObservables) {
   const ObservableSpec& held = spec.scenes[0].observables[0];
   EXPECT_EQ(held.kind, ObservableSpec::Kind::kSeries);
   EXPECT_EQ(held.series, "mass_held_kg.bucket");
-  EXPECT_EQ(held.times_s, (std::vector<double>{1.0, 1.3, 1.6, 2.3}));
+  EXPECT_EQ(held.times_s, (std::vector<double>{0.5, 0.8, 1.0, 1.3, 1.6, 2.3}));  // during the drag, then the stages
   EXPECT_EQ(spec.scenes[1].role, CalibrationScene::Role::kHeldOut);
+  EXPECT_EQ(spec.scenes[1].observables[0].times_s, (std::vector<double>{1.0, 1.3, 1.6, 2.3}));  // the stages
 }
 
 TEST(CalibrationLoader, ReadsTheBulletChuteCalibrationsMeasureObservables) {
