@@ -44,7 +44,17 @@ void read_published(const YamlMap& m, PaperFitSpec* s) {
   s->cd_stiffness_n_per_m = m.number("cd_stiffness_n_per_m", Range::positive());
   s->md_strength_n_per_m = m.number("md_strength_n_per_m", Range::positive());
   s->cd_strength_n_per_m = m.number("cd_strength_n_per_m", Range::positive());
-  s->tear_cd_over_md = m.number("tear_cd_over_md", Range::positive());
+  // the tear ratio, or the two tear resistances (mN) it is the ratio of
+  const auto ratio = m.get("tear_cd_over_md");
+  const auto md_tear = m.get("md_tear_mn"), cd_tear = m.get("cd_tear_mn");
+  if (ratio && (md_tear || cd_tear)) ratio->fail("either tear_cd_over_md or md_tear_mn and cd_tear_mn", "both");
+  if (ratio) {
+    s->tear_cd_over_md = m.number("tear_cd_over_md", Range::positive());
+    return;
+  }
+  s->md_tear_mn = m.number("md_tear_mn", Range::positive());
+  s->cd_tear_mn = m.number("cd_tear_mn", Range::positive());
+  s->tear_cd_over_md = s->cd_tear_mn / s->md_tear_mn;
 }
 
 }  // namespace
@@ -64,7 +74,7 @@ PaperFitSpec load_paper_fit_spec(const std::string& path) {
   if (!s.tear_scene.empty() && s.tear_seeds.empty()) m.fail_missing("tear_seeds", "the tear check's seeds");
   read_published(m.required("published", "the published values").map({"md_stiffness_n_per_m", "cd_stiffness_n_per_m",
                                                                         "md_strength_n_per_m", "cd_strength_n_per_m",
-                                                                        "tear_cd_over_md"}),
+                                                                        "tear_cd_over_md", "md_tear_mn", "cd_tear_mn"}),
                  &s);
   const std::vector<YamlValue> parameters = m.required("parameters", "three parameters").list(3);
   const char* names[3] = {"stiffness_scale", "tear_strain", "fibre_anisotropy"};

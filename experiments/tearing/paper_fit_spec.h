@@ -15,7 +15,9 @@
 //     cd_stiffness_n_per_m: 2.8e5
 //     md_strength_n_per_m: 5.0e3       # tensile strength, MD and CD
 //     cd_strength_n_per_m: 2.5e3
-//     tear_cd_over_md: 1.1             # Elmendorf tear resistance CD / MD
+//     tear_cd_over_md: 1.1             # Elmendorf tear resistance CD / MD, or
+//     md_tear_mn: 965                  #   the two tear resistances (ISO 1974, mN),
+//     cd_tear_mn: 1105                 #   whose ratio it then is
 //   parameters:                        # all three, in this order
 //     - {name: stiffness_scale, initial: 4.0e5, bounds: [5.0e4, 3.0e6], step: 2.0e4}
 //     - ...
@@ -39,6 +41,7 @@ struct PaperFitSpec {
   double md_stiffness_n_per_m = 0.0, cd_stiffness_n_per_m = 0.0;
   double md_strength_n_per_m = 0.0, cd_strength_n_per_m = 0.0;
   double tear_cd_over_md = 0.0;
+  double md_tear_mn = 0.0, cd_tear_mn = 0.0;  // 0 when the file gives the ratio only
   std::vector<PaperFitParameter> parameters;  // stiffness_scale, tear_strain, fibre_anisotropy
   int starts = 3;
   int max_iterations = 20;

@@ -33,6 +33,7 @@
 #include "experiments/solvers/solver_registry.h"
 #include "experiments/tearing/paper_fit_report.h"
 #include "experiments/tearing/paper_fit_spec.h"
+#include "experiments/tearing/tear_ratio.h"
 #include "validation/calibration/calibration_cost.h"
 #include "validation/calibration/calibration_uncertainty.h"
 #include "validation/calibration/halton.h"
@@ -64,10 +65,9 @@ std::vector<Case> compile_cases(const std::string& scene, const std::vector<int>
   return cases;
 }
 
-// Mean of each measure over the seeds of each direction: {md: {...}, cd: {...}}.
-std::map<std::string, std::map<std::string, double>> run_cases(const std::vector<Case>& cases,
-                                                                const std::vector<double>& values,
-                                                                const std::vector<std::string>& measures) {
+// Each measure of each run, by direction, in the order of the seeds.
+SeedMeasures run_cases_by_seed(const std::vector<Case>& cases, const std::vector<double>& values,
+                               const std::vector<std::string>& measures) {
   std::vector<Run> runs(cases.size());
   for (std::size_t k = 0; k < cases.size(); k += 2) {  // two at a time: the machine is shared
     std::vector<std::thread> threads;
@@ -76,16 +76,29 @@ std::map<std::string, std::map<std::string, double>> run_cases(const std::vector
     }
     for (std::thread& t : threads) t.join();
   }
-  std::map<std::string, std::map<std::string, double>> mean;
-  std::map<std::string, int> count;
+  SeedMeasures by_seed;
   for (std::size_t k = 0; k < cases.size(); ++k) {
-    ++count[cases[k].direction];
-    for (const std::string& m : measures) mean[cases[k].direction][m] += runs[k].measure(m).value;
+    std::map<std::string, double> of_run;
+    for (const std::string& m : measures) of_run[m] = runs[k].measure(m).value;
+    by_seed[cases[k].direction].push_back(of_run);
   }
-  for (auto& [direction, values_of] : mean) {
-    for (auto& [m, v] : values_of) v /= count[direction];
+  return by_seed;
+}
+
+// Mean of each measure over the seeds of each direction: {md: {...}, cd: {...}}.
+DirectionMeasures means_of(const SeedMeasures& by_seed) {
+  DirectionMeasures mean;
+  for (const auto& [direction, runs] : by_seed) {
+    for (const auto& run : runs) {
+      for (const auto& [m, v] : run) mean[direction][m] += v / static_cast<double>(runs.size());
+    }
   }
   return mean;
+}
+
+DirectionMeasures run_cases(const std::vector<Case>& cases, const std::vector<double>& values,
+                            const std::vector<std::string>& measures) {
+  return means_of(run_cases_by_seed(cases, values, measures));
 }
 
 const std::vector<std::string> kTensileMeasures{"tensile.stiffness_n_per_m", "tensile.strength_n_per_m",
@@ -190,12 +203,21 @@ int main(int argc, char** argv) {
     const std::vector<double> x = from_unit(spec, starts[best].x);
     CalibrationUncertainty u = uncertainty_at(spec, &cost, starts[best].x, starts[best].cost);
     for (std::size_t k = 0; k < 3; ++k) u.standard_error[k] *= spec.parameters[k].upper - spec.parameters[k].lower;
-    write_paper_fit_report(spec, x, u, starts[best].cost, run_cases(tensile, x, kTensileMeasures),
-                           spec.tear_scene.empty() ? std::map<std::string, std::map<std::string, double>>{}
-                                                   : run_cases(compile_cases(spec.tear_scene, spec.tear_seeds, false), x,
-                                                               {"tear.work_per_length_j_per_m", "tear.fracture_energy_per_length_j_per_m",
-                                                                "grip.peak_force_n"}),
-                           static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC, out);
+    PaperFitResults results;
+    results.fitted = x;
+    results.uncertainty = u;
+    results.final_cost = starts[best].cost;
+    results.tensile = run_cases_by_seed(tensile, x, kTensileMeasures);
+    std::vector<double> x0;
+    for (const PaperFitParameter& p : spec.parameters) x0.push_back(p.initial);
+    results.unfitted = run_cases(tensile, x0, kTensileMeasures);
+    if (!spec.tear_scene.empty()) {
+      results.tear = run_cases_by_seed(compile_cases(spec.tear_scene, spec.tear_seeds, false), x,
+                                       {"tear.work_per_length_j_per_m", "tear.fracture_energy_per_length_j_per_m",
+                                        "tear.fracture_energy_per_path_length_j_per_m", "tear.tortuosity"});
+    }
+    results.cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    write_paper_fit_report(spec, results, out);
     for (const Start& s : starts) {
       std::printf("start: cost %.6g after %d iterations (%s)\n", s.cost, s.iterations, s.termination.c_str());
     }
