@@ -91,5 +91,25 @@ TEST(PaperFitSpec, RefusesBoundsWithoutTheInitialValueAndParametersOutOfOrder) {
             std::string::npos);
 }
 
+TEST(PaperFitSpec, AFourthParameterIsTheBackgroundDensityFittedToTheTearRatioOfATearScene) {
+  const std::string good = "  - {name: stiffness_scale, initial: 1, bounds: [0, 2], step: 0.1}\n"
+                           "  - {name: tear_strain, initial: 0.02, bounds: [0.01, 0.1], step: 0.001}\n"
+                           "  - {name: fibre_anisotropy, initial: 0.2, bounds: [0, 0.9], step: 0.03}\n";
+  // error_of's file has no tear scene: the ratio it would be fitted to is missing
+  EXPECT_NE(error_of(good + "  - {name: background_density, initial: 0.4, bounds: [0.05, 0.8], step: 0.03}\n")
+                .find("tear_scene"),
+            std::string::npos);
+  EXPECT_NE(error_of(good + "  - {name: clump_width, initial: 0.4, bounds: [0.05, 0.8], step: 0.03}\n").find("name"),
+            std::string::npos);
+  const PaperFitSpec s =
+      load_paper_fit_spec(std::string(REPOSE_SOURCE_DIR) + "/experiments/tearing_paper_fit_sack_kraft_tear.yaml");
+  ASSERT_EQ(s.parameters.size(), 4u);
+  EXPECT_EQ(s.parameters[3].name, "background_density");
+  EXPECT_GE(s.parameters[3].lower, 0.0);
+  EXPECT_LT(s.parameters[3].upper, 1.0);
+  EXPECT_FALSE(s.fit_tear_seeds.empty());
+  EXPECT_DOUBLE_EQ(s.tear_cd_over_md, 1105.0 / 965.0);
+}
+
 }  // namespace
 }  // namespace repose
