@@ -33,6 +33,7 @@
 #include "experiments/solvers/solver_registry.h"
 #include "experiments/tearing/paper_fit_report.h"
 #include "experiments/tearing/paper_fit_spec.h"
+#include "experiments/tearing/tear_ratio.h"
 #include "validation/calibration/calibration_cost.h"
 #include "validation/calibration/calibration_uncertainty.h"
 #include "validation/calibration/halton.h"
@@ -47,7 +48,8 @@ struct Case {
   std::shared_ptr<const CompiledSolver> solver;
 };
 
-std::vector<Case> compile_cases(const std::string& scene, const std::vector<int>& seeds, bool tensile) {
+std::vector<Case> compile_cases(const std::string& scene, const std::vector<int>& seeds, bool tensile,
+                                const std::vector<SceneOverride>& fibre_overrides = {}) {
   const SolverRegistry& registry = solver_registry();
   std::vector<Case> cases;
   for (const char* direction : {"md", "cd"}) {
@@ -57,6 +59,7 @@ std::vector<Case> compile_cases(const std::string& scene, const std::vector<int>
       const bool grain_along_x = tensile == (std::string(direction) == "md");
       std::vector<SceneOverride> overrides{{"seed", YAML::Node(seed)},
                                            {"tearing.fibres.grain_direction_deg", YAML::Node(grain_along_x ? 0 : 90)}};
+      overrides.insert(overrides.end(), fibre_overrides.begin(), fibre_overrides.end());
       const Scene s = load_scene_with_overrides(scene, overrides, registry.sections());
       cases.push_back({direction, registry.get("tearing").compile(s)});
     }
@@ -64,10 +67,9 @@ std::vector<Case> compile_cases(const std::string& scene, const std::vector<int>
   return cases;
 }
 
-// Mean of each measure over the seeds of each direction: {md: {...}, cd: {...}}.
-std::map<std::string, std::map<std::string, double>> run_cases(const std::vector<Case>& cases,
-                                                                const std::vector<double>& values,
-                                                                const std::vector<std::string>& measures) {
+// Each measure of each run, by direction, in the order of the seeds.
+SeedMeasures run_cases_by_seed(const std::vector<Case>& cases, const std::vector<double>& values,
+                               const std::vector<std::string>& measures) {
   std::vector<Run> runs(cases.size());
   for (std::size_t k = 0; k < cases.size(); k += 2) {  // two at a time: the machine is shared
     std::vector<std::thread> threads;
@@ -76,14 +78,22 @@ std::map<std::string, std::map<std::string, double>> run_cases(const std::vector
     }
     for (std::thread& t : threads) t.join();
   }
-  std::map<std::string, std::map<std::string, double>> mean;
-  std::map<std::string, int> count;
+  SeedMeasures by_seed;
   for (std::size_t k = 0; k < cases.size(); ++k) {
-    ++count[cases[k].direction];
-    for (const std::string& m : measures) mean[cases[k].direction][m] += runs[k].measure(m).value;
+    std::map<std::string, double> of_run;
+    for (const std::string& m : measures) of_run[m] = runs[k].measure(m).value;
+    by_seed[cases[k].direction].push_back(of_run);
   }
-  for (auto& [direction, values_of] : mean) {
-    for (auto& [m, v] : values_of) v /= count[direction];
+  return by_seed;
+}
+
+// Mean of each measure over the seeds of each direction: {md: {...}, cd: {...}}.
+DirectionMeasures means_of(const SeedMeasures& by_seed) {
+  DirectionMeasures mean;
+  for (const auto& [direction, runs] : by_seed) {
+    for (const auto& run : runs) {
+      for (const auto& [m, v] : run) mean[direction][m] += v / static_cast<double>(runs.size());
+    }
   }
   return mean;
 }
@@ -91,13 +101,57 @@ std::map<std::string, std::map<std::string, double>> run_cases(const std::vector
 const std::vector<std::string> kTensileMeasures{"tensile.stiffness_n_per_m", "tensile.strength_n_per_m",
                                                 "tensile.strain_at_peak"};
 
-std::vector<double> residuals(const PaperFitSpec& spec, const std::vector<Case>& cases, const std::vector<double>& x) {
-  auto m = run_cases(cases, x, kTensileMeasures);
-  return {m["md"]["tensile.stiffness_n_per_m"] / spec.md_stiffness_n_per_m - 1.0,
-          m["cd"]["tensile.stiffness_n_per_m"] / spec.cd_stiffness_n_per_m - 1.0,
-          m["md"]["tensile.strength_n_per_m"] / spec.md_strength_n_per_m - 1.0,
-          m["cd"]["tensile.strength_n_per_m"] / spec.cd_strength_n_per_m - 1.0};
-}
+const std::string kPerPath = "tear.fracture_energy_per_path_length_j_per_m";
+
+// The sheet at parameter values x: the solver's three (stiffness_scale,
+// tear_strain, fibre_anisotropy) and, when the file frees it, the fibre
+// images' background_density, a scene setting (the scenes are compiled
+// again for each value of it).
+class PaperFit {
+ public:
+  explicit PaperFit(const PaperFitSpec& spec)
+      : spec_(spec), tensile_(compile_cases(spec.tensile_scene, spec.seeds, true)) {}
+
+  bool fits_tear_ratio() const { return spec_.parameters.size() == 4; }
+
+  SeedMeasures tensile(const std::vector<double>& x) const {
+    const std::vector<Case> cases =
+        fits_tear_ratio() ? compile_cases(spec_.tensile_scene, spec_.seeds, true, fibres(x)) : tensile_;
+    return run_cases_by_seed(cases, solver_values(x), kTensileMeasures);
+  }
+
+  SeedMeasures tear(const std::vector<double>& x, const std::vector<int>& seeds) const {
+    return run_cases_by_seed(compile_cases(spec_.tear_scene, seeds, false, fibres(x)), solver_values(x),
+                             {"tear.work_per_length_j_per_m", "tear.fracture_energy_per_length_j_per_m", kPerPath,
+                              "tear.tortuosity"});
+  }
+
+  // Relative residuals: the four tensile values, and the tear ratio CD / MD
+  // per path length on the fit's tear seeds when the file frees a fibre
+  // setting to fit it with.
+  std::vector<double> residuals(const std::vector<double>& x) const {
+    DirectionMeasures m = means_of(tensile(x));
+    std::vector<double> r{m["md"]["tensile.stiffness_n_per_m"] / spec_.md_stiffness_n_per_m - 1.0,
+                          m["cd"]["tensile.stiffness_n_per_m"] / spec_.cd_stiffness_n_per_m - 1.0,
+                          m["md"]["tensile.strength_n_per_m"] / spec_.md_strength_n_per_m - 1.0,
+                          m["cd"]["tensile.strength_n_per_m"] / spec_.cd_strength_n_per_m - 1.0};
+    if (fits_tear_ratio()) {
+      r.push_back(tear_ratio_residual(tear_ratio_cd_over_md(tear(x, spec_.fit_tear_seeds), kPerPath),
+                                      spec_.tear_cd_over_md));
+    }
+    return r;
+  }
+
+ private:
+  static std::vector<double> solver_values(const std::vector<double>& x) { return {x[0], x[1], x[2]}; }
+  std::vector<SceneOverride> fibres(const std::vector<double>& x) const {
+    if (!fits_tear_ratio()) return {};
+    return {{"tearing.fibres.background_density", YAML::Node(x[3])}};
+  }
+
+  const PaperFitSpec& spec_;
+  std::vector<Case> tensile_;
+};
 
 std::vector<double> from_unit(const PaperFitSpec& spec, const std::vector<double>& u) {
   std::vector<double> x;
@@ -155,6 +209,56 @@ CalibrationUncertainty uncertainty_at(const PaperFitSpec& spec, CalibrationCost*
   return estimate_uncertainty(problem, blocks, ranges, labels, final_cost, 1e-3);
 }
 
+struct Fitted {
+  std::vector<Start> starts;
+  std::size_t best = 0;
+  std::vector<double> x;
+  CalibrationUncertainty uncertainty;
+};
+
+// Ceres works on u in [0, 1]^p, x = lower + u (upper - lower): parameters
+// of units as far apart as N/m and strain make J^T J too ill-conditioned
+// for ceres::Covariance otherwise.
+Fitted fit(const PaperFitSpec& spec, const PaperFit& sheet) {
+  const CalibrationCost::Evaluator evaluate = [&](const std::vector<std::vector<double>>& points) {
+    std::vector<std::vector<double>> r;
+    for (const auto& u : points) r.push_back(sheet.residuals(from_unit(spec, u)));
+    return r;
+  };
+  std::vector<double> step, initial;
+  for (const PaperFitParameter& p : spec.parameters) {
+    step.push_back(p.step / (p.upper - p.lower));
+    initial.push_back((p.initial - p.lower) / (p.upper - p.lower));
+  }
+  const std::size_t n = initial.size();
+  CalibrationCost cost(evaluate, std::vector<double>(n, 0.0), std::vector<double>(n, 1.0), step,
+                       sheet.fits_tear_ratio() ? 5 : 4);
+  Fitted f;
+  f.starts.push_back(solve_from(spec, &cost, initial));
+  const Halton halton(static_cast<int>(n), 1);
+  for (int s = 1; s < spec.starts; ++s) {
+    f.starts.push_back(solve_from(spec, &cost, halton.point(static_cast<std::uint64_t>(s))));
+  }
+  for (std::size_t s = 1; s < f.starts.size(); ++s) f.best = f.starts[s].cost < f.starts[f.best].cost ? s : f.best;
+  f.x = from_unit(spec, f.starts[f.best].x);
+  f.uncertainty = uncertainty_at(spec, &cost, f.starts[f.best].x, f.starts[f.best].cost);
+  for (std::size_t k = 0; k < n; ++k) f.uncertainty.standard_error[k] *= spec.parameters[k].upper - spec.parameters[k].lower;
+  return f;
+}
+
+PaperFitResults results_of(const PaperFitSpec& spec, const PaperFit& sheet, const Fitted& f) {
+  PaperFitResults results;
+  results.fitted = f.x;
+  results.uncertainty = f.uncertainty;
+  results.final_cost = f.starts[f.best].cost;
+  results.tensile = sheet.tensile(f.x);
+  std::vector<double> x0;
+  for (const PaperFitParameter& p : spec.parameters) x0.push_back(p.initial);
+  results.unfitted = means_of(sheet.tensile(x0));
+  if (!spec.tear_scene.empty()) results.tear = sheet.tear(f.x, spec.tear_seeds);
+  return results;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -167,36 +271,12 @@ int main(int argc, char** argv) {
     const std::clock_t cpu_start = std::clock();  // the process: runs are on other threads
     const PaperFitSpec spec = load_paper_fit_spec(file);
     std::filesystem::create_directories(out);
-    const std::vector<Case> tensile = compile_cases(spec.tensile_scene, spec.seeds, true);
-    // Ceres works on u in [0, 1]^3, x = lower + u (upper - lower): parameters
-    // of units as far apart as N/m and strain make J^T J too ill-conditioned
-    // for ceres::Covariance otherwise.
-    const CalibrationCost::Evaluator evaluate = [&](const std::vector<std::vector<double>>& points) {
-      std::vector<std::vector<double>> r;
-      for (const auto& u : points) r.push_back(residuals(spec, tensile, from_unit(spec, u)));
-      return r;
-    };
-    std::vector<double> step, initial;
-    for (const PaperFitParameter& p : spec.parameters) {
-      step.push_back(p.step / (p.upper - p.lower));
-      initial.push_back((p.initial - p.lower) / (p.upper - p.lower));
-    }
-    CalibrationCost cost(evaluate, std::vector<double>(3, 0.0), std::vector<double>(3, 1.0), step, 4);
-    std::vector<Start> starts{solve_from(spec, &cost, initial)};
-    const Halton halton(static_cast<int>(initial.size()), 1);
-    for (int s = 1; s < spec.starts; ++s) starts.push_back(solve_from(spec, &cost, halton.point(static_cast<std::uint64_t>(s))));
-    std::size_t best = 0;
-    for (std::size_t s = 1; s < starts.size(); ++s) best = starts[s].cost < starts[best].cost ? s : best;
-    const std::vector<double> x = from_unit(spec, starts[best].x);
-    CalibrationUncertainty u = uncertainty_at(spec, &cost, starts[best].x, starts[best].cost);
-    for (std::size_t k = 0; k < 3; ++k) u.standard_error[k] *= spec.parameters[k].upper - spec.parameters[k].lower;
-    write_paper_fit_report(spec, x, u, starts[best].cost, run_cases(tensile, x, kTensileMeasures),
-                           spec.tear_scene.empty() ? std::map<std::string, std::map<std::string, double>>{}
-                                                   : run_cases(compile_cases(spec.tear_scene, spec.tear_seeds, false), x,
-                                                               {"tear.work_per_length_j_per_m", "tear.fracture_energy_per_length_j_per_m",
-                                                                "grip.peak_force_n"}),
-                           static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC, out);
-    for (const Start& s : starts) {
+    const PaperFit sheet(spec);
+    const Fitted f = fit(spec, sheet);
+    PaperFitResults results = results_of(spec, sheet, f);
+    results.cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+    write_paper_fit_report(spec, results, out);
+    for (const Start& s : f.starts) {
       std::printf("start: cost %.6g after %d iterations (%s)\n", s.cost, s.iterations, s.termination.c_str());
     }
     std::ifstream report(out + "/report.md");

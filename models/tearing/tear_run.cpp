@@ -128,6 +128,8 @@ TearRun run_tear(const SheetModel& model, const SheetParams& params, const TearR
   if (run.tear_length_m > 0.0) {
     run.work_per_tear_length_j_per_m = run.grip_work_j / run.tear_length_m;
     run.fracture_energy_per_tear_length_j_per_m = run.state.torn_energy_j / run.tear_length_m;
+    run.fracture_energy_per_path_length_j_per_m =
+        run.fracture_energy_per_tear_length_j_per_m / std::max(1.0, run.path.tortuosity);
   }
   run.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;

@@ -74,6 +74,11 @@ struct TearRun {
   // the tear rule dissipates (under the energy rule a fixed fraction of
   // tear_energy_j_per_m, whatever the mesh); 0 when the sheet did not tear.
   double fracture_energy_per_tear_length_j_per_m = 0.0;
+  // The same energy per unit length of the tortuous torn path,
+  // state.torn_energy_j / (tear_length_m x path.tortuosity) (J/m): a tear
+  // that wanders tears more cells per unit depth; this is the energy per
+  // unit length of what tore. 0 when the sheet did not tear.
+  double fracture_energy_per_path_length_j_per_m = 0.0;
   // The grips' forces over time: a sample every max(1, steps / 1000) steps
   // of the duration and one at the last step run, each its end time (s) and
   // every grip's force on the sheet's held vertices (N, 3 x grips,

@@ -149,6 +149,7 @@ class CompiledTearing final : public CompiledSolver {
     run->set("tear.from_notch", t.path.holds_notch ? 1.0 : 0.0, "1");
     run->set("tear.work_per_length_j_per_m", t.work_per_tear_length_j_per_m, "J/m");
     run->set("tear.fracture_energy_per_length_j_per_m", t.fracture_energy_per_tear_length_j_per_m, "J/m");
+    run->set("tear.fracture_energy_per_path_length_j_per_m", t.fracture_energy_per_path_length_j_per_m, "J/m");
     run->set("grip.peak_force_n", t.peak_grip_force_n, "N");
     run->set("grip.work_j", t.grip_work_j, "J");
     // the energy ledger (tear_run.h), J, and per unit tear length, J/m

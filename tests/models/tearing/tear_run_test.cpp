@@ -59,6 +59,8 @@ TEST(TearRun, AUniformSheetTearsStraightAlongItsNotchUnderTheTwist) {
   EXPECT_NEAR(run.fracture_energy_per_tear_length_j_per_m, run.state.torn_energy_j / run.tear_length_m, 1e-12);
   EXPECT_GT(run.fracture_energy_per_tear_length_j_per_m, 0.0);
   EXPECT_LT(run.fracture_energy_per_tear_length_j_per_m, run.work_per_tear_length_j_per_m);
+  // straight: the path is as long as the tear, so per path = per depth
+  EXPECT_DOUBLE_EQ(run.fracture_energy_per_path_length_j_per_m, run.fracture_energy_per_tear_length_j_per_m);
 }
 
 // The run stops on the very step whose tear first reaches the depth, not
