@@ -174,7 +174,7 @@ ReferenceSpec read_reference(const Context& ctx, const YamlValue& value, const s
 }
 
 CalibrationScene read_scene_entry(const Context& ctx, const YamlValue& value) {
-  const YamlMap map = value.map({"scene", "name", "role", "reference", "observables", "rmse_region_m", "field"});
+  const YamlMap map = value.map({"scene", "name", "role", "reference", "observables", "rmse_region_m", "field", "seed"});
   CalibrationScene s;
   s.scene_path = existing(ctx, map.required("scene", "a scene file"), false, "a scene file");
   s.name = map.string_or("name", "");
@@ -187,6 +187,7 @@ CalibrationScene read_scene_entry(const Context& ctx, const YamlValue& value) {
     s.observables.push_back(read_observable(o));
   }
   if (auto r = map.get("rmse_region_m")) s.rmse_region = read_region(*r);
+  if (map.has("seed")) s.seed = static_cast<std::uint64_t>(map.integer_or("seed", IntRange{0, std::int64_t{1} << 62}, 0));
   return s;
 }
 

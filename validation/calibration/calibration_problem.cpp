@@ -197,6 +197,7 @@ CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistr
     PreparedScene s;
     s.entry = spec_.scenes[k];
     s.scene = load_scene(s.entry.scene_path, registry.sections());
+    if (s.entry.seed) s.scene.seed = *s.entry.seed;
     if (s.entry.name.empty()) s.entry.name = s.scene.name;
     report(progress, static_cast<double>(k) / spec_.scenes.size(), "reference of " + s.entry.name);
     if (const DemSpec* dem = dem_of(s.scene)) s.grain_diameter_m = 2.0 * dem->grain_radius_m;
@@ -317,8 +318,8 @@ HeightField CalibrationProblem::run(const PreparedScene& scene, const std::vecto
 }
 
 Run CalibrationProblem::run_whole(const PreparedScene& scene, const std::vector<double>& values) const {
-  // the scene file and its reference folders fix the scene the solver was compiled for
-  std::string key = scene.entry.scene_path;
+  // the scene file, its bed and its reference folders fix the scene the solver was compiled for
+  std::string key = scene.entry.scene_path + "\nseed " + std::to_string(scene.scene.seed);
   for (const std::string& dir : scene.entry.reference.directories) key += "\n" + dir;
   const std::vector<double> solver_in = solver_values(scene, values);
   const auto id = std::make_pair(key, solver_in);

@@ -87,7 +87,7 @@ class CalibrationProblem {
   // The compiled solver's values for a calibration parameter set (SI).
   std::vector<double> solver_values(const PreparedScene& scene, const std::vector<double>& values) const;
   // A run of the calibrated solver on the scene; its field the scene compares
-  // (height_final by default). Entries of one scene file and one reference
+  // (height_final by default). Entries of one scene file, one bed (seed) and one reference
   // that compare different fields (the snow model's maps) share the run: the
   // fields of the last runs are remembered (runs are deterministic).
   HeightField run(const PreparedScene& scene, const std::vector<double>& values) const;

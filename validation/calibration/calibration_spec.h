@@ -50,6 +50,10 @@ struct CalibrationScene {
   std::string field = "height_final";
   // Region of the reported surface RMSE (default: whole grid).
   std::optional<CalibrationRegion> rmse_region;
+  // The random bed the calibrated solver builds (default: the scene file's
+  // seed). Several entries of one scene file with different seeds fit the
+  // solver over several beds at once (each needs its own name).
+  std::optional<std::uint64_t> seed;
 };
 
 // One fitted (or fixed) parameter of the calibrated solver, named

@@ -103,7 +103,23 @@ TEST(CalibrationLoader, ReadsTheBulletChuteCalibrationsMeasureObservables) {
     EXPECT_TRUE(o.times_s.empty());
   }
   EXPECT_TRUE(measure);
-  EXPECT_EQ(spec.scenes[1].role, CalibrationScene::Role::kHeldOut);
+  ASSERT_EQ(spec.scenes.size(), 6u);
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_EQ(spec.scenes[k].role, k < 3 ? CalibrationScene::Role::kFit : CalibrationScene::Role::kHeldOut);
+  }
+}
+
+// Entries of one scene file with their own `seed` run the calibrated solver
+// on their own beds: the seed reaches each prepared scene (the run memory keys
+// on it, so the three beds are three runs, not one remembered).
+TEST(CalibrationLoader, EachSceneEntrysSeedReachesItsPreparedScene) {
+  const CalibrationSpec spec = load_calibration(std::string(REPOSE_SOURCE_DIR) + "/experiments/bullet_chute_fit.yaml");
+  for (std::size_t k = 0; k < spec.scenes.size(); ++k) {
+    ASSERT_TRUE(spec.scenes[k].seed.has_value()) << k;
+    EXPECT_EQ(*spec.scenes[k].seed, k % 3 + 1) << k;
+  }
+  const CalibrationProblem problem(spec, solver_registry());
+  for (std::size_t k = 0; k < problem.scenes().size(); ++k) EXPECT_EQ(problem.scenes()[k].scene.seed, k % 3 + 1) << k;
 }
 
 // Every file in bad/ starts with "# expect: TEXT": loading it (and making it
