@@ -27,6 +27,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from figure_output import save  # noqa: E402
+from manifest_results import lookup  # noqa: E402
 
 REPOSITORY = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 DATA = {35: "data/chute_rock", 45: "data/chute_rock_45"}
@@ -61,16 +62,6 @@ def relative_error(values, reference):
     if not values or reference is None or reference == 0.0:
         return None
     return float(np.mean(values)) / reference - 1.0
-
-
-def lookup(results, dotted):
-    """A manifest results value by dotted name (nested maps), or None."""
-    node = results
-    for part in dotted.split("."):
-        if not isinstance(node, dict) or part not in node:
-            return None
-        node = node[part]
-    return float(node) if isinstance(node, (int, float)) else None
 
 
 def read_run(folder):

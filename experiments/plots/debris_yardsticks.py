@@ -34,6 +34,8 @@ import re
 
 import numpy as np
 
+from manifest_results import lookup
+
 REFERENCE = "liggghts"
 SEED_FOLDER = re.compile(r"^(?P<group>.+)_seed_(?P<seed>\d+)$")
 SCALARS = [  # (key, manifest results path, unit, scale to the unit)
@@ -47,16 +49,6 @@ SCALARS = [  # (key, manifest results path, unit, scale to the unit)
 ]
 CURVES = [("front", "front_m", "m"), ("deposit_map", None, "m")]
 DEPOSIT_THRESHOLD_M = 0.01
-
-
-def lookup(results, dotted):
-    """A manifest results value by dotted name (nested maps), or None."""
-    node = results
-    for part in dotted.split("."):
-        if not isinstance(node, dict) or part not in node:
-            return None
-        node = node[part]
-    return float(node) if isinstance(node, (int, float)) else None
 
 
 def read_front(folder):
