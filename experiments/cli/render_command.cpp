@@ -133,7 +133,7 @@ void render(const RenderOptions& options, const SolverRegistry& registry) {
   if (!has_extension(options.image_path, {".png"})) {
     throw InputError(fmt::format("{}: expected an output file name ending in .png", options.image_path));
   }
-  if (std::filesystem::is_directory(options.input_path)) {
+  if (!has_extension(options.input_path, {".npy", ".yaml", ".yml"}) && std::filesystem::is_directory(options.input_path)) {
     render_debris(options, overrides);
     return;
   }
