@@ -187,6 +187,29 @@ ColouredMesh part_meshes(const DebrisRunFrames& run, int k, const DebrisRenderOp
   return m;
 }
 
+// The camera moved towards its target as far as the box's eight corners
+// stay inside the image (camera_around holds the box's bounding sphere,
+// which leaves a flat box small in the picture).
+CameraSpec closer_while_in_view(const CameraSpec& camera, const Aabb& box) {
+  const auto in_view = [&](const CameraSpec& c) {
+    for (int k = 0; k < 8; ++k) {
+      const Eigen::Vector3d corner((k & 1) ? box.max.x() : box.min.x(), (k & 2) ? box.max.y() : box.min.y(),
+                                   (k & 4) ? box.max.z() : box.min.z());
+      const auto uv = project_to_image(c, corner);
+      if (!uv || uv->x() < 0 || uv->y() < 0 || uv->x() > c.width_px || uv->y() > c.height_px) return false;
+    }
+    return true;
+  };
+  CameraSpec best = camera;
+  for (double f = 0.95; f > 0.2; f -= 0.05) {
+    CameraSpec c = camera;
+    c.position_m = camera.target_m + f * (camera.position_m - camera.target_m);
+    if (!in_view(c)) break;
+    best = c;
+  }
+  return best;
+}
+
 }  // namespace
 
 DebrisRunFrames read_debris_run_frames(const std::string& run_dir) {
@@ -233,7 +256,7 @@ CameraSpec debris_camera(const DebrisRunFrames& run, const std::vector<int>& pic
   box.max += Eigen::Vector3d::Constant(o.margin_m);
   const double az = o.azimuth_deg * std::numbers::pi / 180, el = o.elevation_deg * std::numbers::pi / 180;
   const Eigen::Vector3d from(std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el));
-  return camera_around(box, from, o.width_px, o.height_px);
+  return closer_while_in_view(camera_around(box, from, o.width_px, o.height_px), box);
 }
 
 RgbImage render_debris_frame(const DebrisRunFrames& run, int k, const CameraSpec& camera,
