@@ -20,19 +20,15 @@
 #include "models/core/io/mesh_io.h"
 #include "models/core/io/npy_io.h"
 #include "models/core/solver/solver.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  TempDir() : path(fs::temp_directory_path() / fmt::format("debris_render_test_{}", ::getpid())) {
-    fs::remove_all(path);
-    fs::create_directories(path / "frames");
-  }
-  ~TempDir() { fs::remove_all(path); }
+struct TempDir : test_support::TempDir {
+  TempDir() : test_support::TempDir("debris_render") { fs::create_directories(path / "frames"); }
 };
 
 // A flat 40 m square at z = 0, one 4 x 4 x 3 m part at (10, 10), and two
