@@ -1,6 +1,9 @@
 // repose render SCENE.yaml|FIELD.npy -o IMAGE.png [camera options]: a picture
 // of a scene's initial ground with its objects at t = 0, or of a height field
 // from a .npy file.
+// repose render RUN_DIR -o PREFIX.png [--frames N --size WxH --azimuth-deg A
+// --elevation-deg E]: a debris run's collapse in 3-D as a figure series,
+// PREFIX_NNN.png per frame drawn (experiments/debris/debris_render.h).
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "experiments/cli/commands.h"
+#include "experiments/debris/debris_render.h"
 #include "experiments/figures/render_height.h"
 #include "models/core/base/error.h"
 #include "models/core/config/initial_height.h"
@@ -28,6 +32,7 @@ struct RenderOptions {
   double fov_deg = 0.0;         // 0: the scene's or the default
   std::string size;             // "WxH" in pixels
   double cell_size_m = 0.0;     // .npy only; 0: the field is 1 m wide
+  DebrisRenderOptions debris;   // a debris run folder only: frames, camera direction
 };
 
 double parse_number(const std::string& text, const std::string& option, const std::string& expected) {
@@ -108,10 +113,29 @@ HeightField field_from_npy(const std::string& path, double cell_size_m) {
   return HeightField(grid, std::move(heights));
 }
 
+// A debris run folder as a series PREFIX_NNN.png, framed by its own camera.
+void render_debris(const RenderOptions& options, const CameraOverrides& overrides) {
+  if (overrides.position_m || overrides.target_m || overrides.fov_y_deg || options.cell_size_m != 0.0) {
+    throw InputError(
+        "--camera-position, --camera-target, --fov-deg, --cell-size-m: not for a debris run folder "
+        "(use --azimuth-deg, --elevation-deg)");
+  }
+  DebrisRenderOptions debris = options.debris;
+  if (overrides.width_px) debris.width_px = *overrides.width_px;
+  if (overrides.height_px) debris.height_px = *overrides.height_px;
+  std::string prefix = options.image_path;
+  prefix.resize(prefix.size() - 4);  // ".png"
+  for (const std::string& path : write_debris_renders(options.input_path, prefix, debris)) fmt::print("{}\n", path);
+}
+
 void render(const RenderOptions& options, const SolverRegistry& registry) {
   const CameraOverrides overrides = camera_overrides(options);  // checked before anything is read
   if (!has_extension(options.image_path, {".png"})) {
     throw InputError(fmt::format("{}: expected an output file name ending in .png", options.image_path));
+  }
+  if (!has_extension(options.input_path, {".npy", ".yaml", ".yml"}) && std::filesystem::is_directory(options.input_path)) {
+    render_debris(options, overrides);
+    return;
   }
   if (options.cell_size_m < 0.0 || !std::isfinite(options.cell_size_m)) {
     throw InputError(fmt::format("--cell-size-m: expected a positive length in metres, got {}", options.cell_size_m));
@@ -126,8 +150,8 @@ void render(const RenderOptions& options, const SolverRegistry& registry) {
     const Scene scene = load_scene(options.input_path, registry.sections());
     render_height_png(options.image_path, make_initial_height(scene), &scene, 0.0, overrides);
   } else {
-    throw InputError(
-        fmt::format("{}: expected a scene (.yaml, .yml) or a height field (.npy)", options.input_path));
+    throw InputError(fmt::format("{}: expected a scene (.yaml, .yml), a height field (.npy) or a debris run folder",
+                                 options.input_path));
   }
 }
 
@@ -136,13 +160,18 @@ void render(const RenderOptions& options, const SolverRegistry& registry) {
 void add_render_command(CLI::App& app, const SolverRegistry& registry) {
   CLI::App* command = app.add_subcommand("render", "Render a scene's initial ground or a .npy height field to PNG");
   auto options = std::make_shared<RenderOptions>();
-  command->add_option("input", options->input_path, "Scene file (.yaml) or height field (.npy, metres)")->required();
+  command->add_option("input", options->input_path,
+                      "Scene file (.yaml), height field (.npy, metres) or debris run folder (frames/)")
+      ->required();
   command->add_option("-o,--output", options->image_path, "Image to write (.png)")->required();
   command->add_option("--camera-position", options->camera_position, "Camera position x,y,z (m)");
   command->add_option("--camera-target", options->camera_target, "Point the camera looks at x,y,z (m)");
   command->add_option("--fov-deg", options->fov_deg, "Vertical field of view (degrees)");
   command->add_option("--size", options->size, "Image size WxH (pixels)");
   command->add_option("--cell-size-m", options->cell_size_m, ".npy only: cell size (m); default: the field is 1 m wide");
+  command->add_option("--frames", options->debris.frames, "Debris run: frames drawn, first to last (PREFIX_NNN.png)");
+  command->add_option("--azimuth-deg", options->debris.azimuth_deg, "Debris run: camera direction from +x towards +y");
+  command->add_option("--elevation-deg", options->debris.elevation_deg, "Debris run: camera above the horizontal");
   command->callback([options, &registry] { render(*options, registry); });
 }
 

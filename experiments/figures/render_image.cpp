@@ -188,6 +188,21 @@ RgbImage draw_parts(const std::vector<const ColouredTriangles*>& parts, const Ca
 
 }  // namespace
 
+CameraSpec camera_around(const Aabb& box, const Eigen::Vector3d& from_direction, int width_px, int height_px) {
+  CameraSpec c;
+  c.width_px = width_px;
+  c.height_px = height_px;
+  c.target_m = (box.min + box.max) / 2;
+  const double radius = std::max((box.max - box.min).norm() / 2, 1e-3);
+  // the narrower of the vertical and horizontal half-angles must hold the bounding sphere
+  const double aspect = static_cast<double>(width_px) / height_px;
+  const double half = std::min(c.fov_y_rad / 2, std::atan(std::tan(c.fov_y_rad / 2) * aspect));
+  const double distance = 1.05 * radius / std::sin(half);
+  c.position_m = c.target_m + distance * from_direction.normalized();
+  c.up = Eigen::Vector3d::UnitZ();
+  return c;
+}
+
 CameraSpec default_camera(const HeightField& field, const std::vector<TriangleMesh>& objects, int width_px,
                           int height_px) {
   const Grid& g = field.grid();
@@ -200,21 +215,10 @@ CameraSpec default_camera(const HeightField& field, const std::vector<TriangleMe
     box.extend(b.min);
     box.extend(b.max);
   }
-  CameraSpec c;
-  c.width_px = width_px;
-  c.height_px = height_px;
-  c.target_m = (box.min + box.max) / 2;
-  const double radius = std::max((box.max - box.min).norm() / 2, 1e-3);
-  // the narrower of the vertical and horizontal half-angles must hold the bounding sphere
-  const double aspect = static_cast<double>(width_px) / height_px;
-  const double half = std::min(c.fov_y_rad / 2, std::atan(std::tan(c.fov_y_rad / 2) * aspect));
-  const double distance = 1.05 * radius / std::sin(half);
   const Eigen::Vector3d south_east(std::numbers::sqrt2 / 2, -std::numbers::sqrt2 / 2, 0.0);
   const Eigen::Vector3d direction =
       std::cos(kDefaultElevationRad) * south_east + std::sin(kDefaultElevationRad) * Eigen::Vector3d::UnitZ();
-  c.position_m = c.target_m + distance * direction;
-  c.up = Eigen::Vector3d::UnitZ();
-  return c;
+  return camera_around(box, direction, width_px, height_px);
 }
 
 RgbImage render_image(const HeightField& field, const std::vector<TriangleMesh>& objects, const CameraSpec& camera,

@@ -33,6 +33,11 @@ struct RenderImageOptions {
   Eigen::Vector3d background_rgb = Eigen::Vector3d(1.0, 1.0, 1.0);      // 0..1
 };
 
+// Looks at the middle of `box` from `from_direction` (any length; not
+// vertical), far enough that the box's bounding sphere fits the 45-degree
+// view; up is +z.
+CameraSpec camera_around(const Aabb& box, const Eigen::Vector3d& from_direction, int width_px, int height_px);
+
 // Looks at the middle of the field from the south-east (+x, -y) at 35 degrees
 // elevation, far enough that the field and the objects fit the 45-degree view.
 CameraSpec default_camera(const HeightField& field, const std::vector<TriangleMesh>& objects = {},

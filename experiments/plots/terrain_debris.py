@@ -21,6 +21,10 @@ LIGGGHTS' seed-to-seed noise, doing nothing's error) and
 debris_yardsticks.png (each engine's error beside the noise and doing nothing).
 A run folder with terrain_mesh.obj (the terrain solver's) gets its contour
 and mesh figure through terrain_figure.py: the chain from key contours on.
+Each debris run's collapse in 3-D (debris_render3d.py: `repose render` on the
+run folder, OSMesa): render3d/debris_NAME_3d_NNN.png, six frames from an
+oblique camera (terrain, elements as spheres, building parts grey in place
+and red once moved), and debris_NAME_3d_frames.png, the six side by side.
 """
 import csv
 import json
@@ -36,6 +40,7 @@ import numpy as np  # noqa: E402
 from figure_output import save  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import debris_render3d  # noqa: E402
 import debris_yardsticks  # noqa: E402
 import terrain_figure  # noqa: E402
 
@@ -136,6 +141,19 @@ def draw_frames(folder, name, out_dir):
     plt.close(fig)
 
 
+def draw_frames_3d(program, folder, name, out_dir):
+    """The run's collapse in 3-D: six rendered frames and their grid."""
+    series_dir = os.path.join(out_dir, "render3d")
+    os.makedirs(series_dir, exist_ok=True)
+    paths = debris_render3d.render_series(program, folder, os.path.join(series_dir, "debris_{}_3d".format(name)),
+                                          PANELS)
+    front = read_front(folder)
+    labels = ["t = {:.1f} s, {} joints broken".format(front["time_s"][k], int(front["joints_broken"][k]))
+              for k in map(debris_render3d.frame_index, paths)]
+    debris_render3d.compose(paths, labels, "{}: the collapse in 3-D (grey: part in place, red: moved)".format(name),
+                            os.path.join(out_dir, "debris_{}_3d_frames.png".format(name)))
+
+
 STYLES = ["-", "--", ":", "-."]
 
 
@@ -211,6 +229,9 @@ def write_yardsticks(out_dir):
 def main():
     out_dir = sys.argv[1]
     runs = []
+    program = debris_render3d.repose_program()
+    if program is None:
+        print("terrain_debris.py: no repose program (REPOSE_EXE, REPOSE, build/bin/repose): no 3-D frames")
     for name in sorted(os.listdir(out_dir)):
         folder = os.path.join(out_dir, name)
         if os.path.exists(os.path.join(folder, "terrain_mesh.obj")):
@@ -225,6 +246,8 @@ def main():
         if os.path.exists(os.path.join(folder, "front.csv")):
             runs.append((name, folder))
             draw_frames(folder, name, out_dir)
+            if program is not None and not os.environ.get("REPOSE_PLOT_PDF_DIR"):
+                draw_frames_3d(program, folder, name, out_dir)
     if runs:
         draw_fronts(runs, out_dir)
     write_yardsticks(out_dir)

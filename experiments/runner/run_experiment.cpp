@@ -134,9 +134,11 @@ void run_plot(const Experiment& experiment, const ExperimentOptions& options, co
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-  std::vector<std::string> env_text = {"MPLBACKEND=Agg"};
+  // REPOSE_EXE: this program, for a plot that renders with it (plots/debris_render3d.py)
+  std::vector<std::string> env_text = {"MPLBACKEND=Agg", "REPOSE_EXE=" + fs::read_symlink("/proc/self/exe").string()};
   for (char** e = environ; *e != nullptr; ++e) {
-    if (std::string_view(*e).rfind("MPLBACKEND=", 0) != 0) env_text.emplace_back(*e);
+    const std::string_view entry(*e);
+    if (entry.rfind("MPLBACKEND=", 0) != 0 && entry.rfind("REPOSE_EXE=", 0) != 0) env_text.emplace_back(*e);
   }
   std::vector<char*> envp;
   for (auto& e : env_text) envp.push_back(e.data());

@@ -317,5 +317,23 @@ TEST(Cli, RenderWritesAPngOfTheAskedSize) {
   EXPECT_EQ(read_png_rgb((cwd.path / "field.png").string()).width, 40);
 }
 
+// A debris run folder (a short ODE run of the debris scene) renders as a
+// 3-D figure series, PREFIX_NNN.png, one per frame drawn.
+TEST(Cli, RenderDrawsADebrisRunFolderAsASeries) {
+  TempDir cwd;
+  const fs::path scene = fs::path(REPOSE_SOURCE_DIR) / "experiments" / "scenes" / "terrain_debris.yaml";
+  const Result run = run_repose(
+      {"run", scene.string(), "--solver", "ode", "--set", "time.duration_s=0.2", "--out", "debris"}, cwd.path);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Result r = run_repose({"render", "debris", "-o", "debris_3d.png", "--frames", "2", "--size", "80x60"}, cwd.path);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_png_rgb((cwd.path / "debris_3d_000.png").string()).width, 80);
+  EXPECT_EQ(read_png_rgb((cwd.path / "debris_3d_020.png").string()).height, 60);
+  EXPECT_NE(r.out.find("debris_3d_020.png"), std::string::npos) << r.out;
+  const Result bad = run_repose({"render", "debris", "-o", "x.png", "--camera-position", "1,2,3"}, cwd.path);
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_TRUE(is_one_line(bad.err)) << bad.err;
+}
+
 }  // namespace
 }  // namespace repose
