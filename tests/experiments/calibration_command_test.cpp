@@ -8,6 +8,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include "models/core/config/scene_loader.h"
@@ -58,6 +59,11 @@ TEST(CalibrationCommand, WritesTheRunFolder) {
   EXPECT_NEAR(fitted["ground.sand.alpha"].as<double>(), 0.7, 0.02);
   EXPECT_NEAR(fitted["ground.sand.repose_angle_deg"].as<double>(), 35.0, 1.0);
   EXPECT_NEAR(fitted["ground.sand.sigma"].as<double>(), 0.15, 0.02);
+  // ... to the last bit of the fit's double, so a rerun at them is the fit's run
+  for (const nlohmann::json& p : nlohmann::json::parse(json)["parameters"]) {
+    if (p["name"] == "ground.sand.repose_angle_deg") continue;  // converted from radians
+    EXPECT_EQ(fitted[p["name"].get<std::string>()].as<double>(), p["value"].get<double>()) << p["name"];
+  }
   fs::remove_all(out);
 }
 
