@@ -35,6 +35,35 @@ class MultigridPreconditioner {
   const Eigen::SparseMatrix<double>* system_ = nullptr;
 };
 
+// Preconditioned conjugate gradients for A x = b from x = 0 (Eigen's
+// ConjugateGradient's recurrences: stops once |r| <= tolerance |b|, r
+// updated recursively), with the products A p and the preconditioner
+// given; returns x and sets *iterations.
+template <class Product, class Precondition>
+Eigen::VectorXd conjugate_gradients(const Eigen::VectorXd& b, double tolerance, int max_iterations,
+                                    Product&& product, Precondition&& precondition, int* iterations) {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  *iterations = 0;
+  const double threshold = tolerance * tolerance * b.squaredNorm();
+  if (threshold == 0.0) return x;
+  Eigen::VectorXd r = b;
+  Eigen::VectorXd p = precondition(r);
+  double rz = r.dot(p);
+  while (*iterations < max_iterations) {
+    const Eigen::VectorXd ap = product(p);
+    const double alpha = rz / p.dot(ap);
+    x += alpha * p;
+    r -= alpha * ap;
+    ++*iterations;
+    if (r.squaredNorm() < threshold) break;
+    const Eigen::VectorXd z = precondition(r);
+    const double rz_new = r.dot(z);
+    p = z + (rz_new / rz) * p;
+    rz = rz_new;
+  }
+  return x;
+}
+
 // The bending terms' stencil: term t couples a, b, c by kb w_t c_p c_q I.
 constexpr double kBendingCoefficient[3] = {1.0, -2.0, 1.0};
 
@@ -309,14 +338,24 @@ Eigen::VectorXd ImplicitIntegrator::solve(const Eigen::VectorXd& rhs) {
     multigrid_->update_fine(system_);
   }
   ++steps_since_rebuild_;
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, MultigridPreconditioner> cg;
-  cg.setTolerance(solver_.relative_tolerance);
-  cg.setMaxIterations(max_iterations);
-  cg.compute(system_);
-  cg.preconditioner().use(multigrid_.get(), &system_);
-  const Eigen::VectorXd dv = cg.solve(rhs);
-  REPOSE_DEMAND(cg.info() == Eigen::Success && dv.allFinite());
-  last_iterations_ = static_cast<int>(cg.iterations());
+  Eigen::VectorXd dv;
+  if (solver_.single_precision_products) {
+    const VertexBlockMatrix& blocks = multigrid_->fine_blocks();
+    dv = conjugate_gradients(
+        rhs, solver_.relative_tolerance, max_iterations,
+        [&](const Eigen::VectorXd& p) { return blocks.from_blocks(blocks.product(blocks.to_blocks(p))); },
+        [&](const Eigen::VectorXd& r) { return multigrid_->apply(system_, r); }, &last_iterations_);
+    REPOSE_DEMAND(last_iterations_ < max_iterations && dv.allFinite());
+  } else {
+    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, MultigridPreconditioner> cg;
+    cg.setTolerance(solver_.relative_tolerance);
+    cg.setMaxIterations(max_iterations);
+    cg.compute(system_);
+    cg.preconditioner().use(multigrid_.get(), &system_);
+    dv = cg.solve(rhs);
+    REPOSE_DEMAND(cg.info() == Eigen::Success && dv.allFinite());
+    last_iterations_ = static_cast<int>(cg.iterations());
+  }
   if (rebuilt) iterations_after_rebuild_ = last_iterations_;
   return dv;
 }

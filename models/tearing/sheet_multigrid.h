@@ -88,6 +88,9 @@ class SheetMultigrid {
   // pattern (one pass over it); the coarse levels are kept. Required
   // before apply() whenever the fine system changed.
   void update_fine(const Eigen::SparseMatrix<double>& system);
+  // The float 3 x 3 block copy of the fine matrix last given to rebuild()
+  // or update_fine() (vertex_block_matrix.h). Requires built().
+  const VertexBlockMatrix& fine_blocks() const { return fine_blocks_; }
   // Number of levels, the fine one included (1 before the first rebuild).
   int level_count() const;
 

@@ -46,6 +46,8 @@ class VertexBlockMatrix {
   void gauss_seidel_sweep(const Eigen::VectorXd& b, bool forward, bool from_zero, Eigen::VectorXd* x) const;
   // b - A x (block vectors).
   Eigen::VectorXd residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x) const;
+  // A x (block vectors; 0 on held axes).
+  Eigen::VectorXd product(const Eigen::VectorXd& x) const;
 
  private:
   void invert_diagonal();

@@ -3,6 +3,7 @@
 // solve the system, and a refresh follows new values of the pattern.
 #include "models/tearing/vertex_block_matrix.h"
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -77,6 +78,18 @@ TEST(VertexBlockMatrix, ItsResidualIsTheMatrixsToFloatRounding) {
   EXPECT_LT((r - exact).norm(), 1e-6 * (b.norm() + s.matrix.norm() * x.norm()));
   // the held x axis of vertex 2 (block row 1) stays zero in block vectors
   EXPECT_EQ(blocks.residual(blocks.to_blocks(b), blocks.to_blocks(x))[3], 0.0);
+}
+
+TEST(VertexBlockMatrix, ItsProductIsTheMatrixsToFloatRoundingAndSymmetric) {
+  const BlockSystem s = block_system(12, 30.0, 10);
+  const VertexBlockMatrix blocks(s.matrix, s.index);
+  const Eigen::VectorXd x = random_vector(s.matrix.rows(), 11), y = random_vector(s.matrix.rows(), 12);
+  const Eigen::VectorXd ax = blocks.from_blocks(blocks.product(blocks.to_blocks(x)));
+  EXPECT_LT((ax - s.matrix * x).norm(), 1e-6 * (s.matrix.norm() * x.norm()));
+  // x^T A y = y^T A x: the rounded matrix stays symmetric, as conjugate gradients need
+  const Eigen::VectorXd ay = blocks.from_blocks(blocks.product(blocks.to_blocks(y)));
+  EXPECT_NEAR(x.dot(ay), y.dot(ax), 1e-12 * std::abs(x.dot(ay)) + 1e-12);
+  EXPECT_EQ(blocks.product(blocks.to_blocks(x))[3], 0.0);  // the held axis
 }
 
 TEST(VertexBlockMatrix, SymmetricGaussSeidelSweepsSolveTheSystem) {
