@@ -35,6 +35,21 @@
 // vertices are also assembled a block at a time. Left at ~230 ms (perf):
 // the smoother and residual ~30 %, CG's own products ~15 %, assembly ~11 %.
 //
+// 2026-11-26 (tearing_benchmark, BM_ImplicitStepMultigrid/200, median of
+// 3, CPU time, load 6-7; main's binary and this one in turn, twice): 379,
+// 463 -> 161, 151 ms a step (2.6 -> 6.4 steps/s), by a relative
+// tolerance of 1e-3 instead of 1e-8 (its error measured: relative_tolerance
+// below; 8.6 -> 3.6 products a step) and products A p from the smoother's
+// float block copy (4.5 ms against Eigen's ~14). Where a step goes now
+// (wall, load 6; medians over 46 steps): internal forces 5 ms, assembly
+// 52, the block copy's refresh 17, 4.5 V-cycles of ~25 ms (the fine
+// level's three passes ~10 of them on a quiet machine) and 3.5 products of
+// 4.5. The 20 steps/s of the issue (50 ms) is out of reach of this scheme:
+// the V-cycles alone cost ~85 ms a step on a quiet machine (the fine
+// level's passes read 21 MB of float blocks at ~6 GB/s), and assembling
+// straight into the float blocks (no double matrix, no refresh) would save
+// at most the ~70 ms of assembly and refresh, ~12 steps/s at best.
+//
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
 // keeps. Departure from exact backward Euler: a spring's geometric
@@ -60,7 +75,8 @@ namespace repose {
 struct ImplicitSolverOptions {
   enum class Preconditioner { kMultigrid, kJacobi };
   // kJacobi, the diagonal: ~100-190 iterations at 1e-8, no state kept
-  // between steps; kMultigrid: ~9 iterations a step, 8 -> 11 through the
+  // between steps; kMultigrid: ~9 iterations a step at 1e-8 (3.6 at
+  // the default 1e-3, 200 x 200), 8 -> 11 through the
   // 20 x 20 tear of implicit_integrator_test, and 2.4x (50 cells) and
   // 2.6x (100 cells) less CPU than Jacobi over whole tears of the seed's
   // twist (Speed above), hence the default (a point-Gauss-Seidel smoother
