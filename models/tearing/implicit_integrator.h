@@ -145,6 +145,10 @@ class ImplicitIntegrator {
   // The system (into system_) over the free degrees of freedom; dv_all
   // holds the held ones.
   void assemble(const SheetState& state, const Eigen::VectorXd& dv_all, Eigen::VectorXd* rhs);
+  template <class Assembly>
+  void add_stiffness(const SheetState& state, Assembly* assembly) const;
+  // Whether this step's solve rebuilds the multigrid hierarchy.
+  bool rebuild_due() const;
   // dv over the free degrees of freedom: system_ dv = rhs.
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
 
@@ -165,6 +169,11 @@ class ImplicitIntegrator {
   // the block: where its first free row lies in system_'s values, or -1
   std::vector<std::array<int, 3>> block_place_;
   int last_iterations_ = 0;
+  // this step's system went straight into the multigrid's fine blocks,
+  // system_ is stale (assemble())
+  bool assembled_in_blocks_ = false;
+  std::vector<int> block_row_;    // per vertex: its block row in the fine blocks, or -1
+  std::vector<int> block_index_;  // per stiffness block: its index in the fine blocks, or -1 (filled once)
 };
 
 }  // namespace repose

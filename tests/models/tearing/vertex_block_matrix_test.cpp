@@ -129,5 +129,39 @@ TEST(VertexBlockMatrix, ARefreshFollowsNewValuesOfThePattern) {
   EXPECT_LT((ax - doubled * x).norm(), 1e-6 * (doubled * x).norm());
 }
 
+// Filled in place, entry by entry at the blocks find_block names (block
+// row = vertex with an unknown, here vertex - 1), it is the copy a refresh
+// makes of the same matrix: the same products and sweeps.
+TEST(VertexBlockMatrix, FillingItInPlaceEqualsARefreshOfTheMatrix) {
+  const BlockSystem s = block_system(10, 20.0, 13);
+  const VertexBlockMatrix refreshed(s.matrix, s.index);
+  VertexBlockMatrix filled(s.matrix, s.index);
+  filled.clear_values();
+  EXPECT_EQ(filled.find_block(0, 5), -1);  // vertices 1 and 6 are not coupled
+  for (int v = 1; v < 10; ++v) {
+    for (int w = 1; w < 10; ++w) {
+      const int k = filled.find_block(v - 1, w - 1);
+      if (std::abs(v - w) > 2) {
+        EXPECT_EQ(k, -1);
+        continue;
+      }
+      ASSERT_GE(k, 0);
+      for (int p = 0; p < 3; ++p) {
+        for (int q = 0; q < 3; ++q) {
+          const int row = s.index[static_cast<std::size_t>(3 * v + p)], col = s.index[static_cast<std::size_t>(3 * w + q)];
+          if (row >= 0 && col >= 0) filled.values()[9 * k + 3 * p + q] = static_cast<float>(s.matrix.coeff(row, col));
+        }
+      }
+    }
+  }
+  filled.finish_values();
+  const Eigen::VectorXd x = filled.to_blocks(random_vector(s.matrix.rows(), 14));
+  EXPECT_EQ(filled.product(x), refreshed.product(x));
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(x.size()), b = a;
+  filled.gauss_seidel_sweep(x, true, true, &a);
+  refreshed.gauss_seidel_sweep(x, true, true, &b);
+  EXPECT_EQ(a, b);
+}
+
 }  // namespace
 }  // namespace repose
