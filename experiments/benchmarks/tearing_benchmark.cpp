@@ -80,7 +80,9 @@
 // motion and 1.1e-5 of the grips' work against a 1e-12 double solve over 40
 // steps at 200 x 200; BM_ImplicitWholeTearTolerance: the same tear) and
 // float block products in the CG (implicit_integrator.h: where the rest
-// goes, and why 20 steps/s is out of reach of this scheme).
+// goes, and why 20 steps/s is out of reach of this scheme). Then assembled
+// straight into the smoother's float blocks (23:26-23:28, load 7.3-9.2, in
+// turn): 115 and 141 ms against main's 415 (7-8.7 steps/s; target 20).
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter='ToleranceError|WholeTearTolerance/50/(12/0|3/1)/'   (minutes)

@@ -44,11 +44,13 @@
 // (wall, load 6; medians over 46 steps): internal forces 5 ms, assembly
 // 52, the block copy's refresh 17, 4.5 V-cycles of ~25 ms (the fine
 // level's three passes ~10 of them on a quiet machine) and 3.5 products of
-// 4.5. The 20 steps/s of the issue (50 ms) is out of reach of this scheme:
-// the V-cycles alone cost ~85 ms a step on a quiet machine (the fine
-// level's passes read 21 MB of float blocks at ~6 GB/s), and assembling
-// straight into the float blocks (no double matrix, no refresh) would save
-// at most the ~70 ms of assembly and refresh, ~12 steps/s at best.
+// 4.5. Then the system went straight into the float blocks on the steps
+// that keep the hierarchy (stiffness_assembly.h: no double matrix, no
+// refresh; the same tear at 50 cells to the digits printed): 115 and 141
+// ms against main's 415 (load 7-9, in turn), ~7-8 steps/s. The 20 steps/s
+// of the issue (50 ms) is out of reach of this scheme: the V-cycles alone
+// cost ~85 ms a step on a quiet machine (4.5 a step at ~19 ms; the fine
+// level's three passes read 21 MB of float blocks at ~6 GB/s, ~10 ms).
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
