@@ -83,6 +83,10 @@
 // goes, and why 20 steps/s is out of reach of this scheme). Then assembled
 // straight into the smoother's float blocks (23:26-23:28, load 7.3-9.2, in
 // turn): 115 and 141 ms against main's 415 (7-8.7 steps/s; target 20).
+// Again 23:36-23:41 (load 4.1-4.9; main, then this binary; CPU / wall):
+// BM_ImplicitStepMultigrid/200 365 / 502 -> 146 / 218 ms (2.7 -> 6.9
+// steps/s of CPU, 8.7 -> 3.6 products), /50 15.7 -> 8.6 ms;
+// BM_ImplicitStep/200 (Jacobi, 1e-8 in both) 791 -> 737 ms (noise).
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter='ToleranceError|WholeTearTolerance/50/(12/0|3/1)/'   (minutes)
