@@ -73,12 +73,29 @@
 // steps/s), BM_ImplicitStep/200 (Jacobi) 729 ms (1.4 steps/s, 108 it.),
 // BM_ImplicitStepMultigrid/200 362 ms (2.76 steps/s, 8.7 it.), /50 17.5 ms.
 // So the load was not what kept it from 20 steps/s: it is missed 7.2x.
+// Measured 2026-11-26 23:11-23:15 (load 5.9-7.4; CPU time, median of 3;
+// main at 345f4c2 and this binary in turn, twice): BM_ImplicitStepMultigrid/200
+// 379, 463 -> 161, 151 ms (2.6 -> 6.4 steps/s; 8.6 -> 3.6 products a
+// step), by the tolerance 1e-3 (BM_ImplicitToleranceError: 4.1e-5 of the
+// motion and 1.1e-5 of the grips' work against a 1e-12 double solve over 40
+// steps at 200 x 200; BM_ImplicitWholeTearTolerance: the same tear) and
+// float block products in the CG (implicit_integrator.h: where the rest
+// goes, and why 20 steps/s is out of reach of this scheme). Then assembled
+// straight into the smoother's float blocks (23:26-23:28, load 7.3-9.2, in
+// turn): 115 and 141 ms against main's 415 (7-8.7 steps/s; target 20).
+// Again 23:36-23:41 (load 4.1-4.9; main, then this binary; CPU / wall):
+// BM_ImplicitStepMultigrid/200 365 / 502 -> 146 / 218 ms (2.7 -> 6.9
+// steps/s of CPU, 8.7 -> 3.6 products), /50 15.7 -> 8.6 ms;
+// BM_ImplicitStep/200 (Jacobi, 1e-8 in both) 791 -> 737 ms (noise).
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
+//   build/bin/tearing_benchmark --benchmark_filter='ToleranceError|WholeTearTolerance/50/(12/0|3/1)/'   (minutes)
 //   build/bin/tearing_benchmark --benchmark_filter=WholeTear/50   (minutes: one tear each)
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "models/tearing/explicit_integrator.h"
@@ -129,6 +146,7 @@ void implicit_steps(benchmark::State& bench, const ImplicitSolverOptions& solver
 void BM_ImplicitStep(benchmark::State& bench) {
   ImplicitSolverOptions solver;
   solver.preconditioner = ImplicitSolverOptions::Preconditioner::kJacobi;
+  solver.relative_tolerance = 1e-8;
   implicit_steps(bench, solver);
 }
 // 5 s a repetition, so that the multigrid hierarchy built at the first step
@@ -142,11 +160,56 @@ void BM_ImplicitStepMultigrid(benchmark::State& bench) {
 }
 BENCHMARK(BM_ImplicitStepMultigrid)->Arg(50)->Arg(200)->Unit(benchmark::kMillisecond)->MinTime(5.0);
 
+// The multigrid solve at a relative tolerance of 10^-range(1), its
+// products in float (range(2) 1) or double (0)
+void BM_ImplicitStepMultigridTolerance(benchmark::State& bench) {
+  ImplicitSolverOptions solver;
+  solver.relative_tolerance = std::pow(10.0, -static_cast<double>(bench.range(1)));
+  solver.single_precision_products = bench.range(2) != 0;
+  implicit_steps(bench, solver);
+}
+BENCHMARK(BM_ImplicitStepMultigridTolerance)->ArgsProduct({{200}, {8, 6, 4, 3}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)->MinTime(5.0);
+
+// What a looser solve costs: range(2) steps of the seed's twist from rest
+// at range(0) cells, the default solve at a relative tolerance of
+// 10^-range(1) against a tight one (double products, 1e-12); counters: the
+// largest gap between the two sheets' vertices over the run relative to
+// the tight sheet's largest displacement, and the relative gap in the
+// grips' work at the end. The time is that of both runs.
+void BM_ImplicitToleranceError(benchmark::State& bench) {
+  const SheetModel model = seed_sheet(static_cast<int>(bench.range(0)));
+  const SheetParams params;
+  const double dt = 10.0 * stable_time_step_s(model, params);
+  ImplicitSolverOptions loose, tight;
+  loose.relative_tolerance = std::pow(10.0, -static_cast<double>(bench.range(1)));
+  tight.relative_tolerance = 1e-12;
+  tight.single_precision_products = false;
+  double gap = 0.0, work_gap = 0.0;
+  for (auto _ : bench) {
+    ImplicitIntegrator a(model, params, dt, loose), b(model, params, dt, tight);
+    SheetState sa = make_sheet_state(model), sb = make_sheet_state(model);
+    for (long s = 0; s < bench.range(2); ++s) {
+      a.step(&sa);
+      b.step(&sb);
+      const double motion = (sb.positions - model.rest_positions).cwiseAbs().maxCoeff();
+      if (motion > 0.0) gap = std::max(gap, (sa.positions - sb.positions).cwiseAbs().maxCoeff() / motion);
+    }
+    work_gap = std::abs(sa.grip_work_j - sb.grip_work_j) / std::abs(sb.grip_work_j);
+  }
+  bench.counters["position_gap"] = gap;
+  bench.counters["work_gap"] = work_gap;
+}
+BENCHMARK(BM_ImplicitToleranceError)->Args({200, 3, 40})->Args({200, 4, 40})->Args({200, 8, 40})
+    ->Unit(benchmark::kSecond)->Iterations(1);
+
 // A whole tear, not one step: the seed's twist at 10x the explicit step
 // until the tear is 5 cm deep (half the sheet), once; what a preconditioner
 // costs as the flaps turn and the tear grows. Counters: steps and the
 // outcomes, to check that both solvers tore alike.
-void whole_tear(benchmark::State& bench, ImplicitSolverOptions::Preconditioner preconditioner) {
+void whole_tear(benchmark::State& bench, ImplicitSolverOptions::Preconditioner preconditioner,
+                double relative_tolerance = ImplicitSolverOptions{}.relative_tolerance,
+                bool single_precision_products = ImplicitSolverOptions{}.single_precision_products) {
   const SheetModel model = seed_sheet(static_cast<int>(bench.range(0)));
   const SheetParams params;
   TearRunOptions options;
@@ -155,19 +218,30 @@ void whole_tear(benchmark::State& bench, ImplicitSolverOptions::Preconditioner p
   options.duration_s = 0.05;
   options.stop_at_depth_m = 0.05;
   options.implicit_solver.preconditioner = preconditioner;
+  options.implicit_solver.relative_tolerance = relative_tolerance;
+  options.implicit_solver.single_precision_products = single_precision_products;
   TearRun run;
   for (auto _ : bench) run = run_tear(model, params, options);
   bench.counters["steps"] = static_cast<double>(run.steps);
   bench.counters["tear_length_mm"] = 1e3 * run.tear_length_m;
   bench.counters["peak_force_n"] = run.peak_grip_force_n;
   bench.counters["work_mj"] = 1e3 * run.grip_work_j;
+  bench.counters["fracture_mj"] = 1e3 * run.ledger.fracture_j;
+  bench.counters["torn_cells"] = run.state.torn_count();
 }
-void BM_ImplicitWholeTear(benchmark::State& bench) { whole_tear(bench, ImplicitSolverOptions::Preconditioner::kJacobi); }
+void BM_ImplicitWholeTear(benchmark::State& bench) { whole_tear(bench, ImplicitSolverOptions::Preconditioner::kJacobi, 1e-8); }
 BENCHMARK(BM_ImplicitWholeTear)->Arg(50)->Arg(100)->Unit(benchmark::kSecond)->Iterations(1);
 void BM_ImplicitWholeTearMultigrid(benchmark::State& bench) {
   whole_tear(bench, ImplicitSolverOptions::Preconditioner::kMultigrid);
 }
 BENCHMARK(BM_ImplicitWholeTearMultigrid)->Arg(50)->Arg(100)->Unit(benchmark::kSecond)->Iterations(1);
+// The same at a relative tolerance of 10^-range(1), the products in float
+// (range(2) 1) or double (0): what a looser solve costs in the outcomes
+void BM_ImplicitWholeTearTolerance(benchmark::State& bench) {
+  whole_tear(bench, ImplicitSolverOptions::Preconditioner::kMultigrid, std::pow(10.0, -static_cast<double>(bench.range(1))),
+             bench.range(2) != 0);
+}
+BENCHMARK(BM_ImplicitWholeTearTolerance)->ArgsProduct({{50, 100}, {12, 8, 6, 5, 4, 3}, {0, 1}})->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace
 }  // namespace repose

@@ -11,6 +11,7 @@
 #include "models/core/base/error.h"
 #include "models/core/config/fields.h"
 #include "models/tearing/sheet_forces.h"
+#include "models/tearing/stiffness_assembly.h"
 
 namespace repose {
 
@@ -35,8 +36,34 @@ class MultigridPreconditioner {
   const Eigen::SparseMatrix<double>* system_ = nullptr;
 };
 
-// The bending terms' stencil: term t couples a, b, c by kb w_t c_p c_q I.
-constexpr double kBendingCoefficient[3] = {1.0, -2.0, 1.0};
+// Preconditioned conjugate gradients for A x = b from x = 0 (Eigen's
+// ConjugateGradient's recurrences: stops once |r| <= tolerance |b|, r
+// updated recursively), with the products A p and the preconditioner
+// given; returns x and sets *iterations.
+template <class Product, class Precondition>
+Eigen::VectorXd conjugate_gradients(const Eigen::VectorXd& b, double tolerance, int max_iterations,
+                                    Product&& product, Precondition&& precondition, int* iterations) {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+  *iterations = 0;
+  const double threshold = tolerance * tolerance * b.squaredNorm();
+  if (threshold == 0.0) return x;
+  Eigen::VectorXd r = b;
+  Eigen::VectorXd p = precondition(r);
+  double rz = r.dot(p);
+  while (*iterations < max_iterations) {
+    const Eigen::VectorXd ap = product(p);
+    const double alpha = rz / p.dot(ap);
+    x += alpha * p;
+    r -= alpha * ap;
+    ++*iterations;
+    if (r.squaredNorm() < threshold) break;
+    const Eigen::VectorXd z = precondition(r);
+    const double rz_new = r.dot(z);
+    p = z + (rz_new / rz) * p;
+    rz = rz_new;
+  }
+  return x;
+}
 
 // Walks the stiffness -K (positive) of the intact springs and acting
 // bending terms: spring(first, a, b, h, axial) per spring, whose blocks are
@@ -76,101 +103,6 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
     bending(bending_first + 9 * static_cast<int>(k), v, kc.bending_n_per_m * t.weight);
   }
 }
-
-// Adds -dt^2 K + dt C (the stiffness and dashpot blocks, at their places in
-// the system's values; C = beta (K's axial and bending parts),
-// SheetSpec::stiffness_damping_s) to the left and dt K v_n to the right
-// (the dashpots' force at v_n is in the step's forces), held dv moved right.
-struct StiffnessAssembly {
-  const std::vector<int>& free_index;
-  const std::vector<int>& first_row;
-  const std::vector<char>& all_free;
-  const std::vector<std::array<int, 3>>& block_place;
-  double* values;
-  Eigen::VectorXd* rhs;
-  Eigen::Map<const Eigen::VectorXd> v0;
-  const Eigen::VectorXd& dv_all;
-  double dt2;
-  double dt_beta;  // dt x stiffness_damping_s
-
-  // any block, any vertices: held rows skipped, held columns to the right;
-  // block of -K, left its block in the system (dt^2 block + dt C's)
-  void add_block(int index, int va, int vb, const Eigen::Matrix3d& block, const Eigen::Matrix3d& left) {
-    const std::array<int, 3>& place = block_place[static_cast<std::size_t>(index)];
-    const int row0 = first_row[static_cast<std::size_t>(va)];
-    for (int p = 0; p < 3; ++p) {
-      const int row = free_index[static_cast<std::size_t>(3 * va + p)];
-      if (row < 0) continue;
-      for (int q = 0; q < 3; ++q) {
-        const double kpq = block(p, q);  // of -K
-        if (kpq == 0.0) continue;        // six of a bending block's nine (C is zero where K is)
-        (*rhs)[row] -= dt2 * kpq * v0[3 * vb + q];
-        if (free_index[static_cast<std::size_t>(3 * vb + q)] >= 0) {
-          values[place[static_cast<std::size_t>(q)] + (row - row0)] += left(p, q);
-        } else {
-          (*rhs)[row] -= left(p, q) * dv_all[3 * vb + q];
-        }
-      }
-    }
-  }
-  // a block between two vertices free in every axis, whose rows are
-  // consecutive, already as it enters the system: no branch per entry
-  void add_free_block(int index, const Eigen::Matrix3d& scaled) {
-    const std::array<int, 3>& place = block_place[static_cast<std::size_t>(index)];
-    for (int q = 0; q < 3; ++q) {
-      double* column = values + place[static_cast<std::size_t>(q)];
-      for (int p = 0; p < 3; ++p) column[p] += scaled(p, q);
-    }
-  }
-  bool free(int v) const { return all_free[static_cast<std::size_t>(v)] != 0; }
-  Eigen::VectorBlock<Eigen::VectorXd, 3> rhs_of(int v) { return rhs->segment<3>(first_row[static_cast<std::size_t>(v)]); }
-
-  void add_spring(int first, int a, int b, const Eigen::Matrix3d& h, const Eigen::Matrix3d& axial) {
-    const Eigen::Matrix3d scaled = dt2 * h;
-    const Eigen::Matrix3d left = dt_beta > 0.0 ? Eigen::Matrix3d(scaled + dt_beta * axial) : scaled;
-    if (!(free(a) && free(b))) {
-      add_block(first, a, a, h, left);
-      add_block(first + 1, b, b, h, left);
-      add_block(first + 2, a, b, -h, -left);
-      add_block(first + 3, b, a, -h, -left);
-      return;
-    }
-    const Eigen::Vector3d pull = scaled * (v0.segment<3>(3 * b) - v0.segment<3>(3 * a));
-    rhs_of(a) += pull;
-    rhs_of(b) -= pull;
-    add_free_block(first, left);
-    add_free_block(first + 1, left);
-    add_free_block(first + 2, -left);
-    add_free_block(first + 3, -left);
-  }
-
-  void add_bending(int first, const std::array<int, 3>& v, double kb) {
-    const double left_scale = dt2 + dt_beta;  // -dt^2 K + dt beta K on the bending part
-    if (!(free(v[0]) && free(v[1]) && free(v[2]))) {
-      for (int p = 0; p < 3; ++p) {
-        for (int q = 0; q < 3; ++q) {
-          const Eigen::Matrix3d block = kb * kBendingCoefficient[p] * kBendingCoefficient[q] * Eigen::Matrix3d::Identity();
-          add_block(first + 3 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)], block,
-                    left_scale * block);
-        }
-      }
-      return;
-    }
-    // K v_n of the term on vertex p: kb c_p (v_a - 2 v_b + v_c)
-    const Eigen::Vector3d curvature = v0.segment<3>(3 * v[0]) - 2.0 * v0.segment<3>(3 * v[1]) + v0.segment<3>(3 * v[2]);
-    for (int p = 0; p < 3; ++p) {
-      const double kp = dt2 * kb * kBendingCoefficient[p];
-      const double left_p = left_scale * kb * kBendingCoefficient[p];
-      rhs_of(v[static_cast<std::size_t>(p)]) -= kp * curvature;
-      for (int q = 0; q < 3; ++q) {
-        const std::array<int, 3>& place = block_place[static_cast<std::size_t>(first + 3 * p + q)];
-        for (int axis = 0; axis < 3; ++axis) {
-          values[place[static_cast<std::size_t>(axis)] + axis] += left_p * kBendingCoefficient[q];
-        }
-      }
-    }
-  }
-};
 
 // Calls place(a, b) for every block for_each_stiffness_term can give, in
 // the order of its index, whether or not the spring or term acts.
@@ -278,6 +210,10 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
   for_each_block_place(model, [&](int a, int b) {
     block_place_.push_back(block_place(system_, free_index_, first_row_, a, b));
   });
+  block_row_.assign(static_cast<std::size_t>(model.vertex_count()), -1);
+  for (int v = 0, rows = 0; v < model.vertex_count(); ++v) {
+    if (first_row_[static_cast<std::size_t>(v)] >= 0) block_row_[static_cast<std::size_t>(v)] = rows++;
+  }
   if (solver_.preconditioner == ImplicitSolverOptions::Preconditioner::kMultigrid && free_count_ > 0) {
     multigrid_ = std::make_unique<SheetMultigrid>(model.cells_x + 1, model.cells_y + 1, free_index_, free_count_,
                                                   solver_.multigrid);
@@ -298,57 +234,100 @@ Eigen::VectorXd ImplicitIntegrator::solve(const Eigen::VectorXd& rhs) {
     last_iterations_ = static_cast<int>(cg.iterations());
     return dv;
   }
-  const bool stale = steps_since_rebuild_ >= solver_.rebuild_every_steps ||
-                     last_iterations_ > solver_.rebuild_iteration_growth * iterations_after_rebuild_;
-  const bool rebuilt = !multigrid_->built() || stale;
+  const bool rebuilt = rebuild_due();
   if (rebuilt) {
     multigrid_->rebuild(system_);
     steps_since_rebuild_ = 0;
     ++rebuilds_;
-  } else {
+  } else if (!assembled_in_blocks_) {
     multigrid_->update_fine(system_);
   }
   ++steps_since_rebuild_;
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, MultigridPreconditioner> cg;
-  cg.setTolerance(solver_.relative_tolerance);
-  cg.setMaxIterations(max_iterations);
-  cg.compute(system_);
-  cg.preconditioner().use(multigrid_.get(), &system_);
-  const Eigen::VectorXd dv = cg.solve(rhs);
-  REPOSE_DEMAND(cg.info() == Eigen::Success && dv.allFinite());
-  last_iterations_ = static_cast<int>(cg.iterations());
+  Eigen::VectorXd dv;
+  if (solver_.single_precision_products) {
+    const VertexBlockMatrix& blocks = multigrid_->fine_blocks();
+    dv = conjugate_gradients(
+        rhs, solver_.relative_tolerance, max_iterations,
+        [&](const Eigen::VectorXd& p) { return blocks.from_blocks(blocks.product(blocks.to_blocks(p))); },
+        [&](const Eigen::VectorXd& r) { return multigrid_->apply(system_, r); }, &last_iterations_);
+    REPOSE_DEMAND(last_iterations_ < max_iterations && dv.allFinite());
+  } else {
+    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, MultigridPreconditioner> cg;
+    cg.setTolerance(solver_.relative_tolerance);
+    cg.setMaxIterations(max_iterations);
+    cg.compute(system_);
+    cg.preconditioner().use(multigrid_.get(), &system_);
+    dv = cg.solve(rhs);
+    REPOSE_DEMAND(cg.info() == Eigen::Success && dv.allFinite());
+    last_iterations_ = static_cast<int>(cg.iterations());
+  }
   if (rebuilt) iterations_after_rebuild_ = last_iterations_;
   return dv;
+}
+
+bool ImplicitIntegrator::rebuild_due() const {
+  return !multigrid_->built() || steps_since_rebuild_ >= solver_.rebuild_every_steps ||
+         last_iterations_ > solver_.rebuild_iteration_growth * iterations_after_rebuild_;
 }
 
 void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd& dv_all, Eigen::VectorXd* rhs_out) {
   const double c = model_.spec.damping_per_s;
   const Eigen::Vector3d& g = model_.spec.gravity_m_per_s2;
-  // the fixed pattern, refilled in place: no sort of millions of triplets
-  // and no search for an entry each step
-  Eigen::SparseMatrix<double>& a_matrix = system_;
-  a_matrix.coeffs().setZero();
-  double* values = a_matrix.valuePtr();
   Eigen::VectorXd& rhs = *rhs_out;
   rhs.resize(free_count_);
+  // straight into the smoother's float blocks on the steps that keep the
+  // hierarchy and need no double matrix (float products, Gauss-Seidel)
+  assembled_in_blocks_ = multigrid_ && solver_.single_precision_products &&
+                         solver_.multigrid.smoother == SheetMultigridOptions::Smoother::kGaussSeidel && !rebuild_due();
+  VertexBlockMatrix* blocks = assembled_in_blocks_ ? &multigrid_->fine_blocks_to_fill() : nullptr;
+  if (blocks && block_index_.empty()) {
+    for_each_block_place(model_, [&](int a, int b) {
+      const int i = block_row_[static_cast<std::size_t>(a)], j = block_row_[static_cast<std::size_t>(b)];
+      block_index_.push_back(i < 0 || j < 0 ? -1 : blocks->find_block(i, j));
+    });
+  }
+  // the fixed pattern, refilled in place: no sort of millions of triplets
+  // and no search for an entry each step
+  if (blocks) {
+    blocks->clear_values();
+  } else {
+    system_.coeffs().setZero();
+  }
   for (int v = 0; v < model_.vertex_count(); ++v) {
     const double m = model_.mass_kg[v];
     for (int a = 0; a < 3; ++a) {
       const int row = free_index_[3 * v + a];
       if (row < 0) continue;
-      a_matrix.coeffRef(row, row) += m * (1.0 + c * dt_);
+      if (blocks) {
+        blocks->diagonal_block(block_row_[static_cast<std::size_t>(v)])[4 * a] += static_cast<float>(m * (1.0 + c * dt_));
+      } else {
+        system_.coeffRef(row, row) += m * (1.0 + c * dt_);
+      }
       rhs[row] = dt_ * (forces_(a, v) + m * g[a] - c * m * state.velocities(a, v));
     }
   }
-  StiffnessAssembly assembly{free_index_, first_row_, all_free_, block_place_, values, &rhs,
-                             Eigen::Map<const Eigen::VectorXd>(state.velocities.data(), 3 * model_.vertex_count()),
-                             dv_all, dt_ * dt_, dt_ * model_.spec.stiffness_damping_s};
+  const Eigen::Map<const Eigen::VectorXd> v0(state.velocities.data(), 3 * model_.vertex_count());
+  const double dt2 = dt_ * dt_, dt_beta = dt_ * model_.spec.stiffness_damping_s;
+  if (blocks) {
+    StiffnessAssembly<BlockTarget> assembly{free_index_, first_row_,         all_free_, {block_index_, blocks->values()},
+                                            &rhs,        v0,                 dv_all,    dt2, dt_beta};
+    add_stiffness(state, &assembly);
+    blocks->finish_values();
+  } else {
+    StiffnessAssembly<CscTarget> assembly{free_index_, first_row_, all_free_, {block_place_, system_.valuePtr()},
+                                          &rhs,        v0,         dv_all,    dt2, dt_beta};
+    add_stiffness(state, &assembly);
+  }
+}
+
+template <class Assembly>
+void ImplicitIntegrator::add_stiffness(const SheetState& state, Assembly* assembly) const {
   for_each_stiffness_term(
       model_, params_, state,
       [&](int first, int a, int b, const Eigen::Matrix3d& h, const Eigen::Matrix3d& axial) {
-        assembly.add_spring(first, a, b, h, axial);
+        assembly->add_spring(first, a, b, h, axial);
       },
-      [&](int first, const std::array<int, 3>& v, double kb) { assembly.add_bending(first, v, kb); });
+      [&](int first, const std::array<int, 3>& v, double kb) { assembly->add_bending(first, v, kb); });
 }
 
 int ImplicitIntegrator::step(SheetState* state) {

@@ -246,11 +246,8 @@ Eigen::VectorXd SheetMultigrid::apply(const Eigen::SparseMatrix<double>& system,
 
 void SheetMultigrid::update_fine(const Eigen::SparseMatrix<double>& system) {
   REPOSE_DEMAND(built() && system.rows() == free_count_);
-  if (options_.smoother == SheetMultigridOptions::Smoother::kGaussSeidel) {
-    fine_blocks_.refresh(system);
-  } else {
-    fine_inverse_l1_ = inverse_l1_rows(system);
-  }
+  fine_blocks_.refresh(system);
+  if (options_.smoother == SheetMultigridOptions::Smoother::kL1Jacobi) fine_inverse_l1_ = inverse_l1_rows(system);
 }
 
 Eigen::VectorXd SheetMultigrid::cycle(std::size_t level, const Eigen::SparseMatrix<double>& matrix,

@@ -88,6 +88,13 @@ class SheetMultigrid {
   // pattern (one pass over it); the coarse levels are kept. Required
   // before apply() whenever the fine system changed.
   void update_fine(const Eigen::SparseMatrix<double>& system);
+  // The float 3 x 3 block copy of the fine matrix last given to rebuild()
+  // or update_fine() (vertex_block_matrix.h). Requires built().
+  const VertexBlockMatrix& fine_blocks() const { return fine_blocks_; }
+  // The same, to be filled in place with a later system of the pattern
+  // (VertexBlockMatrix::clear_values, finish_values): stands for
+  // update_fine() with the Gauss-Seidel smoother. Requires built().
+  VertexBlockMatrix& fine_blocks_to_fill() { return fine_blocks_; }
   // Number of levels, the fine one included (1 before the first rebuild).
   int level_count() const;
 

@@ -193,4 +193,23 @@ Eigen::VectorXd VertexBlockMatrix::residual(const Eigen::VectorXd& b, const Eige
   return r;
 }
 
+int VertexBlockMatrix::find_block(int i, int j) const {
+  const auto begin = column_.begin() + outer_[static_cast<std::size_t>(i)];
+  const auto end = column_.begin() + outer_[static_cast<std::size_t>(i) + 1];
+  const auto at = std::lower_bound(begin, end, j);
+  return at != end && *at == j ? static_cast<int>(at - column_.begin()) : -1;
+}
+
+Eigen::VectorXd VertexBlockMatrix::product(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd y(x.size());
+  const int rows = block_rows();
+  for (int i = 0; i < rows; ++i) {
+    double s[3] = {0.0, 0.0, 0.0};
+    subtract_blocks<false>(values_.data(), column_.data(), outer_[static_cast<std::size_t>(i)],
+                           outer_[static_cast<std::size_t>(i) + 1], x.data(), s);
+    for (int p = 0; p < 3; ++p) y[3 * i + p] = -s[p];
+  }
+  return y;
+}
+
 }  // namespace repose

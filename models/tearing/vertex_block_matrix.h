@@ -15,6 +15,8 @@
 // Vectors here ("block vectors") hold 3 entries per block row (vertex with
 // a free axis), in the order of the vertices; a held axis holds 0.
 
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 #include <Eigen/Core>
@@ -34,6 +36,16 @@ class VertexBlockMatrix {
   void refresh(const Eigen::SparseMatrix<double>& a);
 
   int block_rows() const { return static_cast<int>(outer_.size()) - 1; }
+
+  // Filling the values in place (the pattern kept): clear_values(), then
+  // add into values() (9 floats a block, row-major; held axes' entries
+  // left 0), then finish_values() before any sweep.
+  void clear_values() { std::fill(values_.begin(), values_.end(), 0.0f); }
+  float* values() { return values_.data(); }
+  // Block (i, j)'s index (values() + 9 index), -1 when not in the pattern.
+  int find_block(int i, int j) const;
+  float* diagonal_block(int i) { return values_.data() + 9 * static_cast<std::ptrdiff_t>(diagonal_[static_cast<std::size_t>(i)]); }
+  void finish_values() { invert_diagonal(); }
   // x (a's rows) as a block vector, and back (held axes dropped).
   Eigen::VectorXd to_blocks(const Eigen::VectorXd& x) const;
   Eigen::VectorXd from_blocks(const Eigen::VectorXd& blocks) const;
@@ -46,6 +58,8 @@ class VertexBlockMatrix {
   void gauss_seidel_sweep(const Eigen::VectorXd& b, bool forward, bool from_zero, Eigen::VectorXd* x) const;
   // b - A x (block vectors).
   Eigen::VectorXd residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x) const;
+  // A x (block vectors; 0 on held axes).
+  Eigen::VectorXd product(const Eigen::VectorXd& x) const;
 
  private:
   void invert_diagonal();

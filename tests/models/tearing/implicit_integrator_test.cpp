@@ -240,13 +240,15 @@ ImplicitSolverOptions jacobi_reference() {
 }
 
 // The seed's twist tearing a fibre sheet from its notch at 10x the explicit
-// limit: the multigrid (several levels, and the default's one) and the
-// Jacobi solve at the default tolerance and
-// the Jacobi one at 1e-12 tear the same cells at the same steps and keep the sheet and the
-// grips' work together to 1e-7 of the motion over the whole run (measured
-// 2026-11-23, multigrid: 6e-10 of the motion and 2e-11 of the work at
-// 1e-8, 7e-8 and 8e-9 at 1e-6), the multigrid one on a third of the
-// iterations or fewer.
+// limit: the multigrid solves (several levels, and the default's one) at
+// the default tolerance and the Jacobi solve at 1e-8 follow the Jacobi one
+// at 1e-12: the same cells tear at the same steps, and the sheet and the
+// grips' work stay together to a small fraction of the motion (measured
+// 2026-11-26 at the default 1e-3 with float products: the multilevel
+// solve 3e-7 of the work, the one-level 1.1e-5, the sheets 1e-4 of the
+// motion; Jacobi at 1e-8 7e-10; the resolution errors of
+// tearing_ladder.yaml are percents), the
+// multigrid one on a sixth of the iterations or fewer.
 TEST(ImplicitIntegrator, TheMultigridSolveFollowsTheTightJacobiSolveThroughATear) {
   SheetSpec spec = free_sheet_spec(0.04, 20);
   spec.damping_per_s = 2e3;
@@ -258,15 +260,15 @@ TEST(ImplicitIntegrator, TheMultigridSolveFollowsTheTightJacobiSolveThroughATear
   params.tear_strain = 0.01;
   const double dt = integrator_limit_fraction(model, params, 10.0);
   ImplicitIntegrator fast(model, params, dt, multilevel(ImplicitSolverOptions{}.relative_tolerance));
-  ImplicitIntegrator standard(model, params, dt);  // the defaults: multigrid (one level here) at 1e-8
+  ImplicitIntegrator standard(model, params, dt);  // the defaults: multigrid (one level here)
   ImplicitSolverOptions jacobi_options = jacobi_reference();
-  jacobi_options.relative_tolerance = ImplicitSolverOptions{}.relative_tolerance;
+  jacobi_options.relative_tolerance = 1e-8;
   ImplicitIntegrator jacobi(model, params, dt, jacobi_options);
   ImplicitIntegrator reference(model, params, dt, jacobi_reference());
   SheetState a = make_sheet_state(model), b = make_sheet_state(model), c = make_sheet_state(model);
   SheetState d = make_sheet_state(model);
   const int notch = a.torn_count();
-  double largest_gap = 0.0;
+  double multigrid_gap = 0.0, jacobi_gap = 0.0;
   long fast_iterations = 0, reference_iterations = 0;
   for (int s = 0; s < 150; ++s) {
     fast.step(&a);
@@ -276,20 +278,21 @@ TEST(ImplicitIntegrator, TheMultigridSolveFollowsTheTightJacobiSolveThroughATear
     fast_iterations += fast.last_iterations();
     reference_iterations += reference.last_iterations();
     const double motion = (b.positions - model.rest_positions).cwiseAbs().maxCoeff();
-    largest_gap = std::max(largest_gap, (a.positions - b.positions).cwiseAbs().maxCoeff() / motion);
-    largest_gap = std::max(largest_gap, (c.positions - b.positions).cwiseAbs().maxCoeff() / motion);
-    largest_gap = std::max(largest_gap, (d.positions - b.positions).cwiseAbs().maxCoeff() / motion);
+    multigrid_gap = std::max(multigrid_gap, (a.positions - b.positions).cwiseAbs().maxCoeff() / motion);
+    multigrid_gap = std::max(multigrid_gap, (c.positions - b.positions).cwiseAbs().maxCoeff() / motion);
+    jacobi_gap = std::max(jacobi_gap, (d.positions - b.positions).cwiseAbs().maxCoeff() / motion);
   }
   ASSERT_GT(b.torn_count(), notch + 3) << "the run must tear";
   EXPECT_EQ(a.torn_step, b.torn_step);
   EXPECT_EQ(c.torn_step, b.torn_step);
   EXPECT_EQ(d.torn_step, b.torn_step);
   EXPECT_NEAR(d.grip_work_j, b.grip_work_j, 1e-7 * std::abs(b.grip_work_j));
-  EXPECT_NEAR(c.grip_work_j, b.grip_work_j, 1e-7 * std::abs(b.grip_work_j));
-  EXPECT_LT(largest_gap, 1e-7);
-  EXPECT_NEAR(a.grip_work_j, b.grip_work_j, 1e-7 * std::abs(b.grip_work_j));
+  EXPECT_LT(jacobi_gap, 1e-7);
+  EXPECT_NEAR(a.grip_work_j, b.grip_work_j, 1e-4 * std::abs(b.grip_work_j));
+  EXPECT_NEAR(c.grip_work_j, b.grip_work_j, 1e-4 * std::abs(b.grip_work_j));
+  EXPECT_LT(multigrid_gap, 1e-3);
   EXPECT_GT(fast.multigrid_rebuilds(), 1);
-  EXPECT_LT(3 * fast_iterations, reference_iterations);
+  EXPECT_LT(6 * fast_iterations, reference_iterations);
 }
 
 TEST(ImplicitIntegrator, AMultilevelSolveStaysFiniteAtAHundredTimesTheExplicitLimit) {

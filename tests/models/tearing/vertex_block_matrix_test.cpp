@@ -3,6 +3,7 @@
 // solve the system, and a refresh follows new values of the pattern.
 #include "models/tearing/vertex_block_matrix.h"
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -79,6 +80,18 @@ TEST(VertexBlockMatrix, ItsResidualIsTheMatrixsToFloatRounding) {
   EXPECT_EQ(blocks.residual(blocks.to_blocks(b), blocks.to_blocks(x))[3], 0.0);
 }
 
+TEST(VertexBlockMatrix, ItsProductIsTheMatrixsToFloatRoundingAndSymmetric) {
+  const BlockSystem s = block_system(12, 30.0, 10);
+  const VertexBlockMatrix blocks(s.matrix, s.index);
+  const Eigen::VectorXd x = random_vector(s.matrix.rows(), 11), y = random_vector(s.matrix.rows(), 12);
+  const Eigen::VectorXd ax = blocks.from_blocks(blocks.product(blocks.to_blocks(x)));
+  EXPECT_LT((ax - s.matrix * x).norm(), 1e-6 * (s.matrix.norm() * x.norm()));
+  // x^T A y = y^T A x: the rounded matrix stays symmetric, as conjugate gradients need
+  const Eigen::VectorXd ay = blocks.from_blocks(blocks.product(blocks.to_blocks(y)));
+  EXPECT_NEAR(x.dot(ay), y.dot(ax), 1e-12 * std::abs(x.dot(ay)) + 1e-12);
+  EXPECT_EQ(blocks.product(blocks.to_blocks(x))[3], 0.0);  // the held axis
+}
+
 TEST(VertexBlockMatrix, SymmetricGaussSeidelSweepsSolveTheSystem) {
   const BlockSystem s = block_system(12, 30.0, 4);
   const VertexBlockMatrix blocks(s.matrix, s.index);
@@ -114,6 +127,40 @@ TEST(VertexBlockMatrix, ARefreshFollowsNewValuesOfThePattern) {
   const Eigen::VectorXd ax = -blocks.from_blocks(blocks.residual(Eigen::VectorXd::Zero(3 * blocks.block_rows()),
                                                                   blocks.to_blocks(x)));
   EXPECT_LT((ax - doubled * x).norm(), 1e-6 * (doubled * x).norm());
+}
+
+// Filled in place, entry by entry at the blocks find_block names (block
+// row = vertex with an unknown, here vertex - 1), it is the copy a refresh
+// makes of the same matrix: the same products and sweeps.
+TEST(VertexBlockMatrix, FillingItInPlaceEqualsARefreshOfTheMatrix) {
+  const BlockSystem s = block_system(10, 20.0, 13);
+  const VertexBlockMatrix refreshed(s.matrix, s.index);
+  VertexBlockMatrix filled(s.matrix, s.index);
+  filled.clear_values();
+  EXPECT_EQ(filled.find_block(0, 5), -1);  // vertices 1 and 6 are not coupled
+  for (int v = 1; v < 10; ++v) {
+    for (int w = 1; w < 10; ++w) {
+      const int k = filled.find_block(v - 1, w - 1);
+      if (std::abs(v - w) > 2) {
+        EXPECT_EQ(k, -1);
+        continue;
+      }
+      ASSERT_GE(k, 0);
+      for (int p = 0; p < 3; ++p) {
+        for (int q = 0; q < 3; ++q) {
+          const int row = s.index[static_cast<std::size_t>(3 * v + p)], col = s.index[static_cast<std::size_t>(3 * w + q)];
+          if (row >= 0 && col >= 0) filled.values()[9 * k + 3 * p + q] = static_cast<float>(s.matrix.coeff(row, col));
+        }
+      }
+    }
+  }
+  filled.finish_values();
+  const Eigen::VectorXd x = filled.to_blocks(random_vector(s.matrix.rows(), 14));
+  EXPECT_EQ(filled.product(x), refreshed.product(x));
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(x.size()), b = a;
+  filled.gauss_seidel_sweep(x, true, true, &a);
+  refreshed.gauss_seidel_sweep(x, true, true, &b);
+  EXPECT_EQ(a, b);
 }
 
 }  // namespace

@@ -1,0 +1,146 @@
+#pragma once
+// The implicit integrator's assembly of its stiffness and dashpot terms
+// (implicit_integrator.h) into one of two stores: Eigen's compressed
+// double matrix of the free system (CscTarget, the places of each block
+// found once), or the multigrid smoother's float 3 x 3 block copy of it
+// (BlockTarget, vertex_block_matrix.h), filled straight on the steps that
+// keep the hierarchy, with no double matrix in between. Block index:
+// for_each_stiffness_term's (implicit_integrator.cpp).
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace repose {
+
+// The bending terms' stencil: term t couples a, b, c by kb w_t c_p c_q I.
+constexpr double kBendingCoefficient[3] = {1.0, -2.0, 1.0};
+
+// Eigen's column-major values: per block, per column q of it, the place of
+// the first free row of its row vertex (the others follow).
+struct CscTarget {
+  const std::vector<std::array<int, 3>>& block_place;
+  double* values;
+  // entry (p, q) of block index, p's row row_offset below the vertex's first free row
+  void entry(int index, int, int q, int row_offset, double value) {
+    values[block_place[static_cast<std::size_t>(index)][static_cast<std::size_t>(q)] + row_offset] += value;
+  }
+  // a block between vertices free in every axis
+  void block(int index, const Eigen::Matrix3d& m) {
+    const std::array<int, 3>& place = block_place[static_cast<std::size_t>(index)];
+    for (int q = 0; q < 3; ++q) {
+      double* column = values + place[static_cast<std::size_t>(q)];
+      for (int p = 0; p < 3; ++p) column[p] += m(p, q);
+    }
+  }
+  // value times the identity onto a block between vertices free in every axis
+  void diagonal(int index, double value) {
+    const std::array<int, 3>& place = block_place[static_cast<std::size_t>(index)];
+    for (int axis = 0; axis < 3; ++axis) values[place[static_cast<std::size_t>(axis)] + axis] += value;
+  }
+};
+
+// Row-major float 3 x 3 blocks: per block index, its block in values.
+struct BlockTarget {
+  const std::vector<int>& block_index;
+  float* values;
+  float* at(int index) { return values + 9 * static_cast<std::ptrdiff_t>(block_index[static_cast<std::size_t>(index)]); }
+  void entry(int index, int p, int q, int, double value) { at(index)[3 * p + q] += static_cast<float>(value); }
+  void block(int index, const Eigen::Matrix3d& m) {
+    float* b = at(index);
+    for (int p = 0; p < 3; ++p) {
+      for (int q = 0; q < 3; ++q) b[3 * p + q] += static_cast<float>(m(p, q));
+    }
+  }
+  void diagonal(int index, double value) {
+    float* b = at(index);
+    for (int axis = 0; axis < 3; ++axis) b[4 * axis] += static_cast<float>(value);
+  }
+};
+
+// Adds -dt^2 K + dt C (the stiffness and dashpot blocks, into Target's
+// storage; C = beta (K's axial and bending parts),
+// SheetSpec::stiffness_damping_s) to the left and dt K v_n to the right
+// (the dashpots' force at v_n is in the step's forces), held dv moved right.
+template <class Target>
+struct StiffnessAssembly {
+  const std::vector<int>& free_index;
+  const std::vector<int>& first_row;
+  const std::vector<char>& all_free;
+  Target target;
+  Eigen::VectorXd* rhs;
+  Eigen::Map<const Eigen::VectorXd> v0;
+  const Eigen::VectorXd& dv_all;
+  double dt2;
+  double dt_beta;  // dt x stiffness_damping_s
+
+  // any block, any vertices: held rows skipped, held columns to the right;
+  // block of -K, left its block in the system (dt^2 block + dt C's)
+  void add_block(int index, int va, int vb, const Eigen::Matrix3d& block, const Eigen::Matrix3d& left) {
+    const int row0 = first_row[static_cast<std::size_t>(va)];
+    for (int p = 0; p < 3; ++p) {
+      const int row = free_index[static_cast<std::size_t>(3 * va + p)];
+      if (row < 0) continue;
+      for (int q = 0; q < 3; ++q) {
+        const double kpq = block(p, q);  // of -K
+        if (kpq == 0.0) continue;        // six of a bending block's nine (C is zero where K is)
+        (*rhs)[row] -= dt2 * kpq * v0[3 * vb + q];
+        if (free_index[static_cast<std::size_t>(3 * vb + q)] >= 0) {
+          target.entry(index, p, q, row - row0, left(p, q));
+        } else {
+          (*rhs)[row] -= left(p, q) * dv_all[3 * vb + q];
+        }
+      }
+    }
+  }
+  // a block between two vertices free in every axis, whose rows are
+  // consecutive, already as it enters the system: no branch per entry
+  void add_free_block(int index, const Eigen::Matrix3d& scaled) { target.block(index, scaled); }
+  bool free(int v) const { return all_free[static_cast<std::size_t>(v)] != 0; }
+  Eigen::VectorBlock<Eigen::VectorXd, 3> rhs_of(int v) { return rhs->segment<3>(first_row[static_cast<std::size_t>(v)]); }
+
+  void add_spring(int first, int a, int b, const Eigen::Matrix3d& h, const Eigen::Matrix3d& axial) {
+    const Eigen::Matrix3d scaled = dt2 * h;
+    const Eigen::Matrix3d left = dt_beta > 0.0 ? Eigen::Matrix3d(scaled + dt_beta * axial) : scaled;
+    if (!(free(a) && free(b))) {
+      add_block(first, a, a, h, left);
+      add_block(first + 1, b, b, h, left);
+      add_block(first + 2, a, b, -h, -left);
+      add_block(first + 3, b, a, -h, -left);
+      return;
+    }
+    const Eigen::Vector3d pull = scaled * (v0.segment<3>(3 * b) - v0.segment<3>(3 * a));
+    rhs_of(a) += pull;
+    rhs_of(b) -= pull;
+    add_free_block(first, left);
+    add_free_block(first + 1, left);
+    add_free_block(first + 2, -left);
+    add_free_block(first + 3, -left);
+  }
+
+  void add_bending(int first, const std::array<int, 3>& v, double kb) {
+    const double left_scale = dt2 + dt_beta;  // -dt^2 K + dt beta K on the bending part
+    if (!(free(v[0]) && free(v[1]) && free(v[2]))) {
+      for (int p = 0; p < 3; ++p) {
+        for (int q = 0; q < 3; ++q) {
+          const Eigen::Matrix3d block = kb * kBendingCoefficient[p] * kBendingCoefficient[q] * Eigen::Matrix3d::Identity();
+          add_block(first + 3 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)], block,
+                    left_scale * block);
+        }
+      }
+      return;
+    }
+    // K v_n of the term on vertex p: kb c_p (v_a - 2 v_b + v_c)
+    const Eigen::Vector3d curvature = v0.segment<3>(3 * v[0]) - 2.0 * v0.segment<3>(3 * v[1]) + v0.segment<3>(3 * v[2]);
+    for (int p = 0; p < 3; ++p) {
+      const double kp = dt2 * kb * kBendingCoefficient[p];
+      const double left_p = left_scale * kb * kBendingCoefficient[p];
+      rhs_of(v[static_cast<std::size_t>(p)]) -= kp * curvature;
+      for (int q = 0; q < 3; ++q) target.diagonal(first + 3 * p + q, left_p * kBendingCoefficient[q]);
+    }
+  }
+};
+
+
+}  // namespace repose
