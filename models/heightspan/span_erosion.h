@@ -83,6 +83,7 @@ struct SpanErosionScratch {
   std::vector<span_erosion_detail::Flux> fluxes;
   std::vector<double> out, in, released_m, release_z;
   std::vector<std::size_t> released_at;
+  std::vector<char> changed;  // per column (ring included): changed in the last pass
 };
 
 struct SpanErosionResult {
