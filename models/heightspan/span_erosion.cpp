@@ -227,8 +227,17 @@ struct Exchange {
 // amount. A pass that finds only such fluxes is no longer counted.
 class ChangedColumns {
  public:
-  ChangedColumns(const Columns& cols, std::vector<char>* flags) : cols_(cols), flags_(*flags) {
+  ChangedColumns(const Columns& cols, std::vector<char>* flags, std::vector<std::int64_t>* local_of_span)
+      : cols_(cols), flags_(*flags), local_of_span_(*local_of_span) {
     flags_.assign(cols.local_count(), 0);
+    const SpanMap& map = cols.map;
+    local_of_span_.resize(map.spans.size());
+    for (int j = 0; j < map.grid.ny; ++j) {
+      for (int i = 0; i < map.grid.nx; ++i) {
+        const std::int64_t c = map.cell(i, j);
+        for (std::int32_t k = map.first[c]; k < map.first[c + 1]; ++k) local_of_span_[k] = cols.local(i, j);
+      }
+    }
   }
   // Column (i, j) or a 4-neighbour changed in the last pass.
   bool near(int i, int j) const {
@@ -255,17 +264,13 @@ class ChangedColumns {
 
  private:
   void mark(const Surface& s) {
-    std::int64_t l = s.index;
-    if (s.kind == Kind::kSpan) {  // the column whose spans hold it
-      const std::vector<std::int32_t>& first = cols_.map.first;
-      const std::int64_t c = std::upper_bound(first.begin(), first.end(), static_cast<std::int32_t>(s.index)) -
-                             first.begin() - 1;
-      l = cols_.local(static_cast<int>(c % cols_.map.grid.nx), static_cast<int>(c / cols_.map.grid.nx));
-    }
+    // a span: the column whose spans hold it
+    const std::int64_t l = s.kind == Kind::kSpan ? local_of_span_[static_cast<std::size_t>(s.index)] : s.index;
     if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = 1, marked_.push_back(l);
   }
   const Columns& cols_;
   std::vector<char>& flags_;
+  std::vector<std::int64_t>& local_of_span_;
   std::vector<std::int64_t> marked_;
 };
 
@@ -298,7 +303,7 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   // the columns with spans and one ring around them: nothing else can exchange with a span
   const auto [i0, i1, j0, j1] = span_columns(map);
   std::vector<Flux>& fluxes = spans->erosion_scratch.fluxes;
-  ChangedColumns changed(cols, &spans->erosion_scratch.changed);
+  ChangedColumns changed(cols, &spans->erosion_scratch.changed, &spans->erosion_scratch.local_of_span);
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {

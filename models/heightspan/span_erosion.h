@@ -84,6 +84,7 @@ struct SpanErosionScratch {
   std::vector<double> out, in, released_m, release_z;
   std::vector<std::size_t> released_at;
   std::vector<char> changed;  // per column (ring included): changed in the last pass
+  std::vector<std::int64_t> local_of_span;  // the column (local index) of each span
 };
 
 struct SpanErosionResult {
