@@ -112,7 +112,7 @@ TEST(Erosion, NeverRisesAboveTheCeiling) {
 // After its first pass a call examines only the pairs next to the last
 // pass's fluxes. Its passes must still be exactly full sweeps: a call of
 // En passes against En calls of one pass each (every one a sweep over all
-// remembered cells), on random rough grounds, part of them remembered (the
+// remembered cells), on random bumpy grounds, most of them remembered (the
 // rest joins as it is reached), under a random plate. Bit for bit.
 TEST(Erosion, PassesAfterTheFirstFindWhatFullSweepsFind) {
   for (const unsigned seed : {1u, 2u, 3u, 4u}) {
@@ -122,11 +122,16 @@ TEST(Erosion, PassesAfterTheFirstFindWhatFullSweepsFind) {
     m.sigma = 0.1 + 0.15 * u(rng);
     const GroundModel model = make_plain_ground_model(centred_grid(40, 30, 0.01), m);
     GroundState start = make_ground_state(model, HeightField(model.grid, 0.0));
+    // a level bed with a few bumps, most cells remembered: the passes after
+    // the first find few fluxes among many cells, so they restrict
     for (int j = 0; j < 30; ++j) {
       for (int i = 0; i < 40; ++i) {
-        start.height.at(i, j) = 0.02 * u(rng) * u(rng);
-        if (u(rng) < 0.3) start.erosion.touch(model.cell(i, j));
+        start.height.at(i, j) = 0.01 + 1e-4 * u(rng);
+        if (u(rng) < 0.8) start.erosion.touch(model.cell(i, j));
       }
+    }
+    for (int b = 0; b < 6; ++b) {
+      start.height.at(static_cast<int>(40 * u(rng)), static_cast<int>(30 * u(rng))) += 0.03 * u(rng);
     }
     Underside plate;
     plate.footprint = Footprint{10, 5, 12, 15};
@@ -142,7 +147,7 @@ TEST(Erosion, PassesAfterTheFirstFindWhatFullSweepsFind) {
       restricted.erosion.end_step();
       swept.erosion.end_step();
     }
-    EXPECT_GT((swept.height.heights() != start.height.heights()).count(), 600) << seed;  // it did erode
+    EXPECT_GT((swept.height.heights() != start.height.heights()).count(), 4) << seed;  // it did erode
     EXPECT_TRUE((restricted.height.heights() == swept.height.heights()).all()) << seed;
     EXPECT_EQ(restricted.erosion.cells(), swept.erosion.cells()) << seed;
   }
