@@ -224,64 +224,6 @@ bool is_settled(const GroundModel& model, const std::vector<double>& max_dh_m, c
   return true;
 }
 
-namespace {
-
-// The cells a pass may find a flux at. A pair's flux depends only on its
-// two heights, their materials, the ceiling (fixed during erode) and
-// whether the pass is below En (once not, never again), so a pair whose
-// cells no flux of the last pass touched finds what it found then: no flux,
-// or (not touched although it had one) none, since a flux of the last pass
-// marks both its cells, applied or scaled to nothing. Skipping it leaves
-// the fluxes found, and their order (memory order, then neighbour order),
-// exactly those of a sweep over every remembered cell: the heights are
-// bit-identical. `changed`: a cell of a flux of the last pass; `near`: such
-// a cell or one of its 4-neighbours (the cells whose pairs may change).
-// Marking costs about what sweeping saves when most remembered cells still
-// move (a whole trail creeping to tan(theta), callgrind on ref_scoop: +39 %
-// erosion instructions), so a pass restricts only when the last pass's
-// fluxes are fewer than kRestrictBelow of the remembered cells.
-constexpr double kRestrictBelow = 0.125;
-
-class LivePairs {
- public:
-  explicit LivePairs(std::size_t cell_count) : cell_count_(cell_count) {}
-  // Forgets the last marks; marks the cells of `fluxes` and their neighbours.
-  void mark(const Grid& g, const std::vector<Flux>& fluxes) {
-    clear();
-    if (state_.empty()) state_.assign(cell_count_, 0);  // on first use: most calls never restrict
-    for (const Flux& f : fluxes) {
-      for (const std::int64_t c : {f.from, f.to}) set(c, kChanged);
-    }
-    const std::size_t changed = marked_.size();
-    for (std::size_t m = 0; m < changed; ++m) {
-      const std::int64_t c = marked_[m];
-      const int i = static_cast<int>(c % g.nx), j = static_cast<int>(c / g.nx);
-      for (const auto& o : kNeighbours) {
-        if (g.contains(i + o[0], j + o[1])) set(c + o[0] + static_cast<std::int64_t>(o[1]) * g.nx, kNear);
-      }
-    }
-  }
-  void clear() {
-    for (const std::int64_t c : marked_) state_[static_cast<std::size_t>(c)] = 0;
-    marked_.clear();
-  }
-  bool changed(std::int64_t c) const { return (state_[static_cast<std::size_t>(c)] & kChanged) != 0; }
-  bool near(std::int64_t c) const { return state_[static_cast<std::size_t>(c)] != 0; }
-
- private:
-  static constexpr unsigned char kChanged = 1, kNear = 2;
-  void set(std::int64_t c, unsigned char bit) {
-    unsigned char& s = state_[static_cast<std::size_t>(c)];
-    if (s == 0) marked_.push_back(c);
-    s |= bit;
-  }
-  std::size_t cell_count_;
-  std::vector<unsigned char> state_;
-  std::vector<std::int64_t> marked_;
-};
-
-}  // namespace
-
 ErosionResult erode(const GroundModel& model, const GroundParams& params, const Ceiling& ceiling,
                     GroundState* state) {
   if (model.options.bed_slope_rad > 0.0) return erode_inclined(model, params, ceiling, state);
@@ -303,15 +245,7 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
   std::vector<Flux> fluxes;
   std::vector<std::pair<std::int64_t, std::size_t>> capped;
   std::vector<std::array<int, 2>> ij;  // of memory.cells(), divided out once: a pass would repeat it
-  LivePairs live(g.cell_count());
   for (int p = 0; p < passes && !memory.empty(); ++p) {
-    // after the first pass only the pairs of the last pass's fluxes' cells can change
-    const bool restrict = p > 0 && static_cast<double>(fluxes.size()) < kRestrictBelow * memory.cells().size();
-    if (restrict) {
-      live.mark(g, fluxes);
-    } else {
-      live.clear();
-    }
     fluxes.clear();
     const std::vector<std::int64_t>& cells = memory.cells();
     for (std::size_t k = ij.size(); k < cells.size(); ++k) {
@@ -320,14 +254,12 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
     }
     for (std::size_t k = 0; k < cells.size(); ++k) {
       const std::int64_t c = cells[k];
-      if (restrict && !live.near(c)) continue;
       const int i = ij[k][0], j = ij[k][1];
       for (const auto& o : kNeighbours) {
         const int ni = i + o[0], nj = j + o[1];
         if (!g.contains(ni, nj)) continue;  // closed boundary
         const std::int64_t n = model.cell(ni, nj);
         if (n < c && memory.contains(n)) continue;  // each pair once
-        if (restrict && !live.changed(c) && !live.changed(n)) continue;
         ++result.pair_visits;
         const bool c_higher = h[c] > h[n];
         const std::int64_t hi = c_higher ? c : n, lo = c_higher ? n : c;
