@@ -99,15 +99,25 @@ class ScoopRun {
     state_ = *start_;
   }
   void run(benchmark::State& bench) {
+    double pair_visits = 0.0, steps = 0.0, passes = 0.0, remembered = 0.0, moves = 0.0;  // ground erosion's neighbour pairs examined per step
     for (auto _ : bench) {
       if (state_.ground.step_index >= last_) {
         bench.PauseTiming();
         reset();
         bench.ResumeTiming();
       }
-      step(model_, params_, *renderer_, &state_);
+      const HeightSpanStepReport r = step(model_, params_, *renderer_, &state_);
+      pair_visits += static_cast<double>(r.ground_erosion.pair_visits);
+      ++steps;
+      passes += r.ground_erosion.passes;
+      moves += static_cast<double>(r.ground_erosion.moves);
+      remembered += static_cast<double>(state_.ground.erosion.cells().size());
     }
     bench.counters["held_m3"] = held_m3(state_);
+    bench.counters["ground_pairs"] = steps > 0 ? pair_visits / steps : 0.0;
+    bench.counters["ground_passes"] = steps > 0 ? passes / steps : 0.0;
+    bench.counters["ground_moves"] = steps > 0 ? moves / steps : 0.0;
+    bench.counters["remembered"] = steps > 0 ? remembered / steps : 0.0;
     if (!state_.held.empty()) bench.counters["spans"] = static_cast<double>(state_.held[0].map.spans.size());
   }
 

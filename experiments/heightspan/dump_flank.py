@@ -5,7 +5,13 @@ The heap is the final height field (height_final.npy, 2.5 mm cells) minus the
 From its highest cell, 16 rays sample it (bilinear, every half cell); along each,
 the samples between 20 % and 80 % of the peak are fitted by a line, as
 validation/particles pile_flank_angles does: the flank is atan(-slope), and the
-mean and standard deviation are over the rays. Usage:
+mean and standard deviation are over the rays. The field is first passed
+through a 3 x 3 median (edge cells: their neighbours inside the grid), on the
+model and the DEM alike: it leaves a plane flank as it is but drops a
+single-cell spike, which otherwise becomes the "peak" the rays start from (the
+height-span model's last particles, dripping off the tipped bucket's edge,
+stack in one cell for the final steps: 24 mm and 66 mm spikes beside a 20 mm
+heap, issue 12). Usage:
   python3 dump_flank.py RUN_OR_DATA_FOLDER/height_final.npy [...]
 e.g. data/ref_scoop/seed1/height_final.npy against a `repose run
 experiments/scenes/ref_scoop.yaml --solver heightspan` folder's.
@@ -26,8 +32,15 @@ def bilinear(h, fi, fj):
             + u * v * h[j0 + 1, i0 + 1])
 
 
+def median3(h):
+    """3 x 3 median of each cell (near the edge over the neighbours inside the grid)."""
+    p = np.pad(h, 1, constant_values=np.nan)
+    stack = np.stack([p[dj:dj + h.shape[0], di:di + h.shape[1]] for dj in range(3) for di in range(3)])
+    return np.nanmedian(stack, axis=0)
+
+
 def flank(path, rays=16):
-    h = np.load(path) - BED_M
+    h = median3(np.load(path) - BED_M)
     xs = (np.arange(h.shape[1]) + 0.5) * CELL_M
     masked = np.where(xs[None, :] < DUMP_X_M, -np.inf, h)
     j, i = np.unravel_index(np.argmax(masked), h.shape)

@@ -7,12 +7,12 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "models/ground/collision.h"
+#include "models/ground/received.h"
 
 namespace repose {
 
@@ -44,8 +44,5 @@ struct ContactRegion {
   bool is_contact(int i, int j) const { return fp.contains(i, j) && dist[local(i, j)] != 0; }
 };
 
-// Material this displacement put on free cells (cell -> m of height), so
-// that routing moves only that and never bulldozes the ground already there.
-using Received = std::unordered_map<std::int64_t, double>;
 
 }  // namespace repose

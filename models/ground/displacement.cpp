@@ -209,7 +209,7 @@ DisplacementResult displace(const GroundModel& model, const GroundParams& params
   for (const auto& [c, amount] : received) touched.push_back(c);
 
   for (const int l : region.cells) state->erosion.touch(model.cell(region.gi(l), region.gj(l)));
-  // sorted: the memory lists cells in the order they join, and the map's order is not deterministic
+  // sorted: the memory lists cells in the order they join, not in the order they received
   std::sort(touched.begin(), touched.end());
   for (const std::int64_t c : touched) state->erosion.touch(c);
   return result;

@@ -24,7 +24,7 @@ std::vector<std::int64_t> cells_with_material(const Received& received) {
   for (const auto& [c, amount] : received) {
     if (amount > 0.0) cells.push_back(c);
   }
-  std::sort(cells.begin(), cells.end());  // the map's order is not deterministic
+  std::sort(cells.begin(), cells.end());  // by cell, not in the order they received
   return cells;
 }
 
@@ -311,8 +311,8 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k,
   const Grid& g = in.model.grid;
   const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
   const double h = state.height.at(i, j);
-  const auto got = received.find(c);
-  const double mine = got == received.end() ? 0.0 : got->second;
+  const double* got = received.find(c);
+  const double mine = got == nullptr ? 0.0 : *got;
   Shed s{c, 0.0, 0, {}};
   if (!(mine > 0.0)) return s;
   double lowest = std::numeric_limits<double>::infinity();

@@ -219,6 +219,61 @@ struct Exchange {
   }
 };
 
+// Which columns a pass changed, so that the next pass examines only them
+// and their neighbours: a column's fluxes read its own surfaces and its four
+// neighbours' only, so where none of these changed it would find the same
+// fluxes again, and those all came to nothing (a source with nothing to
+// give or a target with no room, unchanged since): skipping it changes no
+// amount. A pass that finds only such fluxes is no longer counted.
+class ChangedColumns {
+ public:
+  ChangedColumns(const Columns& cols, std::vector<char>* flags, std::vector<std::int64_t>* local_of_span)
+      : cols_(cols), flags_(*flags), local_of_span_(*local_of_span) {
+    flags_.assign(cols.local_count(), 0);
+    const SpanMap& map = cols.map;
+    local_of_span_.resize(map.spans.size());
+    for (int j = 0; j < map.grid.ny; ++j) {
+      for (int i = 0; i < map.grid.nx; ++i) {
+        const std::int64_t c = map.cell(i, j);
+        for (std::int32_t k = map.first[c]; k < map.first[c + 1]; ++k) local_of_span_[k] = cols.local(i, j);
+      }
+    }
+  }
+  // Column (i, j) or a 4-neighbour changed in the last pass.
+  bool near(int i, int j) const {
+    if (flags_[static_cast<std::size_t>(cols_.local(i, j))]) return true;
+    for (const auto& o : kNeighbours) {
+      const int ni = i + o[0], nj = j + o[1];
+      if (ni >= -1 && nj >= -1 && ni <= cols_.map.grid.nx && nj <= cols_.map.grid.ny &&
+          flags_[static_cast<std::size_t>(cols_.local(ni, nj))]) {
+        return true;
+      }
+    }
+    return false;
+  }
+  // Forgets the last pass's changes, then records those of `fluxes` (applied).
+  void record(const std::vector<Flux>& fluxes) {
+    for (const std::int64_t l : marked_) flags_[static_cast<std::size_t>(l)] = 0;
+    marked_.clear();
+    for (const Flux& f : fluxes) {
+      if (!(f.amount_m > 0.0)) continue;
+      mark(f.from);
+      if (f.to.kind != Kind::kAir) mark(f.to);
+    }
+  }
+
+ private:
+  void mark(const Surface& s) {
+    // a span: the column whose spans hold it
+    const std::int64_t l = s.kind == Kind::kSpan ? local_of_span_[static_cast<std::size_t>(s.index)] : s.index;
+    if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = 1, marked_.push_back(l);
+  }
+  const Columns& cols_;
+  std::vector<char>& flags_;
+  std::vector<std::int64_t>& local_of_span_;
+  std::vector<std::int64_t> marked_;
+};
+
 // The columns with spans: [i0, i1] x [j0, j1] (empty when i1 < i0).
 std::array<int, 4> span_columns(const SpanMap& map) {
   std::array<int, 4> box{map.grid.nx, -1, map.grid.ny, -1};
@@ -248,10 +303,12 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   // the columns with spans and one ring around them: nothing else can exchange with a span
   const auto [i0, i1, j0, j1] = span_columns(map);
   std::vector<Flux>& fluxes = spans->erosion_scratch.fluxes;
+  ChangedColumns changed(cols, &spans->erosion_scratch.changed, &spans->erosion_scratch.local_of_span);
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {
       for (int i = i0 - 1; i <= i1 + 1; ++i) {
+        if (p > 0 && !changed.near(i, j)) continue;
         if (cols.count(i, j) > 0) add_span_fluxes(cols, rule, i, j, &fluxes);
         add_ground_fluxes(cols, rule, i, j, &fluxes);
       }
@@ -260,6 +317,7 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
     result.passes = p + 1;
     exchange.scale(&fluxes);
     exchange.apply(fluxes, &result);
+    changed.record(fluxes);
   }
   exchange.release(velocity_m_s, model.options.particle_spread_m_s, particles, rng);
   return result;
