@@ -289,7 +289,7 @@ void expect_within_the_inclined_rule(const HeightField& h, double slope_deg, dou
       if (i + 1 < h.grid().nx && h.at(i, j) > 0.0 && h.at(i + 1, j) > 0.0) {
         const double d = h.at(i + 1, j) - h.at(i, j);
         EXPECT_GE(d, c * std::tan(zeta - theta) - tol) << i << "," << j;
-        if (zeta + theta < std::numbers::pi / 2) EXPECT_LE(d, c * std::tan(zeta + theta) + tol) << i << "," << j;
+        if (zeta + theta < std::numbers::pi / 2) { EXPECT_LE(d, c * std::tan(zeta + theta) + tol) << i << "," << j; }
       }
       if (j + 1 < h.grid().ny && h.at(i, j) > 0.0 && h.at(i, j + 1) > 0.0) {
         EXPECT_LE(std::abs(h.at(i, j + 1) - h.at(i, j)) * std::cos(zeta), c * std::tan(theta) + tol) << i << "," << j;
@@ -327,7 +327,7 @@ TEST(InclinedErosion, ABlockSteeperThanReposeRunsDownAndPilesAgainstTheEnd) {
   const double wedge_end_m = std::sqrt(2.0 * (20 * 0.005 * 0.1) * std::tan(5.0 * kDeg));
   EXPECT_NEAR(h.at(149, 0), wedge_end_m, 0.1 * wedge_end_m);
   for (int i = 0; i + 1 < 150; ++i) {
-    if (h.at(i, 0) > 0.0) EXPECT_GT(h.at(i + 1, 0), h.at(i, 0)) << i;
+    if (h.at(i, 0) > 0.0) { EXPECT_GT(h.at(i + 1, 0), h.at(i, 0)) << i; }
   }
   Chute gentle = chute(35.0, 60.0, 0.2, 80, 1, 40, 0.02);
   settle_inclined(gentle.model, &gentle.state, 200000);
