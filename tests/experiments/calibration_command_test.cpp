@@ -60,7 +60,8 @@ TEST(CalibrationCommand, WritesTheRunFolder) {
   EXPECT_NEAR(fitted["ground.sand.repose_angle_deg"].as<double>(), 35.0, 1.0);
   EXPECT_NEAR(fitted["ground.sand.sigma"].as<double>(), 0.15, 0.02);
   // ... to the last bit of the fit's double, so a rerun at them is the fit's run
-  for (const nlohmann::json& p : nlohmann::json::parse(json)["parameters"]) {
+  const nlohmann::json calibration = nlohmann::json::parse(json);
+  for (const nlohmann::json& p : calibration["parameters"]) {
     if (p["name"] == "ground.sand.repose_angle_deg") continue;  // converted from radians
     EXPECT_EQ(fitted[p["name"].get<std::string>()].as<double>(), p["value"].get<double>()) << p["name"];
   }
