@@ -4,7 +4,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <numbers>
 #include <set>
 #include <sstream>
@@ -14,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "models/core/base/error.h"
+#include "models/core/geometry/triangle_mesh.h"
 #include "models/core/io/mesh_io.h"
 #include "models/core/io/npy_io.h"
 #include "models/core/run/output_directory.h"
@@ -30,7 +30,7 @@ void DebrisRenderOptions::validate() const {
   if (!(elevation_deg > 0.0 && elevation_deg < 90.0)) fail("elevation_deg must lie in (0, 90)");
   if (!std::isfinite(azimuth_deg)) fail("azimuth_deg must be finite");
   if (!(margin_m >= 0.0 && std::isfinite(margin_m))) fail("margin_m must be >= 0");
-  if (sphere_subdivisions < 0 || sphere_subdivisions > 3) fail("sphere_subdivisions must lie in 0..3");
+  if (sphere_segments < 3 || sphere_segments > 16) fail("sphere_segments must lie in 3..16");
   if (!(moved_threshold_m > 0.0)) fail("moved_threshold_m must be > 0");
 }
 
@@ -98,39 +98,6 @@ DebrisRenderFrame read_frame(const fs::path& dir, int k, double time_s, std::siz
   return f;
 }
 
-// A unit icosahedron subdivided n times, its vertices on the sphere.
-TriangleMesh unit_sphere(int subdivisions) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2;
-  std::vector<Eigen::Vector3d> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-  std::vector<Eigen::Vector3i> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                                    {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (auto& p : v) p.normalize();
-  for (int s = 0; s < subdivisions; ++s) {
-    std::map<std::pair<int, int>, int> middle;
-    auto mid = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      const auto it = middle.find(key);
-      if (it != middle.end()) return it->second;
-      v.push_back((v[static_cast<std::size_t>(a)] + v[static_cast<std::size_t>(b)]).normalized());
-      return middle[key] = static_cast<int>(v.size()) - 1;
-    };
-    std::vector<Eigen::Vector3i> g;
-    for (const auto& tri : f) {
-      const int a = mid(tri[0], tri[1]), b = mid(tri[1], tri[2]), c = mid(tri[2], tri[0]);
-      g.insert(g.end(), {{tri[0], a, c}, {tri[1], b, a}, {tri[2], c, b}, {a, b, c}});
-    }
-    f = std::move(g);
-  }
-  TriangleMesh m;
-  m.V.resize(static_cast<Eigen::Index>(v.size()), 3);
-  for (std::size_t i = 0; i < v.size(); ++i) m.V.row(static_cast<Eigen::Index>(i)) = v[i].transpose();
-  m.F.resize(static_cast<Eigen::Index>(f.size()), 3);
-  for (std::size_t i = 0; i < f.size(); ++i) m.F.row(static_cast<Eigen::Index>(i)) = f[i].transpose();
-  return m;
-}
-
 Eigen::Vector3d ramp(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double s) {
   return lo + std::clamp(s, 0.0, 1.0) * (hi - lo);
 }
@@ -146,7 +113,7 @@ ColouredMesh terrain_mesh(const TriangleMesh& terrain, const DebrisRenderOptions
 }
 
 ColouredMesh element_meshes(const DebrisRenderFrame& f, double r_lo, double r_hi, const DebrisRenderOptions& o) {
-  const TriangleMesh unit = unit_sphere(o.sphere_subdivisions);
+  const TriangleMesh unit = make_sphere(1.0, o.sphere_segments);
   const auto n = f.elements.rows();
   ColouredMesh m;
   m.mesh.V.resize(n * unit.V.rows(), 3);

@@ -31,7 +31,7 @@ struct DebrisRenderOptions {
                                     // north-east, the debris scene's flow coming towards it)
   double elevation_deg = 30.0;      // (0, 90): camera above the horizontal
   double margin_m = 6.0;            // >= 0: the view frames the elements and buildings this much wider
-  int sphere_subdivisions = 1;      // 0..3: 20 * 4^n triangles per element
+  int sphere_segments = 6;          // 3..16: make_sphere's divisions around (6: 60 triangles per element)
   double moved_threshold_m = 0.05;  // > 0: a part drawn as moved beyond this (DebrisRunOptions' default)
   RenderImageOptions image;         // light, supersampling, background (ground and object colours unused)
   Eigen::Vector3d terrain_low_rgb = Eigen::Vector3d(0.42, 0.58, 0.36);   // 0..1, at the lowest height
