@@ -89,7 +89,8 @@ void read_series_observable(const YamlMap& map, ObservableSpec* o) {
 ObservableSpec read_observable(const YamlValue& value) {
   using K = ObservableSpec::Kind;
   const std::vector<std::string> kinds = {"height_field", "transect",    "crater_depth", "rim_height",
-                                          "pile_angle",   "furrow_area", "series",     "measure"};
+                                          "pile_angle",   "furrow_area", "series",     "measure",
+                                          "heap_flank"};
   const std::vector<std::vector<std::string>> keys = {
       {"kind", "weight", "region_m"},
       {"kind", "weight", "from_m", "to_m", "samples"},
@@ -98,13 +99,14 @@ ObservableSpec read_observable(const YamlValue& value) {
       {"kind", "weight", "centre_m"},
       {"kind", "weight", "from_m", "to_m", "samples"},
       {"kind", "weight", "name", "times_s"},
-      {"kind", "weight", "name"}};
+      {"kind", "weight", "name"},
+      {"kind", "weight", "region_m", "base_height_m", "reach_m"}};
   // the allowed keys depend on the kind: read it first, then check the map against its kind
   if (!value.is_map()) value.fail("a map with a kind");
   const YAML::Node kind_node = value.node()["kind"];
   if (!kind_node) {
-    value.map({"kind", "weight", "region_m", "from_m", "to_m", "samples", "centre_m", "name", "times_s"})
-        .fail_missing("kind", "one of height_field, transect, crater_depth, rim_height, pile_angle, furrow_area, series, measure");
+    value.map({"kind", "weight", "region_m", "from_m", "to_m", "samples", "centre_m", "name", "times_s", "base_height_m", "reach_m"})
+        .fail_missing("kind", "one of height_field, transect, crater_depth, rim_height, pile_angle, furrow_area, series, measure, heap_flank");
   }
   const std::size_t kind = YamlValue(value.file(), kind_node, value.path() + ".kind").choice(kinds);
   const YamlMap map = value.map(keys[kind]);
@@ -121,6 +123,10 @@ ObservableSpec read_observable(const YamlValue& value) {
   if (o.kind == K::kPileAngle) o.centre_m = map.vec2("centre_m", kCoordinate);
   if (o.kind == K::kSeries) read_series_observable(map, &o);
   if (o.kind == K::kMeasure) o.measure = map.string("name");
+  if (o.kind == K::kHeapFlank) {
+    if (map.has("base_height_m")) o.base_height_m = map.number("base_height_m", kCoordinate);
+    o.reach_m = map.number_or("reach_m", Range::positive(), o.reach_m);
+  }
   return o;
 }
 

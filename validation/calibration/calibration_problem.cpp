@@ -92,14 +92,13 @@ SeriesByName read_reference_series(const std::string& dir) {
 }
 
 // The reference's values of an observable: of the mean surfaces, or for a
-// series or a measure the mean over seeds of each seed's values.
+// series, a measure or a heap's flank the mean over seeds of each seed's values.
 std::vector<double> reference_values(const ObservableSpec& o, const PreparedScene& s) {
-  using K = ObservableSpec::Kind;
-  if (o.kind != K::kSeries && o.kind != K::kMeasure) return observe(o, s.initial, s.reference_final);
+  if (!observed_per_seed(o)) return observe(o, s.initial, s.reference_final);
   REPOSE_DEMAND(s.seed_series.size() == s.seed_measures.size() && !s.seed_series.empty());
   std::vector<double> mean;
   for (std::size_t seed = 0; seed < s.seed_series.size(); ++seed) {
-    const std::vector<double> v = observe(o, s.initial, s.reference_final, s.seed_series[seed], s.seed_measures[seed]);
+    const std::vector<double> v = seed_observation(o, s, seed);
     mean.resize(v.size(), 0.0);
     for (std::size_t k = 0; k < v.size(); ++k) mean[k] += v[k] / static_cast<double>(s.seed_series.size());
   }
@@ -178,6 +177,19 @@ void parallel_for(std::size_t count, int threads, const std::function<void(std::
 }
 
 }  // namespace
+
+bool observed_per_seed(const ObservableSpec& o) {
+  using K = ObservableSpec::Kind;
+  return o.kind == K::kSeries || o.kind == K::kMeasure || o.kind == K::kHeapFlank;
+}
+
+std::vector<double> seed_observation(const ObservableSpec& o, const PreparedScene& s, std::size_t seed) {
+  REPOSE_DEMAND(seed < s.seed_series.size() && seed < s.seed_measures.size());
+  // a data reference keeps each seed's surfaces; a heuristic one only its mean
+  const bool own = seed < s.seed_final.size() && seed < s.seed_initial.size();
+  return observe(o, own ? s.seed_initial[seed] : s.initial, own ? s.seed_final[seed] : s.reference_final,
+                 s.seed_series[seed], s.seed_measures[seed]);
+}
 
 MeasureByName measure_values(const Run& run) {
   MeasureByName out;

@@ -58,6 +58,13 @@ HeightField read_height_field(const std::string& path, const Grid& grid, const s
 // A run's measures by name (their values in SI units).
 MeasureByName measure_values(const Run& run);
 
+// Is the observable's reference the mean over seeds of each seed's value
+// (series, measure, heap_flank) rather than the value of the seeds' mean surfaces?
+bool observed_per_seed(const ObservableSpec& o);
+// The observable's value on one reference seed (its own surfaces when the
+// reference kept them, else the mean surfaces) with that seed's series and measures.
+std::vector<double> seed_observation(const ObservableSpec& o, const PreparedScene& s, std::size_t seed);
+
 class CalibrationProblem {
  public:
   // Loads the scenes and references; a LIGGGHTS reference that is not made

@@ -22,9 +22,12 @@ std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const R
   std::vector<SeriesComparison> out;
   for (std::size_t o = 0; o < scene.entry.observables.size(); ++o) {
     const ObservableSpec& spec = scene.entry.observables[o];
-    if (spec.kind != K::kSeries && spec.kind != K::kMeasure) continue;
+    if (!observed_per_seed(spec)) continue;
     SeriesComparison c;
-    if (spec.kind == K::kSeries) {
+    if (spec.kind == K::kHeapFlank) {
+      c.series = "heap_flank";
+      c.unit = "rad";
+    } else if (spec.kind == K::kSeries) {
       c.series = spec.series;
       const auto it = fitted.series.find(spec.series);
       if (it != fitted.series.end()) c.unit = it->second.unit;
@@ -35,8 +38,7 @@ std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const R
       if (it != fitted.measures.end()) c.unit = it->second.unit;
     }
     for (std::size_t seed = 0; seed < scene.seed_series.size(); ++seed) {
-      c.seeds.push_back(
-          observe(spec, scene.initial, scene.reference_final, scene.seed_series[seed], scene.seed_measures[seed]));
+      c.seeds.push_back(seed_observation(spec, scene, seed));
     }
     c.reference = scene.reference_values[o];
     const auto of = [&](const Run& run) {

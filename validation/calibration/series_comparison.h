@@ -2,7 +2,8 @@
 // A series observable (observable_spec.h, kind series: the mass a bucket
 // holds at the stages of a scoop) compared at its times, or a measure
 // observable (kind measure: the peak force on a wall) as one value, between
-// the reference's seeds and the calibrated solver with the initial and the
+// the reference's seeds and the calibrated solver (also a heap_flank
+// observable, as one value named "heap_flank" in rad) with the initial and the
 // fitted parameters, for the report and calibration.json.
 
 #include <string>
@@ -24,7 +25,7 @@ struct SeriesComparison {
   std::vector<double> fitted_relative_error() const;
 };
 
-// One comparison per series or measure observable of the scene, in its order.
+// One comparison per series, measure or heap_flank observable of the scene, in its order.
 std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const Run& initial, const Run& fitted);
 
 }  // namespace repose

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "validation/observables/heap_flank.h"
 #include "validation/particles/particle_observables.h"
 
 namespace repose {
@@ -62,6 +63,14 @@ std::vector<double> series_values(const ObservableSpec& o, const SeriesByName& s
   std::vector<double> out;
   for (const double t : o.times_s) out.push_back(s.at(t));
   return out;
+}
+
+double heap_flank_rad(const ObservableSpec& o, const HeightField& initial, const HeightField& final_height) {
+  HeapFlankOptions options;
+  options.base_height_m = o.base_height_m ? *o.base_height_m : initial.heights().mean();
+  options.peak_region = o.region;
+  options.reach_m = o.reach_m;
+  return heap_flank(final_height, options).mean_rad;
 }
 
 std::vector<double> measure_value(const ObservableSpec& o, const MeasureByName& measures) {
@@ -125,6 +134,8 @@ std::vector<double> observe(const ObservableSpec& o, const HeightField& initial,
       return series_values(o, series);
     case K::kMeasure:
       return measure_value(o, measures);
+    case K::kHeapFlank:
+      return {heap_flank_rad(o, initial, final_height)};
   }
   REPOSE_DEMAND(false);
   return {};

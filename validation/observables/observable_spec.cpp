@@ -12,6 +12,7 @@ const char* observable_kind_name(ObservableSpec::Kind kind) {
     case ObservableSpec::Kind::kFurrowArea: return "furrow_area";
     case ObservableSpec::Kind::kSeries: return "series";
     case ObservableSpec::Kind::kMeasure: return "measure";
+    case ObservableSpec::Kind::kHeapFlank: return "heap_flank";
   }
   return "?";
 }

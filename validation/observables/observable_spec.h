@@ -34,6 +34,7 @@ struct ObservableSpec {
     kFurrowArea,   // cross-section (m^2) below the initial surface along from_m..to_m
     kSeries,       // a run's time series (Run::series, time_series.h) `series` at each of times_s
     kMeasure,      // a run's scalar measure (Run::measures) `measure`, in its SI unit
+    kHeapFlank,    // flank angle (rad) of the heap peaking in region (heap_flank.h), above base_height_m
   };
   Kind kind = Kind::kHeightField;
   double weight = 1.0;  // > 0; residuals are in SI units times this
@@ -50,6 +51,12 @@ struct ObservableSpec {
   // measure: its dotted name ("chute.peak.force_n"); a particle reference
   // reads it from its manifest's results
   std::string measure;
+  // heap_flank: heights are taken above base_height_m (default: the initial
+  // surface's mean height over the grid) and the rays reach reach_m from the
+  // peak (heap_flank.h, HeapFlankOptions); a data reference with several
+  // seeds is the mean of each seed's flank, as for series and measures
+  std::optional<double> base_height_m;
+  double reach_m = 0.1;
 };
 
 const char* observable_kind_name(ObservableSpec::Kind kind);

@@ -4,6 +4,8 @@
 // others' fit alone.
 #include "validation/calibration/calibration_problem.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -19,6 +21,7 @@
 #include "models/core/solver/run.h"
 #include "validation/calibration/calibration_fit.h"
 #include "validation/calibration/calibration_loader.h"
+#include "validation/observables/heap_flank.h"
 #include "tests/validation/calibration/tiny_snow_table.h"
 
 namespace repose {
@@ -167,6 +170,54 @@ TEST(CalibrationProblem, AMeasureObservableComparesTheSeedsMeanWithTheRunsMeasur
     EXPECT_NE(std::string(e.what()).find("chute.peak.force_n"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("chute.front_arrival_s"), std::string::npos) << e.what();
   }
+  fs::remove_all(root);
+}
+
+// A seed folder whose final surface is the flat bed with a cone of the given
+// flank angle (deg) and height, its apex over the centre of cell (ci, cj).
+fs::path cone_seed_folder(const fs::path& root, const std::string& name, double angle_deg, int ci, int cj) {
+  const fs::path dir = root / name;
+  fs::create_directories(dir);
+  ArrayXXdR initial = ArrayXXdR::Constant(16, 16, 0.02);
+  ArrayXXdR final_height = initial;
+  for (int j = 0; j < 16; ++j) {
+    for (int i = 0; i < 16; ++i) {
+      const double r = 0.004 * std::hypot(i - ci, j - cj);
+      final_height(j, i) += std::max(0.0, 0.015 - std::tan(angle_deg * std::numbers::pi / 180.0) * r);
+    }
+  }
+  write_npy_2d((dir / "height_initial.npy").string(), initial);
+  write_npy_2d((dir / "height_final.npy").string(), final_height);
+  return dir;
+}
+
+// A heap's flank (issue 12: the dumped heap of a scoop) is compared with the
+// mean of each seed's flank, not with the flank of the seeds' mean surface
+// (two heaps side by side average to a lower, wider one); by default heights
+// are taken above the initial surface's mean.
+TEST(CalibrationProblem, AHeapFlankObservableComparesTheMeanOfTheSeedsFlanks) {
+  const fs::path root = fs::temp_directory_path() / ("repose_heap_flank_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  const fs::path a = cone_seed_folder(root, "seed1", 20.0, 7, 7), b = cone_seed_folder(root, "seed2", 30.0, 9, 8);
+  const std::string yaml = "scenes:\n  - scene: " + kDir + "/scenes/indent.yaml\n    reference: {data: [" + a.string() +
+                           ", " + b.string() +
+                           "]}\n    observables: [{kind: heap_flank, weight: 3, reach_m: 0.05}]\n"
+                           "parameters:\n  - {name: ground.sand.alpha, initial: 0.5}\n";
+  const CalibrationProblem problem(load_calibration_from_string(yaml, kDir + "/inline.yaml"), solver_registry());
+  const PreparedScene& s = problem.scenes().front();
+  HeapFlankOptions options;
+  options.base_height_m = 0.02;
+  options.reach_m = 0.05;
+  const double one = heap_flank(s.seed_final[0], options).mean_rad, two = heap_flank(s.seed_final[1], options).mean_rad;
+  EXPECT_NEAR(one, 20.0 * std::numbers::pi / 180.0, 0.05);
+  EXPECT_NEAR(two, 30.0 * std::numbers::pi / 180.0, 0.05);
+  ASSERT_EQ(s.reference_values[0].size(), 1u);
+  EXPECT_DOUBLE_EQ(s.reference_values[0][0], 0.5 * (one + two));
+  EXPECT_GT(std::abs(heap_flank(s.reference_final, options).mean_rad - 0.5 * (one + two)), 0.02);
+  // a run whose final surface is seed 1's: residual weight * (its flank - the mean)
+  const std::vector<double> r = problem.residuals(s, s.seed_final[0], {}, {});
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_DOUBLE_EQ(r[0], 3.0 * (one - 0.5 * (one + two)));
   fs::remove_all(root);
 }
 
