@@ -90,6 +90,16 @@ TEST(CalibrationLoader, ReadsTheScoopCalibrationsSeriesObservables) {
   EXPECT_EQ(held.times_s, (std::vector<double>{0.5, 0.8, 1.0, 1.3, 1.6, 2.3}));  // during the drag, then the stages
   EXPECT_EQ(spec.scenes[1].role, CalibrationScene::Role::kHeldOut);
   EXPECT_EQ(spec.scenes[1].observables[0].times_s, (std::vector<double>{1.0, 1.3, 1.6, 2.3}));  // the stages
+  // the dumped heap's flank, measured as experiments/heightspan/dump_flank.py does, on both scoops
+  for (const CalibrationScene& scene : spec.scenes) {
+    const ObservableSpec& flank = scene.observables.back();
+    ASSERT_EQ(flank.kind, ObservableSpec::Kind::kHeapFlank);
+    ASSERT_TRUE(flank.region.has_value() && flank.base_height_m.has_value());
+    EXPECT_EQ(flank.region->x_min_m, 0.15);
+    EXPECT_EQ(*flank.base_height_m, 0.025);
+    EXPECT_EQ(flank.reach_m, 0.1);
+    EXPECT_GT(flank.weight, 0.0);
+  }
 }
 
 TEST(CalibrationLoader, ReadsTheBulletChuteCalibrationsMeasureObservables) {
