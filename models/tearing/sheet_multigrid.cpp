@@ -259,7 +259,9 @@ Eigen::VectorXd SheetMultigrid::cycle(std::size_t level, const Eigen::SparseMatr
     const Eigen::VectorXd b = blocks.to_blocks(r);
     Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
     for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, true, s == 0, &x);
-    const Eigen::VectorXd residual = blocks.from_blocks(blocks.residual(b, x));
+    // one sweep from zero leaves a residual that only the upper blocks make
+    const Eigen::VectorXd residual = blocks.from_blocks(options_.smoothing_sweeps == 1 ? blocks.residual_after_sweep_from_zero(x)
+                                                                                     : blocks.residual(b, x));
     x += blocks.to_blocks(coarse.interpolation * cycle(level + 1, coarse.matrix, coarse.restriction * residual));
     for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, false, false, &x);
     return blocks.from_blocks(x);

@@ -193,6 +193,18 @@ Eigen::VectorXd VertexBlockMatrix::residual(const Eigen::VectorXd& b, const Eige
   return r;
 }
 
+Eigen::VectorXd VertexBlockMatrix::residual_after_sweep_from_zero(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd r(x.size());
+  const int rows = block_rows();
+  for (int i = 0; i < rows; ++i) {
+    double s[3] = {0.0, 0.0, 0.0};
+    subtract_blocks<false>(values_.data(), column_.data(), diagonal_[static_cast<std::size_t>(i)] + 1,
+                           outer_[static_cast<std::size_t>(i) + 1], x.data(), s);
+    for (int p = 0; p < 3; ++p) r[3 * i + p] = s[p];
+  }
+  return r;
+}
+
 int VertexBlockMatrix::find_block(int i, int j) const {
   const auto begin = column_.begin() + outer_[static_cast<std::size_t>(i)];
   const auto end = column_.begin() + outer_[static_cast<std::size_t>(i) + 1];

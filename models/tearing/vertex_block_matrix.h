@@ -58,6 +58,12 @@ class VertexBlockMatrix {
   void gauss_seidel_sweep(const Eigen::VectorXd& b, bool forward, bool from_zero, Eigen::VectorXd* x) const;
   // b - A x (block vectors).
   Eigen::VectorXd residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x) const;
+  // The same for an x left by one forward sweep from zero (and nothing
+  // else): that sweep made each row's b_i - sum_{j <= i} A_ij x_j zero, so
+  // the residual is -sum_{j > i} A_ij x_j, read from the blocks right of
+  // the diagonal only (half the memory of residual(); equal to it to
+  // round-off).
+  Eigen::VectorXd residual_after_sweep_from_zero(const Eigen::VectorXd& x) const;
   // A x (block vectors; 0 on held axes).
   Eigen::VectorXd product(const Eigen::VectorXd& x) const;
 

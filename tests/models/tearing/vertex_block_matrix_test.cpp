@@ -118,6 +118,20 @@ TEST(VertexBlockMatrix, ASweepFromZeroIsAFullSweepFromZero) {
   EXPECT_LT((half - full).norm(), 1e-14 * full.norm());
 }
 
+// The multigrid's shortcut: after one forward sweep from zero, the upper
+// blocks alone give the residual (the held axis included).
+TEST(VertexBlockMatrix, AfterASweepFromZeroTheUpperBlocksGiveTheResidual) {
+  const BlockSystem s = block_system(12, 30.0, 13);
+  const VertexBlockMatrix blocks(s.matrix, s.index);
+  const Eigen::VectorXd bb = blocks.to_blocks(random_vector(s.matrix.rows(), 14));
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(bb.size());
+  blocks.gauss_seidel_sweep(bb, true, true, &x);
+  const Eigen::VectorXd full = blocks.residual(bb, x), shortcut = blocks.residual_after_sweep_from_zero(x);
+  EXPECT_GT(full.norm(), 0.1 * bb.norm());  // one sweep is far from a solve
+  EXPECT_LT((shortcut - full).norm(), 1e-12 * full.norm());
+  EXPECT_EQ(shortcut[3], 0.0);
+}
+
 TEST(VertexBlockMatrix, ARefreshFollowsNewValuesOfThePattern) {
   const BlockSystem s = block_system(10, 5.0, 8);
   VertexBlockMatrix blocks(s.matrix, s.index);
