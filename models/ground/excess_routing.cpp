@@ -1,8 +1,7 @@
 #include "models/ground/excess_routing.h"
 
 #include <algorithm>
-#include <functional>
-#include <queue>
+#include <bit>
 #include <tuple>
 #include <cmath>
 #include <utility>
@@ -335,6 +334,32 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k,
   return s;
 }
 
+// The ranks waiting to be visited, smallest first: one bit per rank, a
+// cursor that only moves forwards (a cell only ever gives to cells visited
+// after it: onward() is strict), so a cell is queued at most once.
+class RankQueue {
+ public:
+  void push(int r) {
+    const std::size_t w = static_cast<std::size_t>(r) >> 6;
+    if (w >= bits_.size()) bits_.resize(w + 1, 0);
+    bits_[w] |= std::uint64_t{1} << (r & 63);
+    cursor_ = std::min(cursor_, w);
+  }
+  bool empty() { return top() < 0; }
+  // The smallest waiting rank, -1 when none waits.
+  int top() {
+    for (; cursor_ < bits_.size(); ++cursor_) {
+      if (bits_[cursor_] != 0) return static_cast<int>(64 * cursor_) + std::countr_zero(bits_[cursor_]);
+    }
+    return -1;
+  }
+  void pop() { bits_[cursor_] &= bits_[cursor_] - 1; }  // top() found it in this word
+
+ private:
+  std::vector<std::uint64_t> bits_;
+  std::size_t cursor_ = 0;
+};
+
 // Moves the material of `holding` (cells that just received) outwards until
 // it rests: ring by ring, within a ring from the centre outwards, cells
 // equally far from it all at once (Jacobi: they never give to each other,
@@ -344,16 +369,10 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k,
 void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& holding, Rings* rings,
                    Received* received, GroundState* state) {
   const Grid& g = in.model.grid;
-  // the ranks waiting, smallest first; a cell is queued once: it is only
-  // ever given to by cells visited before it (onward() is strict)
-  std::priority_queue<int, std::vector<int>, std::greater<>> queue;
-  std::vector<char> queued;
+  RankQueue queue;
   auto enqueue = [&](std::int64_t c) {
     const int r = rings->rank(c);
     REPOSE_DEMAND(r >= 0);  // open cells are in rings 1 and on, ranked as their ring grows
-    if (static_cast<std::size_t>(r) >= queued.size()) queued.resize(static_cast<std::size_t>(r) + 1, 0);
-    if (queued[static_cast<std::size_t>(r)]) return;
-    queued[static_cast<std::size_t>(r)] = 1;
     queue.push(r);
   };
   for (const std::int64_t c : holding) enqueue(c);
@@ -363,8 +382,7 @@ void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& hol
     const std::int64_t away = rings->away_of_rank(queue.top());
     rings->at(k + 1);  // its onward neighbours are known
     sheds.clear();
-    while (!queue.empty()) {
-      const int r = queue.top();
+    for (int r = queue.top(); r >= 0; r = queue.top()) {
       if (rings->ring_of_rank(r) != k || rings->away_of_rank(r) != away) break;
       const std::int64_t c = rings->cell_of_rank(r);
       queue.pop();
