@@ -45,8 +45,7 @@ void deposit(const ExcessRouting& in, int i, int j, double amount, Received* rec
 }
 
 void take(const ExcessRouting& in, std::int64_t c, double amount, Received* received, GroundState* state) {
-  const int nx = in.model.grid.nx;
-  state->height.at(cell_i(c, nx), cell_j(c, nx)) -= amount;
+  state->height.heights().data()[c] -= amount;  // row-major: index c is cell (i, j)
   double& r = (*received)[c];
   r = std::max(0.0, r - amount);
 }
@@ -211,10 +210,13 @@ class Rings {
   // rank is visited first. Ring 0 (the covered cells) is never visited.
   int rank(std::int64_t c) const {
     const int nx = in_.model.grid.nx;
-    return rank_of_[slot(cell_i(c, nx), cell_j(c, nx))];
+    return rank(cell_i(c, nx), cell_j(c, nx));
   }
-  // The cell of a rank, its ring and its away().
+  int rank(int i, int j) const { return rank_of_[slot(i, j)]; }
+  // The cell of a rank (index and coordinates), its ring and its away().
   std::int64_t cell_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].cell; }
+  int i_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].i; }
+  int j_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].j; }
   int ring_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].ring; }
   std::int64_t away_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].away; }
 
@@ -254,7 +256,8 @@ class Rings {
     const Grid& g = in_.model.grid;
     const int k = static_cast<int>(rings_.size());
     rings_.emplace_back();
-    const std::vector<std::int64_t> last = rings_[static_cast<std::size_t>(k - 1)];
+    // add() only appends to rings_[k]: the previous ring stays where it is
+    const std::vector<std::int64_t>& last = rings_[static_cast<std::size_t>(k - 1)];
     for (const std::int64_t c : last) {
       const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
       for (const auto& o : kNeighbours) {
@@ -272,8 +275,9 @@ class Rings {
     for (std::size_t m = 0; m < keyed.size(); ++m) {
       const std::int64_t c = keyed[m].second;
       rings_.back()[m] = c;
-      rank_of_[slot(cell_i(c, g.nx), cell_j(c, g.nx))] = static_cast<int>(by_rank_.size());
-      by_rank_.push_back({c, keyed[m].first, k});
+      const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
+      rank_of_[slot(i, j)] = static_cast<int>(by_rank_.size());
+      by_rank_.push_back({c, keyed[m].first, k, i, j});
     }
   }
   const ExcessRouting& in_;
@@ -284,7 +288,7 @@ class Rings {
   std::vector<int> rank_of_;  // over window_; -1: not reached or ring 0
   struct Ranked {
     std::int64_t cell, away;
-    int ring;
+    int ring, i, j;
   };
   std::vector<Ranked> by_rank_;
 };
@@ -305,10 +309,9 @@ bool onward(const Rings& rings, int i, int j, int k, int ni, int nj) {
 }
 
 // What cell c of ring k passes on (amount 0: nothing).
-Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k, const Received& received,
-             const GroundState& state) {
+Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int i, int j, int k,
+             const Received& received, const GroundState& state) {
   const Grid& g = in.model.grid;
-  const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
   const double h = state.height.at(i, j);
   const double* got = received.find(c);
   const double mine = got == nullptr ? 0.0 : *got;
@@ -370,12 +373,11 @@ void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& hol
                    Received* received, GroundState* state) {
   const Grid& g = in.model.grid;
   RankQueue queue;
-  auto enqueue = [&](std::int64_t c) {
-    const int r = rings->rank(c);
+  auto enqueue = [&](int r) {
     REPOSE_DEMAND(r >= 0);  // open cells are in rings 1 and on, ranked as their ring grows
     queue.push(r);
   };
-  for (const std::int64_t c : holding) enqueue(c);
+  for (const std::int64_t c : holding) enqueue(rings->rank(c));
   std::vector<Shed> sheds;
   while (!queue.empty()) {
     const int k = rings->ring_of_rank(queue.top());
@@ -386,7 +388,7 @@ void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& hol
       if (rings->ring_of_rank(r) != k || rings->away_of_rank(r) != away) break;
       const std::int64_t c = rings->cell_of_rank(r);
       queue.pop();
-      const Shed s = shed_of(in, *rings, c, k, *received, *state);
+      const Shed s = shed_of(in, *rings, c, rings->i_of_rank(r), rings->j_of_rank(r), k, *received, *state);
       if (s.amount > 0.0) sheds.push_back(s);
     }
     for (const Shed& s : sheds) {
@@ -394,7 +396,7 @@ void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& hol
       for (int t = 0; t < s.n; ++t) {
         const int ti = s.to[t][0], tj = s.to[t][1];
         deposit(in, ti, tj, s.amount / s.n, received, state);
-        if (g.contains(ti, tj)) enqueue(in.model.cell(ti, tj));
+        if (g.contains(ti, tj)) enqueue(rings->rank(ti, tj));
       }
     }
   }
