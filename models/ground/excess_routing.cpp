@@ -1,7 +1,6 @@
 #include "models/ground/excess_routing.h"
 
 #include <algorithm>
-#include <bit>
 #include <tuple>
 #include <cmath>
 #include <utility>
@@ -10,6 +9,7 @@
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"
+#include "models/ground/rank_queue.h"
 
 namespace repose {
 
@@ -320,10 +320,9 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int i,
   double lowest = std::numeric_limits<double>::infinity();
   // tiers: ahead along a drag; not backwards; any way out (excess_routing.h)
   for (const int tier : {0, 1, 2}) {
-    for (const auto& o : kNeighbours) {
-      if (tier == 0 && in.dir.active && !in.dir.forward(o[0], o[1])) continue;
-      if (tier <= 1 && in.dir.backward(o[0], o[1])) continue;
-      const int ni = i + o[0], nj = j + o[1];
+    for (std::size_t m = 0; m < kNeighbours.size(); ++m) {
+      if (!in.tier_allows[static_cast<std::size_t>(tier)][m]) continue;
+      const int ni = i + kNeighbours[m][0], nj = j + kNeighbours[m][1];
       const bool inside = g.contains(ni, nj);
       if (inside && !onward(rings, i, j, k, ni, nj)) continue;
       lowest = std::min(lowest, inside ? state.height.at(ni, nj) : h - mine);  // beyond the edge: as the edge was
@@ -336,32 +335,6 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int i,
   s.amount = std::min(mine, h - cap);
   return s;
 }
-
-// The ranks waiting to be visited, smallest first: one bit per rank, a
-// cursor that only moves forwards (a cell only ever gives to cells visited
-// after it: onward() is strict), so a cell is queued at most once.
-class RankQueue {
- public:
-  void push(int r) {
-    const std::size_t w = static_cast<std::size_t>(r) >> 6;
-    if (w >= bits_.size()) bits_.resize(w + 1, 0);
-    bits_[w] |= std::uint64_t{1} << (r & 63);
-    cursor_ = std::min(cursor_, w);
-  }
-  bool empty() { return top() < 0; }
-  // The smallest waiting rank, -1 when none waits.
-  int top() {
-    for (; cursor_ < bits_.size(); ++cursor_) {
-      if (bits_[cursor_] != 0) return static_cast<int>(64 * cursor_) + std::countr_zero(bits_[cursor_]);
-    }
-    return -1;
-  }
-  void pop() { bits_[cursor_] &= bits_[cursor_] - 1; }  // top() found it in this word
-
- private:
-  std::vector<std::uint64_t> bits_;
-  std::size_t cursor_ = 0;
-};
 
 // Moves the material of `holding` (cells that just received) outwards until
 // it rests: ring by ring, within a ring from the centre outwards, cells
@@ -483,6 +456,12 @@ double ExcessRouting::limit_at(int i, int j) const {
 void route_excess(ExcessRouting in, Received* received, GroundState* state) {
   find_pockets(&in);
   for (const Material& m : in.params.materials) in.repose_step_m.push_back(in.model.grid.cell_size_m * std::tan(m.repose_angle_rad));
+  for (std::size_t m = 0; m < kNeighbours.size(); ++m) {
+    const int oi = kNeighbours[m][0], oj = kNeighbours[m][1];
+    in.tier_allows[0][m] = !(in.dir.active && !in.dir.forward(oi, oj)) && !in.dir.backward(oi, oj);
+    in.tier_allows[1][m] = !in.dir.backward(oi, oj);
+    in.tier_allows[2][m] = true;
+  }
   move_under_objects(in, received, state);
   heap_on_open_ground(in, received, state);
 }
