@@ -1,6 +1,7 @@
 #include "models/ground/excess_routing.h"
 
 #include <algorithm>
+#include <array>
 #include <tuple>
 #include <cmath>
 #include <utility>
@@ -185,7 +186,7 @@ class Rings {
   }
   // The cells of ring k from the footprint's centre outwards (by away(),
   // then index); empty past the last ring.
-  const std::vector<std::int64_t>& at(int k) {
+  const std::vector<std::array<int, 2>>& at(int k) {
     while (static_cast<int>(rings_.size()) <= k && !rings_.back().empty()) grow();
     return rings_[static_cast<std::size_t>(std::min(k, static_cast<int>(rings_.size()) - 1))];
   }
@@ -250,16 +251,15 @@ class Rings {
     int& r = ring_of_[slot(i, j)];
     if (r != -1) return;
     r = k;
-    rings_[static_cast<std::size_t>(k)].push_back(in_.model.cell(i, j));
+    rings_[static_cast<std::size_t>(k)].push_back({i, j});
   }
   void grow() {
     const Grid& g = in_.model.grid;
     const int k = static_cast<int>(rings_.size());
     rings_.emplace_back();
     // add() only appends to rings_[k]: the previous ring stays where it is
-    const std::vector<std::int64_t>& last = rings_[static_cast<std::size_t>(k - 1)];
-    for (const std::int64_t c : last) {
-      const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
+    const std::vector<std::array<int, 2>>& last = rings_[static_cast<std::size_t>(k - 1)];
+    for (const auto& [i, j] : last) {
       for (const auto& o : kNeighbours) {
         const int ni = i + o[0], nj = j + o[1];
         // a cell already in a ring needs no second look (is_open is the costly part)
@@ -268,22 +268,22 @@ class Rings {
       }
     }
     // by away(), then index: the keys found once, not in every comparison
-    std::vector<std::pair<std::int64_t, std::int64_t>> keyed;
+    std::vector<Ranked> keyed;
     keyed.reserve(rings_.back().size());
-    for (const std::int64_t c : rings_.back()) keyed.emplace_back(away(cell_i(c, g.nx), cell_j(c, g.nx)), c);
-    std::sort(keyed.begin(), keyed.end());
+    for (const auto& [i, j] : rings_.back()) keyed.push_back({in_.model.cell(i, j), away(i, j), k, i, j});
+    std::sort(keyed.begin(), keyed.end(), [](const Ranked& a, const Ranked& b) {
+      return a.away != b.away ? a.away < b.away : a.cell < b.cell;
+    });
     for (std::size_t m = 0; m < keyed.size(); ++m) {
-      const std::int64_t c = keyed[m].second;
-      rings_.back()[m] = c;
-      const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
-      rank_of_[slot(i, j)] = static_cast<int>(by_rank_.size());
-      by_rank_.push_back({c, keyed[m].first, k, i, j});
+      rings_.back()[m] = {keyed[m].i, keyed[m].j};
+      rank_of_[slot(keyed[m].i, keyed[m].j)] = static_cast<int>(by_rank_.size());
+      by_rank_.push_back(keyed[m]);
     }
   }
   const ExcessRouting& in_;
   Footprint window_;
   int margin_ = 0;
-  std::vector<std::vector<std::int64_t>> rings_;
+  std::vector<std::vector<std::array<int, 2>>> rings_;  // the cells (i, j) of each ring
   std::vector<int> ring_of_;  // over window_; -1: not reached
   std::vector<int> rank_of_;  // over window_; -1: not reached or ring 0
   struct Ranked {
