@@ -13,6 +13,9 @@
 //          false, so that only the ground model's collision, displacement
 //          and erosion run: the cost the height-span model adds is the
 //          difference;
+//   ScoopPath: the Scoop case's 199 steps once, for instruction counts:
+//          valgrind --tool=callgrind --toggle-collect='repose::step(repose::HeightSpanModel*'
+//          build/bin/heightspan_benchmark --benchmark_filter=BM_ScoopPath
 //   TipOsmesa: the Tip case with the span maps peeled by OSMesa
 //          (heightspan.span_maps: osmesa) instead of the CPU.
 // Run:
@@ -137,6 +140,10 @@ void BM_Step(benchmark::State& bench) {
 }
 
 BENCHMARK(BM_Step<Case::kScoop>)->Name("BM_ScoopStep")->Unit(benchmark::kMillisecond);
+// The whole scoop path once (199 steps, the same ones every run): a fixed
+// workload for instruction counts (valgrind --tool=callgrind), which a
+// shared machine's load does not change.
+BENCHMARK(BM_Step<Case::kScoop>)->Name("BM_ScoopPath")->Iterations(199)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Step<Case::kScoopGroundPath>)->Name("BM_ScoopGroundPathStep")->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Step<Case::kCarry>)->Name("BM_CarryStep")->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Step<Case::kTip>)->Name("BM_TipStep")->Unit(benchmark::kMillisecond);

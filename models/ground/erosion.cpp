@@ -33,6 +33,14 @@ struct PairRule {
   int passes;
 };
 
+std::vector<PairRule> pair_rules(const Grid& g, const GroundParams& params) {
+  std::vector<PairRule> rules;
+  for (const Material& m : params.materials) {
+    rules.push_back({g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, m.erosion_iterations});
+  }
+  return rules;
+}
+
 // Groups the fluxes listed in `groups` (cell, flux index) by cell and
 // scales each group down to what its cell can take or give,
 // `capacity(cell, first flux of the group)` >= 0. A sorted list, not a hash
@@ -229,16 +237,12 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
   if (model.options.bed_slope_rad > 0.0) return erode_inclined(model, params, ceiling, state);
   ErosionResult result;
   const Grid& g = model.grid;
-  std::vector<PairRule> rules;
+  const std::vector<PairRule> rules = pair_rules(g, params);
   int passes = 0;
-  for (const Material& m : params.materials) {
-    const double tan_theta = std::tan(m.repose_angle_rad);
-    rules.push_back({g.cell_size_m * tan_theta, m.sigma, m.erosion_iterations});
-    passes = std::max(passes, m.erosion_iterations);
-  }
+  for (const PairRule& r : rules) passes = std::max(passes, r.passes);
   const double tolerance_m = kErosionToleranceFraction * g.cell_size_m;
-  HeightField& hf = state->height;
-  double* h = hf.heights().data();
+  const bool one_material = rules.size() == 1;
+  double* h = state->height.heights().data();
   ErosionMemory& memory = state->erosion;
 
   REPOSE_DEMAND(g.cell_count() <= static_cast<std::size_t>(std::numeric_limits<int>::max()));
@@ -261,9 +265,13 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
         const std::int64_t n = model.cell(ni, nj);
         if (n < c && memory.contains(n)) continue;  // each pair once
         ++result.pair_visits;
+        // one material: every pass is its own (p < passes), and the higher
+        // cell's difference h[hi] - h[lo] is |h[c] - h[n]| exactly, so the
+        // pair needs neither the material map nor the comparison first
+        if (one_material && !(std::abs(h[c] - h[n]) - rules[0].max_dh_m > tolerance_m)) continue;
         const bool c_higher = h[c] > h[n];
         const std::int64_t hi = c_higher ? c : n, lo = c_higher ? n : c;
-        const PairRule& rule = rules[model.material_at(hi)];
+        const PairRule& rule = rules[one_material ? 0 : model.material_at(hi)];
         if (p >= rule.passes) continue;
         const double excess = (h[hi] - h[lo]) - rule.max_dh_m;
         if (!(excess > tolerance_m)) continue;

@@ -9,12 +9,6 @@ ErosionMemory::ErosionMemory(std::size_t cell_count, int memory_steps)
   REPOSE_DEMAND(memory_steps >= 0 && memory_steps <= 65000);
 }
 
-void ErosionMemory::touch(std::int64_t cell) {
-  std::uint16_t& r = remaining_[static_cast<std::size_t>(cell)];
-  if (r == 0) cells_.push_back(cell);
-  r = start_;
-}
-
 void ErosionMemory::end_step(const std::function<bool(std::int64_t)>& settled) {
   std::size_t kept = 0;
   for (const std::int64_t c : cells_) {

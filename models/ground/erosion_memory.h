@@ -28,8 +28,13 @@ class ErosionMemory {
   // is surely examined (0: only that step). At most 65000.
   ErosionMemory(std::size_t cell_count, int memory_steps);
 
-  // The cell changed in this step: (re)start its countdown.
-  void touch(std::int64_t cell);
+  // The cell changed in this step: (re)start its countdown. Inline: erosion
+  // touches both cells of every move.
+  void touch(std::int64_t cell) {
+    std::uint16_t& r = remaining_[static_cast<std::size_t>(cell)];
+    if (r == 0) cells_.push_back(cell);
+    r = start_;
+  }
   bool contains(std::int64_t cell) const { return remaining_[static_cast<std::size_t>(cell)] != 0; }
   // Active cells, in the order they joined (deterministic).
   const std::vector<std::int64_t>& cells() const { return cells_; }

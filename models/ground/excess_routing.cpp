@@ -1,8 +1,7 @@
 #include "models/ground/excess_routing.h"
 
 #include <algorithm>
-#include <functional>
-#include <queue>
+#include <array>
 #include <tuple>
 #include <cmath>
 #include <utility>
@@ -11,6 +10,7 @@
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"
+#include "models/ground/rank_queue.h"
 
 namespace repose {
 
@@ -46,8 +46,7 @@ void deposit(const ExcessRouting& in, int i, int j, double amount, Received* rec
 }
 
 void take(const ExcessRouting& in, std::int64_t c, double amount, Received* received, GroundState* state) {
-  const int nx = in.model.grid.nx;
-  state->height.at(cell_i(c, nx), cell_j(c, nx)) -= amount;
+  state->height.heights().data()[c] -= amount;  // row-major: index c is cell (i, j)
   double& r = (*received)[c];
   r = std::max(0.0, r - amount);
 }
@@ -187,7 +186,7 @@ class Rings {
   }
   // The cells of ring k from the footprint's centre outwards (by away(),
   // then index); empty past the last ring.
-  const std::vector<std::int64_t>& at(int k) {
+  const std::vector<std::array<int, 2>>& at(int k) {
     while (static_cast<int>(rings_.size()) <= k && !rings_.back().empty()) grow();
     return rings_[static_cast<std::size_t>(std::min(k, static_cast<int>(rings_.size()) - 1))];
   }
@@ -212,10 +211,13 @@ class Rings {
   // rank is visited first. Ring 0 (the covered cells) is never visited.
   int rank(std::int64_t c) const {
     const int nx = in_.model.grid.nx;
-    return rank_of_[slot(cell_i(c, nx), cell_j(c, nx))];
+    return rank(cell_i(c, nx), cell_j(c, nx));
   }
-  // The cell of a rank, its ring and its away().
+  int rank(int i, int j) const { return rank_of_[slot(i, j)]; }
+  // The cell of a rank (index and coordinates), its ring and its away().
   std::int64_t cell_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].cell; }
+  int i_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].i; }
+  int j_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].j; }
   int ring_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].ring; }
   std::int64_t away_of_rank(int r) const { return by_rank_[static_cast<std::size_t>(r)].away; }
 
@@ -249,15 +251,15 @@ class Rings {
     int& r = ring_of_[slot(i, j)];
     if (r != -1) return;
     r = k;
-    rings_[static_cast<std::size_t>(k)].push_back(in_.model.cell(i, j));
+    rings_[static_cast<std::size_t>(k)].push_back({i, j});
   }
   void grow() {
     const Grid& g = in_.model.grid;
     const int k = static_cast<int>(rings_.size());
     rings_.emplace_back();
-    const std::vector<std::int64_t> last = rings_[static_cast<std::size_t>(k - 1)];
-    for (const std::int64_t c : last) {
-      const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
+    // add() only appends to rings_[k]: the previous ring stays where it is
+    const std::vector<std::array<int, 2>>& last = rings_[static_cast<std::size_t>(k - 1)];
+    for (const auto& [i, j] : last) {
       for (const auto& o : kNeighbours) {
         const int ni = i + o[0], nj = j + o[1];
         // a cell already in a ring needs no second look (is_open is the costly part)
@@ -266,26 +268,27 @@ class Rings {
       }
     }
     // by away(), then index: the keys found once, not in every comparison
-    std::vector<std::pair<std::int64_t, std::int64_t>> keyed;
+    std::vector<Ranked> keyed;
     keyed.reserve(rings_.back().size());
-    for (const std::int64_t c : rings_.back()) keyed.emplace_back(away(cell_i(c, g.nx), cell_j(c, g.nx)), c);
-    std::sort(keyed.begin(), keyed.end());
+    for (const auto& [i, j] : rings_.back()) keyed.push_back({in_.model.cell(i, j), away(i, j), k, i, j});
+    std::sort(keyed.begin(), keyed.end(), [](const Ranked& a, const Ranked& b) {
+      return a.away != b.away ? a.away < b.away : a.cell < b.cell;
+    });
     for (std::size_t m = 0; m < keyed.size(); ++m) {
-      const std::int64_t c = keyed[m].second;
-      rings_.back()[m] = c;
-      rank_of_[slot(cell_i(c, g.nx), cell_j(c, g.nx))] = static_cast<int>(by_rank_.size());
-      by_rank_.push_back({c, keyed[m].first, k});
+      rings_.back()[m] = {keyed[m].i, keyed[m].j};
+      rank_of_[slot(keyed[m].i, keyed[m].j)] = static_cast<int>(by_rank_.size());
+      by_rank_.push_back(keyed[m]);
     }
   }
   const ExcessRouting& in_;
   Footprint window_;
   int margin_ = 0;
-  std::vector<std::vector<std::int64_t>> rings_;
+  std::vector<std::vector<std::array<int, 2>>> rings_;  // the cells (i, j) of each ring
   std::vector<int> ring_of_;  // over window_; -1: not reached
   std::vector<int> rank_of_;  // over window_; -1: not reached or ring 0
   struct Ranked {
     std::int64_t cell, away;
-    int ring;
+    int ring, i, j;
   };
   std::vector<Ranked> by_rank_;
 };
@@ -306,10 +309,9 @@ bool onward(const Rings& rings, int i, int j, int k, int ni, int nj) {
 }
 
 // What cell c of ring k passes on (amount 0: nothing).
-Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k, const Received& received,
-             const GroundState& state) {
+Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int i, int j, int k,
+             const Received& received, const GroundState& state) {
   const Grid& g = in.model.grid;
-  const int i = cell_i(c, g.nx), j = cell_j(c, g.nx);
   const double h = state.height.at(i, j);
   const double* got = received.find(c);
   const double mine = got == nullptr ? 0.0 : *got;
@@ -318,10 +320,9 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k,
   double lowest = std::numeric_limits<double>::infinity();
   // tiers: ahead along a drag; not backwards; any way out (excess_routing.h)
   for (const int tier : {0, 1, 2}) {
-    for (const auto& o : kNeighbours) {
-      if (tier == 0 && in.dir.active && !in.dir.forward(o[0], o[1])) continue;
-      if (tier <= 1 && in.dir.backward(o[0], o[1])) continue;
-      const int ni = i + o[0], nj = j + o[1];
+    for (std::size_t m = 0; m < kNeighbours.size(); ++m) {
+      if (!in.tier_allows[static_cast<std::size_t>(tier)][m]) continue;
+      const int ni = i + kNeighbours[m][0], nj = j + kNeighbours[m][1];
       const bool inside = g.contains(ni, nj);
       if (inside && !onward(rings, i, j, k, ni, nj)) continue;
       lowest = std::min(lowest, inside ? state.height.at(ni, nj) : h - mine);  // beyond the edge: as the edge was
@@ -344,31 +345,23 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int k,
 void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& holding, Rings* rings,
                    Received* received, GroundState* state) {
   const Grid& g = in.model.grid;
-  // the ranks waiting, smallest first; a cell is queued once: it is only
-  // ever given to by cells visited before it (onward() is strict)
-  std::priority_queue<int, std::vector<int>, std::greater<>> queue;
-  std::vector<char> queued;
-  auto enqueue = [&](std::int64_t c) {
-    const int r = rings->rank(c);
+  RankQueue queue;
+  auto enqueue = [&](int r) {
     REPOSE_DEMAND(r >= 0);  // open cells are in rings 1 and on, ranked as their ring grows
-    if (static_cast<std::size_t>(r) >= queued.size()) queued.resize(static_cast<std::size_t>(r) + 1, 0);
-    if (queued[static_cast<std::size_t>(r)]) return;
-    queued[static_cast<std::size_t>(r)] = 1;
     queue.push(r);
   };
-  for (const std::int64_t c : holding) enqueue(c);
+  for (const std::int64_t c : holding) enqueue(rings->rank(c));
   std::vector<Shed> sheds;
   while (!queue.empty()) {
     const int k = rings->ring_of_rank(queue.top());
     const std::int64_t away = rings->away_of_rank(queue.top());
     rings->at(k + 1);  // its onward neighbours are known
     sheds.clear();
-    while (!queue.empty()) {
-      const int r = queue.top();
+    for (int r = queue.top(); r >= 0; r = queue.top()) {
       if (rings->ring_of_rank(r) != k || rings->away_of_rank(r) != away) break;
       const std::int64_t c = rings->cell_of_rank(r);
       queue.pop();
-      const Shed s = shed_of(in, *rings, c, k, *received, *state);
+      const Shed s = shed_of(in, *rings, c, rings->i_of_rank(r), rings->j_of_rank(r), k, *received, *state);
       if (s.amount > 0.0) sheds.push_back(s);
     }
     for (const Shed& s : sheds) {
@@ -376,7 +369,7 @@ void shed_outwards(const ExcessRouting& in, const std::vector<std::int64_t>& hol
       for (int t = 0; t < s.n; ++t) {
         const int ti = s.to[t][0], tj = s.to[t][1];
         deposit(in, ti, tj, s.amount / s.n, received, state);
-        if (g.contains(ti, tj)) enqueue(in.model.cell(ti, tj));
+        if (g.contains(ti, tj)) enqueue(rings->rank(ti, tj));
       }
     }
   }
@@ -463,6 +456,12 @@ double ExcessRouting::limit_at(int i, int j) const {
 void route_excess(ExcessRouting in, Received* received, GroundState* state) {
   find_pockets(&in);
   for (const Material& m : in.params.materials) in.repose_step_m.push_back(in.model.grid.cell_size_m * std::tan(m.repose_angle_rad));
+  for (std::size_t m = 0; m < kNeighbours.size(); ++m) {
+    const int oi = kNeighbours[m][0], oj = kNeighbours[m][1];
+    in.tier_allows[0][m] = !(in.dir.active && !in.dir.forward(oi, oj)) && !in.dir.backward(oi, oj);
+    in.tier_allows[1][m] = !in.dir.backward(oi, oj);
+    in.tier_allows[2][m] = true;
+  }
   move_under_objects(in, received, state);
   heap_on_open_ground(in, received, state);
 }

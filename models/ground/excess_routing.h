@@ -43,6 +43,7 @@
 // backwards while dragging, or open ground hemmed in by objects whose
 // footprints do not touch) stays where it is.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -70,6 +71,9 @@ struct ExcessRouting {
   Footprint window{};  // the footprint and one ring around it
   std::vector<char> pocket{};
   std::vector<double> repose_step_m{};  // per material: cell_size * tan(theta)
+  // Whether a cell on open ground may shed towards kNeighbours[m] in tier t
+  // (0: ahead along a drag; 1: not backwards; 2: any way), found once.
+  std::array<std::array<bool, 4>, 3> tier_allows{};
   // How high the cell may stand before its material must move on: the
   // ceiling under an object (the base where that is lower), the crest in a
   // pocket, +inf on open ground.

@@ -114,7 +114,8 @@ void add_ground_fluxes(const Columns& cols, const PassRule& rule, int i, int j, 
   if (n > 0 && g > cols.spans(i, j)[0].bottom_m) return;  // under the object: not exposed
   const Surface from{Kind::kGround, cols.local(i, j), g, kInf};
   for (const auto& o : kNeighbours) {
-    if (cols.count(i + o[0], j + o[1]) == 0) continue;
+    // only a span whose top is at or below g can take it: none when the lowest one's is above
+    if (cols.count(i + o[0], j + o[1]) == 0 || cols.spans(i + o[0], j + o[1])[0].top_m > g) continue;
     Surface to;
     if (!cols.landing(i + o[0], j + o[1], g, &to) || to.kind != Kind::kSpan) continue;
     const double excess = g - to.level_m - rule.max_dh_m;
