@@ -161,6 +161,17 @@ std::vector<double> from_unit(const PaperFitSpec& spec, const std::vector<double
   return x;
 }
 
+// One line per evaluated point on stderr (parameters, then residuals), so
+// that a long fit stopped early still shows where it went.
+void log_point(const std::vector<double>& x, const std::vector<double>& r) {
+  std::string line = "point";
+  for (const double v : x) line += fmt::format(" {:.6g}", v);
+  line += " residuals";
+  for (const double v : r) line += fmt::format(" {:+.5f}", v);
+  std::fprintf(stderr, "%s\n", line.c_str());
+  std::fflush(stderr);
+}
+
 struct Start {
   std::vector<double> x;
   double cost = 0.0;
@@ -222,7 +233,11 @@ struct Fitted {
 Fitted fit(const PaperFitSpec& spec, const PaperFit& sheet) {
   const CalibrationCost::Evaluator evaluate = [&](const std::vector<std::vector<double>>& points) {
     std::vector<std::vector<double>> r;
-    for (const auto& u : points) r.push_back(sheet.residuals(from_unit(spec, u)));
+    for (const auto& u : points) {
+      const std::vector<double> x = from_unit(spec, u);
+      r.push_back(sheet.residuals(x));
+      log_point(x, r.back());
+    }
     return r;
   };
   std::vector<double> step, initial;

@@ -157,23 +157,28 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
   return torn;
 }
 
-double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state) {
+ElasticEnergy elastic_energy(const SheetModel& model, const SheetParams& params, const SheetState& state) {
   const SpringConstants k = spring_constants(model, params);
   const Eigen::Matrix3Xd& x = state.positions;
-  double energy = 0.0;
+  ElasticEnergy energy;
   for (int c = 0; c < model.cell_count(); ++c) {
     if (!state.intact(c)) continue;
     for (const CellSpring& s : cell_springs(model, c)) {
       const double stretch = (x.col(s.b) - x.col(s.a)).norm() - s.rest_length_m;
-      energy += 0.5 * spring_constant_n_per_m(k, s, model.cell_stiffness[c]) * stretch * stretch;
+      const double e = 0.5 * spring_constant_n_per_m(k, s, model.cell_stiffness[c]) * stretch * stretch;
+      (s.diagonal ? energy.shear_j : energy.structural_j) += e;
     }
   }
   for (const BendingTerm& t : model.bending) {
     if (bending_acts(t, state)) {
-      energy += 0.5 * k.bending_n_per_m * t.weight * (x.col(t.a) - 2.0 * x.col(t.b) + x.col(t.c)).squaredNorm();
+      energy.bending_j += 0.5 * k.bending_n_per_m * t.weight * (x.col(t.a) - 2.0 * x.col(t.b) + x.col(t.c)).squaredNorm();
     }
   }
   return energy;
+}
+
+double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state) {
+  return elastic_energy(model, params, state).total_j();
 }
 
 double kinetic_energy(const SheetModel& model, const SheetState& state) {

@@ -63,7 +63,22 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
 // rule both tear_and_internal_forces and tearing.h apply.
 bool cell_overstretched(const SheetModel& model, const SheetParams& params, const SheetState& state, int c);
 
-// Elastic energy of the intact springs and acting bending terms (J).
+// The elastic energy (J) split by kind: the structural springs (the cells'
+// edges: stretching along the mesh lines), the shear springs (their
+// diagonals) and the acting bending terms (out-of-plane folding). The
+// bending part of a sheet bent to curvature kappa over area A tends to
+// 1/2 D kappa^2 A whatever the cell size (k_b = D / h^2 on a second
+// difference ~ kappa h^2, one term per h^2 of sheet per mesh direction).
+struct ElasticEnergy {
+  double structural_j = 0.0;
+  double shear_j = 0.0;
+  double bending_j = 0.0;
+  double total_j() const { return structural_j + shear_j + bending_j; }
+};
+ElasticEnergy elastic_energy(const SheetModel& model, const SheetParams& params, const SheetState& state);
+
+// Elastic energy of the intact springs and acting bending terms (J):
+// elastic_energy(...).total_j().
 double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state);
 // Kinetic energy of all vertices (J).
 double kinetic_energy(const SheetModel& model, const SheetState& state);

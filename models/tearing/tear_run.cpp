@@ -84,7 +84,8 @@ void pull(const SheetModel& model, const TearRunOptions& options, const Progress
 
 EnergyLedger energy_ledger(const SheetModel& model, const SheetParams& params, const SheetState& state) {
   EnergyLedger e;
-  e.stored_j = potential_energy(model, params, state);
+  e.stored = elastic_energy(model, params, state);
+  e.stored_j = e.stored.total_j();
   const Eigen::Vector3d& g = model.spec.gravity_m_per_s2;
   for (int v = 0; v < model.vertex_count(); ++v) {
     for (int a = 0; a < 3; ++a) {

@@ -8,6 +8,7 @@
 
 #include "models/core/base/progress.h"
 #include "models/tearing/implicit_integrator.h"
+#include "models/tearing/sheet_forces.h"
 #include "models/tearing/sheet_model.h"
 #include "models/tearing/sheet_params.h"
 #include "models/tearing/sheet_state.h"
@@ -46,6 +47,7 @@ struct TearRunOptions {
 // damping then sits in the residual.
 struct EnergyLedger {
   double stored_j = 0.0;     // elastic, intact springs and acting bending terms
+  ElasticEnergy stored;      // stored_j by kind (its total_j() is stored_j)
   double kinetic_j = 0.0;    // free degrees of freedom
   double gravity_j = 0.0;    // work gravity did on them
   double damping_j = 0.0;    // SheetState::damping_loss_j

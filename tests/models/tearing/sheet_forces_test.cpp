@@ -4,6 +4,8 @@
 #include "models/tearing/sheet_forces.h"
 
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +49,48 @@ TEST(SheetForces, WithIsotropicTearEnergyEachSpringTearsAtTheSameEnergy) {
   EXPECT_TRUE(tears(true, 1.001 * along, 0.0));
   EXPECT_FALSE(tears(true, 0.0, 0.999 * across));
   EXPECT_TRUE(tears(true, 0.0, 1.001 * across));
+}
+
+// Stretched affinely along x, a uniform sheet stores energy in its edges
+// along x (structural) and its diagonals (shear) as the springs' constants
+// say, none in bending (the second difference of an affine map is 0), and
+// the parts sum to the potential energy.
+TEST(SheetForces, TheElasticEnergySplitsAnAffineStretchIntoStructuralAndShear) {
+  const SheetModel model = uniform_sheet(free_sheet_spec(0.008, 8));
+  const SheetParams params;
+  const double strain = 0.01, h = model.cell_size_m, cells = model.cell_count();
+  const ElasticEnergy e = elastic_energy(model, params, affinely_stretched(model, strain, 0.0));
+  const double k_edge = 0.75 * params.stiffness_n_per_m, k_diagonal = 0.375 * params.stiffness_n_per_m;
+  // per cell: two half edges along x stretched by strain h, two diagonals
+  const double diagonal_stretch = h * std::sqrt((1.0 + strain) * (1.0 + strain) + 1.0) - h * std::numbers::sqrt2;
+  EXPECT_NEAR(e.structural_j, cells * 0.5 * k_edge * strain * strain * h * h, 1e-12 * e.structural_j);
+  EXPECT_NEAR(e.shear_j, cells * k_diagonal * diagonal_stretch * diagonal_stretch, 1e-9 * e.shear_j);
+  EXPECT_LT(std::abs(e.bending_j), 1e-12 * e.total_j());
+  EXPECT_NEAR(e.total_j(), potential_energy(model, params, affinely_stretched(model, strain, 0.0)),
+              1e-14 * e.total_j());
+}
+
+// The bending energy of a sheet rolled to curvature 1 / R (lengths along
+// the roll kept) is the plate's 1/2 D kappa^2 A whatever the mesh: the
+// bending terms' constant D / h^2 scales with the cell size so that D does
+// not (a constant fixed per term would quadruple the energy from 20 to 40
+// cells a side).
+TEST(SheetForces, ARolledSheetStoresThePlatesBendingEnergyAtAnyMesh) {
+  const double width = 0.1, radius = 0.1;
+  std::vector<double> bending;
+  for (const int cells : {20, 40}) {
+    const SheetModel model = uniform_sheet(free_sheet_spec(width, cells));
+    SheetState state = make_sheet_state(model);
+    for (int v = 0; v < model.vertex_count(); ++v) {
+      const double x = model.rest_positions(0, v);
+      state.positions(0, v) = radius * std::sin(x / radius);
+      state.positions(2, v) = radius * (1.0 - std::cos(x / radius));
+    }
+    const double plate = 0.5 * model.spec.bending_stiffness_n_m * width * width / (radius * radius);
+    bending.push_back(elastic_energy(model, SheetParams{}, state).bending_j);
+    EXPECT_NEAR(bending.back(), plate, 0.01 * plate) << cells << " cells";
+  }
+  EXPECT_NEAR(bending[1], bending[0], 0.005 * bending[0]);
 }
 
 }  // namespace

@@ -233,6 +233,11 @@ TEST(TearRun, TheEnergyLedgerAccountsForTheGripsWork) {
   EXPECT_GT(e.kinetic_j, 0.0);
   EXPECT_GT(e.damping_j, 0.1 * run.grip_work_j);  // 2000 /s of damping: a large share
   EXPECT_GT(e.fracture_j, 0.0);
+  // the stored energy by kind: the twisted flaps both stretch and fold
+  EXPECT_GT(e.stored.structural_j, 0.0);
+  EXPECT_GT(e.stored.shear_j, 0.0);
+  EXPECT_GT(e.stored.bending_j, 0.0);
+  EXPECT_NEAR(e.stored.total_j(), e.stored_j, 1e-14 * e.stored_j);
   EXPECT_EQ(e.gravity_j, 0.0);  // free_sheet_spec has no gravity
   EXPECT_LT(std::abs(e.residual_j), 0.02 * run.grip_work_j)
       << "stored " << e.stored_j << " kinetic " << e.kinetic_j << " damping " << e.damping_j << " fracture "
