@@ -65,6 +65,34 @@ Eigen::VectorXd conjugate_gradients(const Eigen::VectorXd& b, double tolerance, 
   return x;
 }
 
+// The same recurrences with every vector in *work (no allocation once the
+// vectors have their size); product(p, &ap), precondition(r, &z); the
+// solution in work->x.
+template <class Product, class Precondition>
+void conjugate_gradients(const Eigen::VectorXd& b, double tolerance, int max_iterations, Product&& product,
+                         Precondition&& precondition, ImplicitIntegrator::SolveWork* work, int* iterations) {
+  ImplicitIntegrator::SolveWork& w = *work;
+  w.x.setZero(b.size());
+  *iterations = 0;
+  const double threshold = tolerance * tolerance * b.squaredNorm();
+  if (threshold == 0.0) return;
+  w.r = b;
+  precondition(w.r, &w.p);
+  double rz = w.r.dot(w.p);
+  while (*iterations < max_iterations) {
+    product(w.p, &w.ap);
+    const double alpha = rz / w.p.dot(w.ap);
+    w.x += alpha * w.p;
+    w.r -= alpha * w.ap;
+    ++*iterations;
+    if (w.r.squaredNorm() < threshold) break;
+    precondition(w.r, &w.z);
+    const double rz_new = w.r.dot(w.z);
+    w.p = w.z + (rz_new / rz) * w.p;
+    rz = rz_new;
+  }
+}
+
 // Walks the stiffness -K (positive) of the intact springs and acting
 // bending terms: spring(first, a, b, h, axial) per spring, whose blocks are
 // (a, a) = (b, b) = h, (a, b) = (b, a) = -h (axial = k n n^T, the part its
@@ -220,7 +248,7 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
   }
 }
 
-Eigen::VectorXd ImplicitIntegrator::solve(const Eigen::VectorXd& rhs) {
+void ImplicitIntegrator::solve(const Eigen::VectorXd& rhs) {
   const int max_iterations = std::max(1000, 2 * free_count_);
   // no warm start: the last step's dv left a residual of 0.5-1.8 |b| on
   // the seed's twist at 200 x 200 (measured), no better than zero
@@ -229,10 +257,10 @@ Eigen::VectorXd ImplicitIntegrator::solve(const Eigen::VectorXd& rhs) {
     cg.setTolerance(solver_.relative_tolerance);
     cg.setMaxIterations(max_iterations);
     cg.compute(system_);
-    const Eigen::VectorXd dv = cg.solve(rhs);
-    REPOSE_DEMAND(cg.info() == Eigen::Success && dv.allFinite());
+    dv_ = cg.solve(rhs);
+    REPOSE_DEMAND(cg.info() == Eigen::Success && dv_.allFinite());
     last_iterations_ = static_cast<int>(cg.iterations());
-    return dv;
+    return;
   }
   const bool rebuilt = rebuild_due();
   if (rebuilt) {
@@ -243,26 +271,35 @@ Eigen::VectorXd ImplicitIntegrator::solve(const Eigen::VectorXd& rhs) {
     multigrid_->update_fine(system_);
   }
   ++steps_since_rebuild_;
-  Eigen::VectorXd dv;
-  if (solver_.single_precision_products) {
+  if (solver_.single_precision_products && solver_.multigrid.smoother == SheetMultigridOptions::Smoother::kGaussSeidel) {
+    // in the fine blocks' vectors throughout (held axes 0)
     const VertexBlockMatrix& blocks = multigrid_->fine_blocks();
-    dv = conjugate_gradients(
+    blocks.to_blocks(rhs, &work_.b);
+    conjugate_gradients(
+        work_.b, solver_.relative_tolerance, max_iterations,
+        [&](const Eigen::VectorXd& p, Eigen::VectorXd* ap) { blocks.product(p, ap); },
+        [&](const Eigen::VectorXd& r, Eigen::VectorXd* z) { multigrid_->apply_blocks(r, z); }, &work_,
+        &last_iterations_);
+    blocks.from_blocks(work_.x, &dv_);
+    REPOSE_DEMAND(last_iterations_ < max_iterations && dv_.allFinite());
+  } else if (solver_.single_precision_products) {
+    const VertexBlockMatrix& blocks = multigrid_->fine_blocks();
+    dv_ = conjugate_gradients(
         rhs, solver_.relative_tolerance, max_iterations,
         [&](const Eigen::VectorXd& p) { return blocks.from_blocks(blocks.product(blocks.to_blocks(p))); },
         [&](const Eigen::VectorXd& r) { return multigrid_->apply(system_, r); }, &last_iterations_);
-    REPOSE_DEMAND(last_iterations_ < max_iterations && dv.allFinite());
+    REPOSE_DEMAND(last_iterations_ < max_iterations && dv_.allFinite());
   } else {
     Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, MultigridPreconditioner> cg;
     cg.setTolerance(solver_.relative_tolerance);
     cg.setMaxIterations(max_iterations);
     cg.compute(system_);
     cg.preconditioner().use(multigrid_.get(), &system_);
-    dv = cg.solve(rhs);
-    REPOSE_DEMAND(cg.info() == Eigen::Success && dv.allFinite());
+    dv_ = cg.solve(rhs);
+    REPOSE_DEMAND(cg.info() == Eigen::Success && dv_.allFinite());
     last_iterations_ = static_cast<int>(cg.iterations());
   }
   if (rebuilt) iterations_after_rebuild_ = last_iterations_;
-  return dv;
 }
 
 bool ImplicitIntegrator::rebuild_due() const {
@@ -336,7 +373,8 @@ int ImplicitIntegrator::step(SheetState* state) {
   const double t_next = state->time_s + dt_;
   const Eigen::Vector3d& g = model_.spec.gravity_m_per_s2;
   // the held axes' velocity change is known
-  Eigen::VectorXd dv_all = Eigen::VectorXd::Zero(3 * model_.vertex_count());
+  Eigen::VectorXd& dv_all = dv_all_;
+  dv_all.setZero(3 * model_.vertex_count());
   for (int v = 0; v < model_.vertex_count(); ++v) {
     const int grip = model_.grip_of_vertex[static_cast<std::size_t>(v)];
     for (int a = 0; a < 3; ++a) {
@@ -344,10 +382,10 @@ int ImplicitIntegrator::step(SheetState* state) {
       dv_all[3 * v + a] = model_.spec.grips[static_cast<std::size_t>(grip)].velocity_m_per_s[a] - state->velocities(a, v);
     }
   }
-  Eigen::VectorXd rhs;
-  assemble(*state, dv_all, &rhs);
+  assemble(*state, dv_all, &rhs_);
   // the system is symmetric positive definite
-  const Eigen::VectorXd dv = solve(rhs);
+  solve(rhs_);
+  const Eigen::VectorXd& dv = dv_;
   state->grip_force_n.setZero();
   for (int v = 0; v < model_.vertex_count(); ++v) {
     const int grip = model_.grip_of_vertex[static_cast<std::size_t>(v)];

@@ -143,6 +143,12 @@ class ImplicitIntegrator {
   // Times the multigrid hierarchy was built.
   int multigrid_rebuilds() const { return rebuilds_; }
 
+  // The conjugate gradients' vectors, kept from step to step (no
+  // allocation once sized): b the right-hand side, x the solution.
+  struct SolveWork {
+    Eigen::VectorXd b, x, r, p, z, ap;
+  };
+
  private:
   // The system (into system_) over the free degrees of freedom; dv_all
   // holds the held ones.
@@ -151,8 +157,8 @@ class ImplicitIntegrator {
   void add_stiffness(const SheetState& state, Assembly* assembly) const;
   // Whether this step's solve rebuilds the multigrid hierarchy.
   bool rebuild_due() const;
-  // dv over the free degrees of freedom: system_ dv = rhs.
-  Eigen::VectorXd solve(const Eigen::VectorXd& rhs);
+  // dv over the free degrees of freedom (into dv_): system_ dv = rhs.
+  void solve(const Eigen::VectorXd& rhs);
 
   const SheetModel& model_;
   const SheetParams& params_;
@@ -176,6 +182,10 @@ class ImplicitIntegrator {
   bool assembled_in_blocks_ = false;
   std::vector<int> block_row_;    // per vertex: its block row in the fine blocks, or -1
   std::vector<int> block_index_;  // per stiffness block: its index in the fine blocks, or -1 (filled once)
+  // the step's vectors, kept to spare their allocation: the held axes'
+  // velocity change (all axes), the right-hand side and dv (free rows)
+  Eigen::VectorXd dv_all_, rhs_, dv_;
+  SolveWork work_;
 };
 
 }  // namespace repose

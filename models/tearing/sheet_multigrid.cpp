@@ -58,6 +58,8 @@ Eigen::VectorXd inverse_l1_rows(const Eigen::SparseMatrix<double>& a) {
 struct SheetMultigrid::Level {
   Eigen::SparseMatrix<double> interpolation;  // finer x this level's unknowns
   Eigen::SparseMatrix<double> restriction;    // its transpose
+  // the same two between the finer level's block vectors and this one's
+  Eigen::SparseMatrix<double> block_interpolation, block_restriction;
   Eigen::SparseMatrix<double> matrix;         // P^T A_finer P
   VertexBlockMatrix blocks;                   // matrix in float 3 x 3 blocks (Gauss-Seidel)
   Eigen::VectorXd inverse_l1;                 // inverse_l1_rows(matrix)
@@ -209,6 +211,24 @@ std::pair<Eigen::SparseMatrix<double>, Grid> interpolation_from_coarse(const Gri
   return {std::move(p), std::move(coarse)};
 }
 
+// p (finer rows x coarse rows) between the two levels' block vectors.
+Eigen::SparseMatrix<double> between_blocks(const Eigen::SparseMatrix<double>& p, const VertexBlockMatrix& finer,
+                                           const VertexBlockMatrix& coarse) {
+  const std::vector<int> row_place = finer.block_place_of_rows(), col_place = coarse.block_place_of_rows();
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(static_cast<std::size_t>(p.nonZeros()));
+  for (int c = 0; c < p.outerSize(); ++c) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(p, c); it; ++it) {
+      triplets.emplace_back(row_place[static_cast<std::size_t>(it.row())], col_place[static_cast<std::size_t>(c)],
+                            it.value());
+    }
+  }
+  Eigen::SparseMatrix<double> blocks(3 * finer.block_rows(), 3 * coarse.block_rows());
+  blocks.setFromTriplets(triplets.begin(), triplets.end());
+  blocks.makeCompressed();
+  return blocks;
+}
+
 }  // namespace
 
 void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
@@ -227,10 +247,14 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
     level->matrix.makeCompressed();
     level->blocks = VertexBlockMatrix(level->matrix, level->grid.index);
     level->inverse_l1 = inverse_l1_rows(level->matrix);
+    const VertexBlockMatrix& finer = levels_.empty() ? fine_blocks_ : levels_.back()->blocks;
+    level->block_interpolation = between_blocks(level->interpolation, finer, level->blocks);
+    level->block_restriction = level->block_interpolation.transpose();
     grid = level->grid;
     levels_.push_back(std::move(level));
     matrix = &levels_.back()->matrix;
   }
+  work_.assign(levels_.size(), Work{});
   coarsest_ = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>(*matrix);
   REPOSE_DEMAND(coarsest_->info() == Eigen::Success);
 }
@@ -241,7 +265,38 @@ int SheetMultigrid::level_count() const { return 1 + static_cast<int>(levels_.si
 
 Eigen::VectorXd SheetMultigrid::apply(const Eigen::SparseMatrix<double>& system, const Eigen::VectorXd& r) const {
   REPOSE_DEMAND(built() && system.rows() == free_count_ && r.size() == free_count_);
-  return cycle(0, system, r);
+  if (options_.smoother == SheetMultigridOptions::Smoother::kL1Jacobi) return cycle(0, system, r);
+  Eigen::VectorXd z;
+  apply_blocks(fine_blocks_.to_blocks(r), &z);
+  return fine_blocks_.from_blocks(z);
+}
+
+void SheetMultigrid::apply_blocks(const Eigen::VectorXd& r, Eigen::VectorXd* z) const {
+  REPOSE_DEMAND(built() && options_.smoother == SheetMultigridOptions::Smoother::kGaussSeidel &&
+                r.size() == 3 * fine_blocks_.block_rows() && z != &r);
+  cycle_blocks(0, r, z);
+}
+
+void SheetMultigrid::cycle_blocks(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x) const {
+  const VertexBlockMatrix& blocks = level == 0 ? fine_blocks_ : levels_[level - 1]->blocks;
+  if (level == levels_.size()) {
+    blocks.to_blocks(coarsest_->solve(blocks.from_blocks(b)), x);
+    return;
+  }
+  const Level& coarse = *levels_[level];
+  Work& work = work_[level];
+  x->setZero(b.size());
+  for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, true, s == 0, x);
+  // one sweep from zero leaves a residual that only the upper blocks make
+  if (options_.smoothing_sweeps == 1) {
+    blocks.residual_after_sweep_from_zero(*x, &work.residual);
+  } else {
+    blocks.residual(b, *x, &work.residual);
+  }
+  work.coarse_b.noalias() = coarse.block_restriction * work.residual;
+  cycle_blocks(level + 1, work.coarse_b, &work.coarse_x);
+  x->noalias() += coarse.block_interpolation * work.coarse_x;
+  for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, false, false, x);
 }
 
 void SheetMultigrid::update_fine(const Eigen::SparseMatrix<double>& system) {
@@ -254,18 +309,6 @@ Eigen::VectorXd SheetMultigrid::cycle(std::size_t level, const Eigen::SparseMatr
                                       const Eigen::VectorXd& r) const {
   if (level == levels_.size()) return coarsest_->solve(r);
   const Level& coarse = *levels_[level];
-  if (options_.smoother == SheetMultigridOptions::Smoother::kGaussSeidel) {
-    const VertexBlockMatrix& blocks = level == 0 ? fine_blocks_ : levels_[level - 1]->blocks;
-    const Eigen::VectorXd b = blocks.to_blocks(r);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
-    for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, true, s == 0, &x);
-    // one sweep from zero leaves a residual that only the upper blocks make
-    const Eigen::VectorXd residual = blocks.from_blocks(options_.smoothing_sweeps == 1 ? blocks.residual_after_sweep_from_zero(x)
-                                                                                     : blocks.residual(b, x));
-    x += blocks.to_blocks(coarse.interpolation * cycle(level + 1, coarse.matrix, coarse.restriction * residual));
-    for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, false, false, &x);
-    return blocks.from_blocks(x);
-  }
   const Eigen::VectorXd& inverse_l1 = level == 0 ? fine_inverse_l1_ : levels_[level - 1]->inverse_l1;
   Eigen::VectorXd x = inverse_l1.cwiseProduct(r);  // the first sweep from x = 0
   Eigen::VectorXd residual = r - matrix * x;

@@ -103,10 +103,23 @@ class SheetMultigrid {
   // smooths with its block copy made there, l1-Jacobi with `system`
   // itself). Requires built().
   Eigen::VectorXd apply(const Eigen::SparseMatrix<double>& system, const Eigen::VectorXd& r) const;
+  // The same V-cycle with the Gauss-Seidel smoother, r and *z fine block
+  // vectors (fine_blocks()), z distinct from r: the levels' vectors live in
+  // block form throughout (interpolation between block vectors) in
+  // workspaces kept here, so a cycle allocates nothing but the coarsest
+  // level's small vectors. apply() with Gauss-Seidel is this one between
+  // to_blocks and from_blocks. Not for concurrent use. Requires built().
+  void apply_blocks(const Eigen::VectorXd& r, Eigen::VectorXd* z) const;
 
  private:
   struct Level;
+  // per level above the coarsest: its coarse right-hand side, solution and
+  // fine residual (block vectors)
+  struct Work {
+    Eigen::VectorXd residual, coarse_b, coarse_x;
+  };
   Eigen::VectorXd cycle(std::size_t level, const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& r) const;
+  void cycle_blocks(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x) const;
 
   SheetMultigridOptions options_;
   // per level below the fine one: its interpolation from there, operator, grid
@@ -116,6 +129,7 @@ class SheetMultigrid {
   int vertices_x_ = 0, vertices_y_ = 0, free_count_ = 0;
   std::vector<int> free_index_;
   VertexBlockMatrix fine_blocks_;  // the fine matrix last given, float 3 x 3 blocks (Gauss-Seidel)
+  mutable std::vector<Work> work_;  // per level but the coarsest (apply_blocks)
   Eigen::VectorXd fine_inverse_l1_;
 };
 

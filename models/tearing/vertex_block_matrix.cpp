@@ -110,19 +110,39 @@ void VertexBlockMatrix::invert_diagonal() {
 }
 
 Eigen::VectorXd VertexBlockMatrix::to_blocks(const Eigen::VectorXd& x) const {
-  Eigen::VectorXd blocks(static_cast<Eigen::Index>(row_of_.size()));
-  for (std::size_t k = 0; k < row_of_.size(); ++k) {
-    blocks[static_cast<Eigen::Index>(k)] = row_of_[k] >= 0 ? x[row_of_[k]] : 0.0;
-  }
+  Eigen::VectorXd blocks;
+  to_blocks(x, &blocks);
   return blocks;
 }
 
 Eigen::VectorXd VertexBlockMatrix::from_blocks(const Eigen::VectorXd& blocks) const {
-  Eigen::VectorXd x(scalar_rows_);
+  Eigen::VectorXd x;
+  from_blocks(blocks, &x);
+  return x;
+}
+
+void VertexBlockMatrix::to_blocks(const Eigen::VectorXd& x, Eigen::VectorXd* blocks_out) const {
+  Eigen::VectorXd& blocks = *blocks_out;
+  blocks.resize(static_cast<Eigen::Index>(row_of_.size()));
+  for (std::size_t k = 0; k < row_of_.size(); ++k) {
+    blocks[static_cast<Eigen::Index>(k)] = row_of_[k] >= 0 ? x[row_of_[k]] : 0.0;
+  }
+}
+
+void VertexBlockMatrix::from_blocks(const Eigen::VectorXd& blocks, Eigen::VectorXd* x_out) const {
+  Eigen::VectorXd& x = *x_out;
+  x.resize(scalar_rows_);
   for (std::size_t k = 0; k < row_of_.size(); ++k) {
     if (row_of_[k] >= 0) x[row_of_[k]] = blocks[static_cast<Eigen::Index>(k)];
   }
-  return x;
+}
+
+std::vector<int> VertexBlockMatrix::block_place_of_rows() const {
+  std::vector<int> place(static_cast<std::size_t>(scalar_rows_), -1);
+  for (std::size_t k = 0; k < row_of_.size(); ++k) {
+    if (row_of_[k] >= 0) place[static_cast<std::size_t>(row_of_[k])] = static_cast<int>(k);
+  }
+  return place;
 }
 
 namespace {
@@ -182,7 +202,20 @@ void VertexBlockMatrix::gauss_seidel_sweep(const Eigen::VectorXd& b, bool forwar
 }
 
 Eigen::VectorXd VertexBlockMatrix::residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x) const {
-  Eigen::VectorXd r(b.size());
+  Eigen::VectorXd r;
+  residual(b, x, &r);
+  return r;
+}
+
+Eigen::VectorXd VertexBlockMatrix::residual_after_sweep_from_zero(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd r;
+  residual_after_sweep_from_zero(x, &r);
+  return r;
+}
+
+void VertexBlockMatrix::residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x, Eigen::VectorXd* r_out) const {
+  Eigen::VectorXd& r = *r_out;
+  r.resize(b.size());
   const int rows = block_rows();
   for (int i = 0; i < rows; ++i) {
     double s[3] = {b[3 * i], b[3 * i + 1], b[3 * i + 2]};
@@ -190,11 +223,11 @@ Eigen::VectorXd VertexBlockMatrix::residual(const Eigen::VectorXd& b, const Eige
                     outer_[static_cast<std::size_t>(i) + 1], x.data(), s);
     for (int p = 0; p < 3; ++p) r[3 * i + p] = s[p];
   }
-  return r;
 }
 
-Eigen::VectorXd VertexBlockMatrix::residual_after_sweep_from_zero(const Eigen::VectorXd& x) const {
-  Eigen::VectorXd r(x.size());
+void VertexBlockMatrix::residual_after_sweep_from_zero(const Eigen::VectorXd& x, Eigen::VectorXd* r_out) const {
+  Eigen::VectorXd& r = *r_out;
+  r.resize(x.size());
   const int rows = block_rows();
   for (int i = 0; i < rows; ++i) {
     double s[3] = {0.0, 0.0, 0.0};
@@ -202,7 +235,6 @@ Eigen::VectorXd VertexBlockMatrix::residual_after_sweep_from_zero(const Eigen::V
                            outer_[static_cast<std::size_t>(i) + 1], x.data(), s);
     for (int p = 0; p < 3; ++p) r[3 * i + p] = s[p];
   }
-  return r;
 }
 
 int VertexBlockMatrix::find_block(int i, int j) const {
@@ -213,7 +245,14 @@ int VertexBlockMatrix::find_block(int i, int j) const {
 }
 
 Eigen::VectorXd VertexBlockMatrix::product(const Eigen::VectorXd& x) const {
-  Eigen::VectorXd y(x.size());
+  Eigen::VectorXd y;
+  product(x, &y);
+  return y;
+}
+
+void VertexBlockMatrix::product(const Eigen::VectorXd& x, Eigen::VectorXd* y_out) const {
+  Eigen::VectorXd& y = *y_out;
+  y.resize(x.size());
   const int rows = block_rows();
   for (int i = 0; i < rows; ++i) {
     double s[3] = {0.0, 0.0, 0.0};
@@ -221,7 +260,6 @@ Eigen::VectorXd VertexBlockMatrix::product(const Eigen::VectorXd& x) const {
                            outer_[static_cast<std::size_t>(i) + 1], x.data(), s);
     for (int p = 0; p < 3; ++p) y[3 * i + p] = -s[p];
   }
-  return y;
 }
 
 }  // namespace repose

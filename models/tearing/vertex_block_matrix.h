@@ -46,9 +46,15 @@ class VertexBlockMatrix {
   int find_block(int i, int j) const;
   float* diagonal_block(int i) { return values_.data() + 9 * static_cast<std::ptrdiff_t>(diagonal_[static_cast<std::size_t>(i)]); }
   void finish_values() { invert_diagonal(); }
-  // x (a's rows) as a block vector, and back (held axes dropped).
+  // x (a's rows) as a block vector, and back (held axes dropped); the
+  // pointer forms write into a vector kept by the caller (resized only
+  // when its size differs: no allocation once it has the size).
   Eigen::VectorXd to_blocks(const Eigen::VectorXd& x) const;
   Eigen::VectorXd from_blocks(const Eigen::VectorXd& blocks) const;
+  void to_blocks(const Eigen::VectorXd& x, Eigen::VectorXd* blocks) const;
+  void from_blocks(const Eigen::VectorXd& blocks, Eigen::VectorXd* x) const;
+  // Per row of a, its place in a block vector.
+  std::vector<int> block_place_of_rows() const;
 
   // One block Gauss-Seidel sweep for A x = b (block vectors): per vertex
   // in turn (forward or backward), x_i = D_i^-1 (b_i - sum_{j != i} A_ij x_j)
@@ -66,6 +72,11 @@ class VertexBlockMatrix {
   Eigen::VectorXd residual_after_sweep_from_zero(const Eigen::VectorXd& x) const;
   // A x (block vectors; 0 on held axes).
   Eigen::VectorXd product(const Eigen::VectorXd& x) const;
+  // The same three into a vector kept by the caller (x and the output
+  // distinct).
+  void residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x, Eigen::VectorXd* r) const;
+  void residual_after_sweep_from_zero(const Eigen::VectorXd& x, Eigen::VectorXd* r) const;
+  void product(const Eigen::VectorXd& x, Eigen::VectorXd* y) const;
 
  private:
   void invert_diagonal();

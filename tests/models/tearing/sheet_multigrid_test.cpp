@@ -151,6 +151,34 @@ TEST(SheetMultigrid, CutsTheConjugateGradientIterationsOfAStiffTornSystem) {
   EXPECT_LT((x - x_jacobi).norm(), 1e-6 * x_jacobi.norm());
 }
 
+// The block-vector cycle keeps its levels' vectors between calls: a cycle
+// after others of other right-hand sides gives the bits of the first, and
+// apply() is it between the scalar and block vectors.
+TEST(SheetMultigrid, TheBlockCycleReusingItsWorkspacesGivesTheBitsOfAFreshOne) {
+  const GridSystem g = grid_system(33, 21, 400.0, 5);
+  SheetMultigrid multigrid(g.vertices_x, g.vertices_y, g.free_index, static_cast<int>(g.matrix.rows()), small_coarsest());
+  multigrid.rebuild(g.matrix);
+  ASSERT_GE(multigrid.level_count(), 3);
+  const VertexBlockMatrix& blocks = multigrid.fine_blocks();
+  std::mt19937_64 rng(6);
+  std::normal_distribution<double> normal;
+  Eigen::VectorXd r(g.matrix.rows()), other(g.matrix.rows());
+  for (Eigen::Index k = 0; k < r.size(); ++k) r[k] = normal(rng), other[k] = normal(rng);
+  Eigen::VectorXd first, again, between;
+  multigrid.apply_blocks(blocks.to_blocks(r), &first);
+  for (int k = 0; k < 3; ++k) multigrid.apply_blocks(blocks.to_blocks(other), &between);
+  multigrid.apply_blocks(blocks.to_blocks(r), &again);
+  EXPECT_EQ(first, again);
+  const Eigen::VectorXd scalar = multigrid.apply(g.matrix, r);
+  EXPECT_EQ(blocks.from_blocks(first), scalar);
+  // the held column's axes stay 0 in block form
+  std::vector<char> free_place(static_cast<std::size_t>(first.size()), 0);
+  for (const int place : blocks.block_place_of_rows()) free_place[static_cast<std::size_t>(place)] = 1;
+  for (Eigen::Index k = 0; k < first.size(); ++k) {
+    if (!free_place[static_cast<std::size_t>(k)]) EXPECT_EQ(first[k], 0.0) << k;
+  }
+}
+
 TEST(SheetMultigrid, OptionsOutsideTheirRangesAreRefusedByName) {
   SheetMultigridOptions options;
   options.coarsest_unknowns = 0;
