@@ -66,29 +66,31 @@ Eigen::VectorXd conjugate_gradients(const Eigen::VectorXd& b, double tolerance, 
 }
 
 // The same recurrences with every vector in *work (no allocation once the
-// vectors have their size); product(p, &ap), precondition(r, &z); the
-// solution in work->x.
-template <class Product, class Precondition>
-void conjugate_gradients(const Eigen::VectorXd& b, double tolerance, int max_iterations, Product&& product,
-                         Precondition&& precondition, ImplicitIntegrator::SolveWork* work, int* iterations) {
+// vectors have their size), the products A p not taken but carried: the
+// preconditioner gives z and A z (precondition(r, &z, &az)), and A p of
+// p = z + beta p_old is A z + beta A p_old. The solution in work->x.
+template <class Precondition>
+void conjugate_gradients(const Eigen::VectorXd& b, double tolerance, int max_iterations, Precondition&& precondition,
+                         ImplicitIntegrator::SolveWork* work, int* iterations) {
   ImplicitIntegrator::SolveWork& w = *work;
   w.x.setZero(b.size());
   *iterations = 0;
   const double threshold = tolerance * tolerance * b.squaredNorm();
   if (threshold == 0.0) return;
   w.r = b;
-  precondition(w.r, &w.p);
+  precondition(w.r, &w.p, &w.ap);
   double rz = w.r.dot(w.p);
   while (*iterations < max_iterations) {
-    product(w.p, &w.ap);
     const double alpha = rz / w.p.dot(w.ap);
     w.x += alpha * w.p;
     w.r -= alpha * w.ap;
     ++*iterations;
     if (w.r.squaredNorm() < threshold) break;
-    precondition(w.r, &w.z);
+    precondition(w.r, &w.z, &w.az);
     const double rz_new = w.r.dot(w.z);
-    w.p = w.z + (rz_new / rz) * w.p;
+    const double beta = rz_new / rz;
+    w.p = w.z + beta * w.p;
+    w.ap = w.az + beta * w.ap;
     rz = rz_new;
   }
 }
@@ -277,9 +279,8 @@ void ImplicitIntegrator::solve(const Eigen::VectorXd& rhs) {
     blocks.to_blocks(rhs, &work_.b);
     conjugate_gradients(
         work_.b, solver_.relative_tolerance, max_iterations,
-        [&](const Eigen::VectorXd& p, Eigen::VectorXd* ap) { blocks.product(p, ap); },
-        [&](const Eigen::VectorXd& r, Eigen::VectorXd* z) { multigrid_->apply_blocks(r, z); }, &work_,
-        &last_iterations_);
+        [&](const Eigen::VectorXd& r, Eigen::VectorXd* z, Eigen::VectorXd* az) { multigrid_->apply_blocks(r, z, az); },
+        &work_, &last_iterations_);
     blocks.from_blocks(work_.x, &dv_);
     REPOSE_DEMAND(last_iterations_ < max_iterations && dv_.allFinite());
   } else if (solver_.single_precision_products) {

@@ -146,7 +146,7 @@ class ImplicitIntegrator {
   // The conjugate gradients' vectors, kept from step to step (no
   // allocation once sized): b the right-hand side, x the solution.
   struct SolveWork {
-    Eigen::VectorXd b, x, r, p, z, ap;
+    Eigen::VectorXd b, x, r, p, z, ap, az;
   };
 
  private:

@@ -271,32 +271,40 @@ Eigen::VectorXd SheetMultigrid::apply(const Eigen::SparseMatrix<double>& system,
   return fine_blocks_.from_blocks(z);
 }
 
-void SheetMultigrid::apply_blocks(const Eigen::VectorXd& r, Eigen::VectorXd* z) const {
+void SheetMultigrid::apply_blocks(const Eigen::VectorXd& r, Eigen::VectorXd* z, Eigen::VectorXd* az) const {
   REPOSE_DEMAND(built() && options_.smoother == SheetMultigridOptions::Smoother::kGaussSeidel &&
-                r.size() == 3 * fine_blocks_.block_rows() && z != &r);
-  cycle_blocks(0, r, z);
+                r.size() == 3 * fine_blocks_.block_rows() && z != &r && az != &r && az != z);
+  cycle_blocks(0, r, z, az);
 }
 
-void SheetMultigrid::cycle_blocks(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x) const {
+void SheetMultigrid::cycle_blocks(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x,
+                                  Eigen::VectorXd* ax) const {
   const VertexBlockMatrix& blocks = level == 0 ? fine_blocks_ : levels_[level - 1]->blocks;
   if (level == levels_.size()) {
     blocks.to_blocks(coarsest_->solve(blocks.from_blocks(b)), x);
+    if (ax) blocks.product(*x, ax);
     return;
   }
   const Level& coarse = *levels_[level];
   Work& work = work_[level];
-  x->setZero(b.size());
-  for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, true, s == 0, x);
-  // one sweep from zero leaves a residual that only the upper blocks make
-  if (options_.smoothing_sweeps == 1) {
-    blocks.residual_after_sweep_from_zero(*x, &work.residual);
+  const int sweeps = options_.smoothing_sweeps;
+  if (sweeps == 1) {
+    // one sweep from zero: its residual from the blocks it reads
+    blocks.sweep_from_zero_with_residual(b, x, &work.residual);
   } else {
+    x->setZero(b.size());
+    for (int s = 0; s < sweeps; ++s) blocks.gauss_seidel_sweep(b, true, s == 0, x);
     blocks.residual(b, *x, &work.residual);
   }
   work.coarse_b.noalias() = coarse.block_restriction * work.residual;
-  cycle_blocks(level + 1, work.coarse_b, &work.coarse_x);
+  cycle_blocks(level + 1, work.coarse_b, &work.coarse_x, nullptr);
   x->noalias() += coarse.block_interpolation * work.coarse_x;
-  for (int s = 0; s < options_.smoothing_sweeps; ++s) blocks.gauss_seidel_sweep(b, false, false, x);
+  for (int s = 0; s + 1 < sweeps; ++s) blocks.gauss_seidel_sweep(b, false, false, x);
+  if (ax) {
+    blocks.backward_sweep_with_product(b, x, ax);
+  } else {
+    blocks.gauss_seidel_sweep(b, false, false, x);
+  }
 }
 
 void SheetMultigrid::update_fine(const Eigen::SparseMatrix<double>& system) {

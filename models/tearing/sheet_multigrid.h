@@ -109,7 +109,10 @@ class SheetMultigrid {
   // workspaces kept here, so a cycle allocates nothing but the coarsest
   // level's small vectors. apply() with Gauss-Seidel is this one between
   // to_blocks and from_blocks. Not for concurrent use. Requires built().
-  void apply_blocks(const Eigen::VectorXd& r, Eigen::VectorXd* z) const;
+  // With az, also fine_blocks() times z into *az, from the last backward
+  // sweep's blocks (VertexBlockMatrix::backward_sweep_with_product): the
+  // product conjugate gradients need, without a pass of its own.
+  void apply_blocks(const Eigen::VectorXd& r, Eigen::VectorXd* z, Eigen::VectorXd* az = nullptr) const;
 
  private:
   struct Level;
@@ -119,7 +122,7 @@ class SheetMultigrid {
     Eigen::VectorXd residual, coarse_b, coarse_x;
   };
   Eigen::VectorXd cycle(std::size_t level, const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& r) const;
-  void cycle_blocks(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x) const;
+  void cycle_blocks(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* ax) const;
 
   SheetMultigridOptions options_;
   // per level below the fine one: its interpolation from there, operator, grid

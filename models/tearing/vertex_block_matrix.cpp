@@ -201,6 +201,67 @@ void VertexBlockMatrix::gauss_seidel_sweep(const Eigen::VectorXd& b, bool forwar
   }
 }
 
+namespace {
+
+// y_j += s A_ij^T x_i for the blocks [begin, end) of row i (x_i given)
+inline void add_transposed_blocks(const float* values, const int* column, int begin, int end, const double xi[3],
+                                  double scale, double* y) {
+  for (int k = begin; k < end; ++k) {
+    const float* m = values + 9 * static_cast<std::ptrdiff_t>(k);
+    double* yj = y + 3 * static_cast<std::ptrdiff_t>(column[k]);
+    yj[0] += scale * (m[0] * xi[0] + m[3] * xi[1] + m[6] * xi[2]);
+    yj[1] += scale * (m[1] * xi[0] + m[4] * xi[1] + m[7] * xi[2]);
+    yj[2] += scale * (m[2] * xi[0] + m[5] * xi[1] + m[8] * xi[2]);
+  }
+}
+
+}  // namespace
+
+void VertexBlockMatrix::sweep_from_zero_with_residual(const Eigen::VectorXd& b, Eigen::VectorXd* x_out,
+                                                      Eigen::VectorXd* r_out) const {
+  REPOSE_DEMAND(x_out != r_out);
+  x_out->resize(b.size());
+  r_out->setZero(b.size());
+  double* x = x_out->data();
+  double* r = r_out->data();
+  const int rows = block_rows();
+  for (int i = 0; i < rows; ++i) {
+    double s[3] = {b[3 * i], b[3 * i + 1], b[3 * i + 2]};
+    const int begin = outer_[static_cast<std::size_t>(i)], diagonal = diagonal_[static_cast<std::size_t>(i)];
+    subtract_blocks<false>(values_.data(), column_.data(), begin, diagonal, x, s);
+    const double* inv = &inverse_[9 * static_cast<std::size_t>(i)];
+    double* xi = x + 3 * i;
+    for (int p = 0; p < 3; ++p) xi[p] = inv[3 * p] * s[0] + inv[3 * p + 1] * s[1] + inv[3 * p + 2] * s[2];
+    // row j < i's residual -sum_{k > j} A_jk x_k takes A_ji x_i = A_ij^T x_i
+    add_transposed_blocks(values_.data(), column_.data(), begin, diagonal, xi, -1.0, r);
+  }
+}
+
+void VertexBlockMatrix::backward_sweep_with_product(const Eigen::VectorXd& b, Eigen::VectorXd* x_out,
+                                                    Eigen::VectorXd* ax_out) const {
+  REPOSE_DEMAND(x_out != ax_out && x_out->size() == b.size());
+  *ax_out = b;
+  double* x = x_out->data();
+  double* ax = ax_out->data();
+  const int rows = block_rows();
+  for (int i = rows - 1; i >= 0; --i) {
+    double s[3] = {b[3 * i], b[3 * i + 1], b[3 * i + 2]};
+    const int diagonal = diagonal_[static_cast<std::size_t>(i)];
+    const int begin = outer_[static_cast<std::size_t>(i)], end = outer_[static_cast<std::size_t>(i) + 1];
+    subtract_blocks<true>(values_.data(), column_.data(), diagonal + 1, end, x, s);
+    subtract_blocks<true>(values_.data(), column_.data(), begin, diagonal, x, s);
+    const double* inv = &inverse_[9 * static_cast<std::size_t>(i)];
+    double change[3];
+    for (int p = 0; p < 3; ++p) {
+      const double xp = inv[3 * p] * s[0] + inv[3 * p + 1] * s[1] + inv[3 * p + 2] * s[2];
+      change[p] = xp - x[3 * i + p];
+      x[3 * i + p] = xp;
+    }
+    // rows k > i (not yet final in ax) take A_ki (x_i - x_i before) = A_ik^T change
+    add_transposed_blocks(values_.data(), column_.data(), diagonal + 1, end, change, 1.0, ax);
+  }
+}
+
 Eigen::VectorXd VertexBlockMatrix::residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x) const {
   Eigen::VectorXd r;
   residual(b, x, &r);

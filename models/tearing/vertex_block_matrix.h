@@ -62,6 +62,19 @@ class VertexBlockMatrix {
   // forward sweep from x = 0, which reads only the blocks left of the
   // diagonal. A forward sweep and a backward one make a symmetric smoother.
   void gauss_seidel_sweep(const Eigen::VectorXd& b, bool forward, bool from_zero, Eigen::VectorXd* x) const;
+  // Fused passes for the multigrid (A's blocks symmetric across the
+  // diagonal, A_ji = A_ij^T, as a symmetric matrix's are): each reads every
+  // block it touches once from memory, the second use from the cache.
+  // A forward sweep from zero into *x and, from the same lower blocks
+  // scattered transposed, its residual b - A x into *r (equal to
+  // residual_after_sweep_from_zero to round-off, without its pass over the
+  // upper blocks).
+  void sweep_from_zero_with_residual(const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* r) const;
+  // A backward sweep of *x and, from the same upper blocks scattered
+  // transposed, A x of the swept x into *ax (equal to product() to
+  // round-off, without its pass): (A x)_i = b_i + sum_{j<i} A_ij (x_j - x_j
+  // before the sweep).
+  void backward_sweep_with_product(const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* ax) const;
   // b - A x (block vectors).
   Eigen::VectorXd residual(const Eigen::VectorXd& b, const Eigen::VectorXd& x) const;
   // The same for an x left by one forward sweep from zero (and nothing

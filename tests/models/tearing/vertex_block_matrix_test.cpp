@@ -132,6 +132,36 @@ TEST(VertexBlockMatrix, AfterASweepFromZeroTheUpperBlocksGiveTheResidual) {
   EXPECT_EQ(shortcut[3], 0.0);
 }
 
+// The fused passes the multigrid takes: a sweep from zero that scatters its
+// residual, and a backward sweep that scatters the product of its result.
+TEST(VertexBlockMatrix, ASweepFromZeroWithItsResidualEqualsTheSweepThenTheResidual) {
+  const BlockSystem s = block_system(12, 30.0, 15);
+  const VertexBlockMatrix blocks(s.matrix, s.index);
+  const Eigen::VectorXd bb = blocks.to_blocks(random_vector(s.matrix.rows(), 16));
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(bb.size()), fused_x, fused_r;
+  blocks.gauss_seidel_sweep(bb, true, true, &x);
+  blocks.sweep_from_zero_with_residual(bb, &fused_x, &fused_r);
+  EXPECT_EQ(fused_x, x);
+  const Eigen::VectorXd full = blocks.residual(bb, x);
+  EXPECT_GT(full.norm(), 0.1 * bb.norm());
+  EXPECT_LT((fused_r - full).norm(), 1e-12 * full.norm());
+  EXPECT_EQ(fused_r[3], 0.0);  // the held axis
+}
+
+TEST(VertexBlockMatrix, ABackwardSweepWithItsProductEqualsTheSweepThenTheProduct) {
+  const BlockSystem s = block_system(12, 30.0, 17);
+  const VertexBlockMatrix blocks(s.matrix, s.index);
+  const Eigen::VectorXd bb = blocks.to_blocks(random_vector(s.matrix.rows(), 18));
+  Eigen::VectorXd x = blocks.to_blocks(random_vector(s.matrix.rows(), 19));
+  Eigen::VectorXd fused_x = x, ax;
+  blocks.gauss_seidel_sweep(bb, false, false, &x);
+  blocks.backward_sweep_with_product(bb, &fused_x, &ax);
+  EXPECT_EQ(fused_x, x);
+  const Eigen::VectorXd product = blocks.product(x);
+  EXPECT_LT((ax - product).norm(), 1e-12 * product.norm());
+  EXPECT_EQ(ax[3], 0.0);
+}
+
 TEST(VertexBlockMatrix, ARefreshFollowsNewValuesOfThePattern) {
   const BlockSystem s = block_system(10, 5.0, 8);
   VertexBlockMatrix blocks(s.matrix, s.index);
