@@ -234,7 +234,13 @@ Eigen::SparseMatrix<double> between_blocks(const Eigen::SparseMatrix<double>& p,
 void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
   REPOSE_DEMAND(system.rows() == free_count_ && system.cols() == free_count_);
   levels_.clear();
-  fine_blocks_ = VertexBlockMatrix(system, free_index_);
+  // the fine pattern is the system's, fixed: its block copy is made once,
+  // later rebuilds only gather the values
+  if (fine_blocks_.has_pattern_of(system)) {
+    fine_blocks_.refresh(system);
+  } else {
+    fine_blocks_ = VertexBlockMatrix(system, free_index_);
+  }
   fine_inverse_l1_ = inverse_l1_rows(system);
   Grid grid{vertices_x_, vertices_y_, free_index_, free_count_};
   const Eigen::SparseMatrix<double>* matrix = &system;

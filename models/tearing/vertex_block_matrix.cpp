@@ -28,6 +28,8 @@ VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const
   }
   const int rows = static_cast<int>(row_of_.size() / 3);
   scalar_rows_ = static_cast<int>(a.rows());
+  scalar_outer_.assign(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1);
+  scalar_inner_.assign(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros());
   // the blocks of each block row: a is symmetric, so column c's rows are row c's columns
   std::vector<std::vector<int>> columns(static_cast<std::size_t>(rows));
   for (int c = 0; c < a.cols(); ++c) {
@@ -73,7 +75,15 @@ VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const
   refresh(a);
 }
 
+bool VertexBlockMatrix::has_pattern_of(const Eigen::SparseMatrix<double>& a) const {
+  return a.isCompressed() && a.rows() == scalar_rows_ && a.cols() == scalar_rows_ &&
+         static_cast<std::size_t>(a.nonZeros()) == scalar_inner_.size() &&
+         std::equal(scalar_outer_.begin(), scalar_outer_.end(), a.outerIndexPtr()) &&
+         std::equal(scalar_inner_.begin(), scalar_inner_.end(), a.innerIndexPtr());
+}
+
 void VertexBlockMatrix::refresh(const Eigen::SparseMatrix<double>& a) {
+  REPOSE_DEMAND(static_cast<std::size_t>(a.nonZeros()) == scalar_inner_.size());
   const double* from = a.valuePtr();
   for (std::size_t k = 0; k < source_.size(); ++k) {
     values_[k] = source_[k] >= 0 ? static_cast<float>(from[source_[k]]) : 0.0f;

@@ -36,6 +36,9 @@ class VertexBlockMatrix {
   void refresh(const Eigen::SparseMatrix<double>& a);
 
   int block_rows() const { return static_cast<int>(outer_.size()) - 1; }
+  // Whether a has the pattern of the matrix it was made from (refresh()
+  // then takes a's values).
+  bool has_pattern_of(const Eigen::SparseMatrix<double>& a) const;
 
   // Filling the values in place (the pattern kept): clear_values(), then
   // add into values() (9 floats a block, row-major; held axes' entries
@@ -95,6 +98,7 @@ class VertexBlockMatrix {
   void invert_diagonal();
 
   int scalar_rows_ = 0;          // a's rows
+  std::vector<int> scalar_outer_, scalar_inner_;  // a's pattern
   std::vector<int> row_of_;       // 3 per block row: a's row of each axis, or -1
   std::vector<int> outer_;        // per block row its first block, block_rows + 1 entries
   std::vector<int> column_;       // per block: its block column

@@ -179,6 +179,25 @@ TEST(SheetMultigrid, TheBlockCycleReusingItsWorkspacesGivesTheBitsOfAFreshOne) {
   }
 }
 
+// A rebuild from a later system of the same pattern keeps the fine block
+// pattern and gathers the values only: the same cycle, to the bit, as a
+// hierarchy built fresh from that system.
+TEST(SheetMultigrid, ARebuildKeepingTheFinePatternEqualsAFreshBuild) {
+  const GridSystem g = grid_system(33, 21, 400.0, 7);
+  Eigen::SparseMatrix<double> later = 0.5 * g.matrix;
+  for (int k = 0; k < later.outerSize(); ++k) later.coeffRef(k, k) += 1.0;
+  ASSERT_EQ(later.nonZeros(), g.matrix.nonZeros());
+  later.makeCompressed();
+  SheetMultigrid kept(g.vertices_x, g.vertices_y, g.free_index, static_cast<int>(g.matrix.rows()), small_coarsest());
+  SheetMultigrid fresh(g.vertices_x, g.vertices_y, g.free_index, static_cast<int>(g.matrix.rows()), small_coarsest());
+  kept.rebuild(g.matrix);
+  ASSERT_TRUE(kept.fine_blocks().has_pattern_of(later));
+  kept.rebuild(later);
+  fresh.rebuild(later);
+  const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(g.matrix.rows(), -1.0, 3.0);
+  EXPECT_EQ(kept.apply(later, r), fresh.apply(later, r));
+}
+
 TEST(SheetMultigrid, OptionsOutsideTheirRangesAreRefusedByName) {
   SheetMultigridOptions options;
   options.coarsest_unknowns = 0;
