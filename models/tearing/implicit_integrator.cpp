@@ -95,6 +95,19 @@ void conjugate_gradients(const Eigen::VectorXd& b, double tolerance, int max_ite
   }
 }
 
+// The bending part of for_each_stiffness_term (below).
+template <class Bending>
+void for_each_bending_term(const SheetModel& model, const SpringConstants& kc, const SheetState& state,
+                           Bending&& bending) {
+  const int bending_first = 24 * model.cell_count();
+  for (std::size_t k = 0; k < model.bending.size(); ++k) {
+    const BendingTerm& t = model.bending[k];
+    if (!bending_acts(t, state)) continue;
+    const std::array<int, 3> v = {t.a, t.b, t.c};
+    bending(bending_first + 9 * static_cast<int>(k), v, kc.bending_n_per_m * t.weight);
+  }
+}
+
 // Walks the stiffness -K (positive) of the intact springs and acting
 // bending terms: spring(first, a, b, h, axial) per spring, whose blocks are
 // (a, a) = (b, b) = h, (a, b) = (b, a) = -h (axial = k n n^T, the part its
@@ -125,13 +138,7 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
       spring(4 * (6 * c + k), s.a, s.b, h, axial);
     }
   }
-  const int bending_first = 24 * model.cell_count();
-  for (std::size_t k = 0; k < model.bending.size(); ++k) {
-    const BendingTerm& t = model.bending[k];
-    if (!bending_acts(t, state)) continue;
-    const std::array<int, 3> v = {t.a, t.b, t.c};
-    bending(bending_first + 9 * static_cast<int>(k), v, kc.bending_n_per_m * t.weight);
-  }
+  for_each_bending_term(model, kc, state, bending);
 }
 
 // Calls place(a, b) for every block for_each_stiffness_term can give, in
@@ -327,7 +334,7 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
   // the fixed pattern, refilled in place: no sort of millions of triplets
   // and no search for an entry each step
   if (blocks) {
-    blocks->clear_values();
+    fill_block_base(state, blocks);
   } else {
     system_.coeffs().setZero();
   }
@@ -336,19 +343,16 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
     for (int a = 0; a < 3; ++a) {
       const int row = free_index_[3 * v + a];
       if (row < 0) continue;
-      if (blocks) {
-        blocks->diagonal_block(block_row_[static_cast<std::size_t>(v)])[4 * a] += static_cast<float>(m * (1.0 + c * dt_));
-      } else {
-        system_.coeffRef(row, row) += m * (1.0 + c * dt_);
-      }
+      if (!blocks) system_.coeffRef(row, row) += m * (1.0 + c * dt_);
       rhs[row] = dt_ * (forces_(a, v) + m * g[a] - c * m * state.velocities(a, v));
     }
   }
   const Eigen::Map<const Eigen::VectorXd> v0(state.velocities.data(), 3 * model_.vertex_count());
   const double dt2 = dt_ * dt_, dt_beta = dt_ * model_.spec.stiffness_damping_s;
   if (blocks) {
-    StiffnessAssembly<BlockTarget> assembly{free_index_, first_row_,         all_free_, {block_index_, blocks->values()},
-                                            &rhs,        v0,                 dv_all,    dt2, dt_beta};
+    StiffnessAssembly<BlockTarget> assembly{free_index_, first_row_, all_free_, {block_index_, blocks->values()},
+                                            &rhs,        v0,         dv_all,    dt2,
+                                            dt_beta,     false};
     add_stiffness(state, &assembly);
     blocks->finish_values();
   } else {
@@ -356,6 +360,34 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
                                           &rhs,        v0,         dv_all,    dt2, dt_beta};
     add_stiffness(state, &assembly);
   }
+}
+
+// The mass and bending blocks: constant while no cell tears, so kept
+// (block_base_) and copied in over the last step's values until a cell
+// tears (the torn cells differ from those the copy was made with).
+void ImplicitIntegrator::fill_block_base(const SheetState& state, VertexBlockMatrix* blocks) {
+  if (blocks->value_count() == block_base_.size() && base_torn_step_ == state.torn_step) {
+    std::copy(block_base_.begin(), block_base_.end(), blocks->values());
+    return;
+  }
+  blocks->clear_values();
+  for (int v = 0; v < model_.vertex_count(); ++v) {
+    for (int a = 0; a < 3; ++a) {
+      if (free_index_[3 * v + a] < 0) continue;
+      blocks->diagonal_block(block_row_[static_cast<std::size_t>(v)])[4 * a] +=
+          static_cast<float>(model_.mass_kg[v] * (1.0 + model_.spec.damping_per_s * dt_));
+    }
+  }
+  // the bending terms' right-hand side is each step's (assemble())
+  Eigen::VectorXd discarded = Eigen::VectorXd::Zero(free_count_);
+  const Eigen::Map<const Eigen::VectorXd> v0(state.velocities.data(), 3 * model_.vertex_count());
+  StiffnessAssembly<BlockTarget> assembly{
+      free_index_, first_row_, all_free_, {block_index_, blocks->values()}, &discarded, v0, dv_all_, dt_ * dt_,
+      dt_ * model_.spec.stiffness_damping_s};
+  for_each_bending_term(model_, spring_constants(model_, params_), state,
+                        [&](int first, const std::array<int, 3>& v, double kb) { assembly.add_bending(first, v, kb); });
+  block_base_.assign(blocks->values(), blocks->values() + blocks->value_count());
+  base_torn_step_ = state.torn_step;
 }
 
 template <class Assembly>

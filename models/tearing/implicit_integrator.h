@@ -153,6 +153,8 @@ class ImplicitIntegrator {
   // The system (into system_) over the free degrees of freedom; dv_all
   // holds the held ones.
   void assemble(const SheetState& state, const Eigen::VectorXd& dv_all, Eigen::VectorXd* rhs);
+  // The step's mass and bending blocks into the fine blocks (block_base_).
+  void fill_block_base(const SheetState& state, VertexBlockMatrix* blocks);
   template <class Assembly>
   void add_stiffness(const SheetState& state, Assembly* assembly) const;
   // Whether this step's solve rebuilds the multigrid hierarchy.
@@ -186,6 +188,9 @@ class ImplicitIntegrator {
   // velocity change (all axes), the right-hand side and dv (free rows)
   Eigen::VectorXd dv_all_, rhs_, dv_;
   SolveWork work_;
+  // the fine blocks' mass and bending values, and the torn cells they hold
+  std::vector<float> block_base_;
+  std::vector<int> base_torn_step_;
 };
 
 }  // namespace repose

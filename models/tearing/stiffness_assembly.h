@@ -74,10 +74,14 @@ struct StiffnessAssembly {
   const Eigen::VectorXd& dv_all;
   double dt2;
   double dt_beta;  // dt x stiffness_damping_s
+  // false: the bending terms add to the right-hand side only (their blocks,
+  // constant while no cell tears, are in the store already)
+  bool bending_blocks = true;
 
   // any block, any vertices: held rows skipped, held columns to the right;
   // block of -K, left its block in the system (dt^2 block + dt C's)
-  void add_block(int index, int va, int vb, const Eigen::Matrix3d& block, const Eigen::Matrix3d& left) {
+  void add_block(int index, int va, int vb, const Eigen::Matrix3d& block, const Eigen::Matrix3d& left,
+                 bool to_store = true) {
     const int row0 = first_row[static_cast<std::size_t>(va)];
     for (int p = 0; p < 3; ++p) {
       const int row = free_index[static_cast<std::size_t>(3 * va + p)];
@@ -87,7 +91,7 @@ struct StiffnessAssembly {
         if (kpq == 0.0) continue;        // six of a bending block's nine (C is zero where K is)
         (*rhs)[row] -= dt2 * kpq * v0[3 * vb + q];
         if (free_index[static_cast<std::size_t>(3 * vb + q)] >= 0) {
-          target.entry(index, p, q, row - row0, left(p, q));
+          if (to_store) target.entry(index, p, q, row - row0, left(p, q));
         } else {
           (*rhs)[row] -= left(p, q) * dv_all[3 * vb + q];
         }
@@ -126,7 +130,7 @@ struct StiffnessAssembly {
         for (int q = 0; q < 3; ++q) {
           const Eigen::Matrix3d block = kb * kBendingCoefficient[p] * kBendingCoefficient[q] * Eigen::Matrix3d::Identity();
           add_block(first + 3 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)], block,
-                    left_scale * block);
+                    left_scale * block, bending_blocks);
         }
       }
       return;
@@ -137,6 +141,7 @@ struct StiffnessAssembly {
       const double kp = dt2 * kb * kBendingCoefficient[p];
       const double left_p = left_scale * kb * kBendingCoefficient[p];
       rhs_of(v[static_cast<std::size_t>(p)]) -= kp * curvature;
+      if (!bending_blocks) continue;
       for (int q = 0; q < 3; ++q) target.diagonal(first + 3 * p + q, left_p * kBendingCoefficient[q]);
     }
   }

@@ -45,6 +45,7 @@ class VertexBlockMatrix {
   // left 0), then finish_values() before any sweep.
   void clear_values() { std::fill(values_.begin(), values_.end(), 0.0f); }
   float* values() { return values_.data(); }
+  std::size_t value_count() const { return values_.size(); }
   // Block (i, j)'s index (values() + 9 index), -1 when not in the pattern.
   int find_block(int i, int j) const;
   float* diagonal_block(int i) { return values_.data() + 9 * static_cast<std::ptrdiff_t>(diagonal_[static_cast<std::size_t>(i)]); }
