@@ -116,9 +116,10 @@ void for_each_bending_term(const SheetModel& model, const SpringConstants& kc, c
 // pair may come several times, its blocks add up. first numbers the blocks
 // of the whole sheet (for_each_block_place): 4 (6 c + k) + 0..3 for spring
 // k of cell c in the order above, 24 cells + 9 t + 3 p + q for term t.
+// spring_constant: per spring 6 c + k its constant (spring_constants_of).
 template <class Spring, class Bending>
 void for_each_stiffness_term(const SheetModel& model, const SheetParams& params, const SheetState& state,
-                             Spring&& spring, Bending&& bending) {
+                             const std::vector<double>& spring_constant, Spring&& spring, Bending&& bending) {
   const SpringConstants kc = spring_constants(model, params);
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (int c = 0; c < model.cell_count(); ++c) {
@@ -130,7 +131,7 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
       const double length = d.norm();
       if (length == 0.0) continue;
       const Eigen::Vector3d n = d / length;
-      const double ks = spring_constant_n_per_m(kc, s, model.cell_stiffness[c]);
+      const double ks = spring_constant[static_cast<std::size_t>(6 * c + k)];
       const double geometric = std::max(0.0, 1.0 - s.rest_length_m / length);
       const Eigen::Matrix3d nn = n * n.transpose();
       const Eigen::Matrix3d axial = ks * nn;
@@ -139,6 +140,21 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
     }
   }
   for_each_bending_term(model, kc, state, bending);
+}
+
+// Per spring 6 c + k (cell c's spring k) its constant (N/m): fixed by
+// the model and parameters, so worked out once (a cosine each when the
+// fibres are anisotropic), not every step.
+std::vector<double> spring_constants_of(const SheetModel& model, const SheetParams& params) {
+  const SpringConstants kc = spring_constants(model, params);
+  std::vector<double> constants;
+  constants.reserve(6 * static_cast<std::size_t>(model.cell_count()));
+  for (int c = 0; c < model.cell_count(); ++c) {
+    for (const CellSpring& s : cell_springs(model, c)) {
+      constants.push_back(spring_constant_n_per_m(kc, s, model.cell_stiffness[c]));
+    }
+  }
+  return constants;
 }
 
 // Calls place(a, b) for every block for_each_stiffness_term can give, in
@@ -236,6 +252,7 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
     }
   }
   system_ = system_pattern(model, free_index_, free_count_);
+  spring_constant_ = spring_constants_of(model, params);
   first_row_.assign(static_cast<std::size_t>(model.vertex_count()), -1);
   all_free_.assign(static_cast<std::size_t>(model.vertex_count()), 0);
   for (int v = 0; v < model.vertex_count(); ++v) {
@@ -393,7 +410,7 @@ void ImplicitIntegrator::fill_block_base(const SheetState& state, VertexBlockMat
 template <class Assembly>
 void ImplicitIntegrator::add_stiffness(const SheetState& state, Assembly* assembly) const {
   for_each_stiffness_term(
-      model_, params_, state,
+      model_, params_, state, spring_constant_,
       [&](int first, int a, int b, const Eigen::Matrix3d& h, const Eigen::Matrix3d& axial) {
         assembly->add_spring(first, a, b, h, axial);
       },

@@ -188,6 +188,7 @@ class ImplicitIntegrator {
   // velocity change (all axes), the right-hand side and dv (free rows)
   Eigen::VectorXd dv_all_, rhs_, dv_;
   SolveWork work_;
+  std::vector<double> spring_constant_;  // per spring 6 c + k: its constant, N/m
   // the fine blocks' mass and bending values, and the torn cells they hold
   std::vector<float> block_base_;
   std::vector<int> base_torn_step_;

@@ -34,6 +34,14 @@ struct CscTarget {
       for (int p = 0; p < 3; ++p) column[p] += m(p, q);
     }
   }
+  // a spring's four blocks first + 0..3 between vertices free in every
+  // axis: m, m, -m, -m
+  void spring_blocks(int first, const Eigen::Matrix3d& m) {
+    block(first, m);
+    block(first + 1, m);
+    block(first + 2, -m);
+    block(first + 3, -m);
+  }
   // value times the identity onto a block between vertices free in every axis
   void diagonal(int index, double value) {
     const std::array<int, 3>& place = block_place[static_cast<std::size_t>(index)];
@@ -51,6 +59,20 @@ struct BlockTarget {
     float* b = at(index);
     for (int p = 0; p < 3; ++p) {
       for (int q = 0; q < 3; ++q) b[3 * p + q] += static_cast<float>(m(p, q));
+    }
+  }
+  // as CscTarget's, m rounded to float once (-float(x) is float(-x))
+  void spring_blocks(int first, const Eigen::Matrix3d& m) {
+    float f[9];
+    for (int p = 0; p < 3; ++p) {
+      for (int q = 0; q < 3; ++q) f[3 * p + q] = static_cast<float>(m(p, q));
+    }
+    float* b[4] = {at(first), at(first + 1), at(first + 2), at(first + 3)};
+    for (int e = 0; e < 9; ++e) {
+      b[0][e] += f[e];
+      b[1][e] += f[e];
+      b[2][e] -= f[e];
+      b[3][e] -= f[e];
     }
   }
   void diagonal(int index, double value) {
@@ -98,9 +120,6 @@ struct StiffnessAssembly {
       }
     }
   }
-  // a block between two vertices free in every axis, whose rows are
-  // consecutive, already as it enters the system: no branch per entry
-  void add_free_block(int index, const Eigen::Matrix3d& scaled) { target.block(index, scaled); }
   bool free(int v) const { return all_free[static_cast<std::size_t>(v)] != 0; }
   Eigen::VectorBlock<Eigen::VectorXd, 3> rhs_of(int v) { return rhs->segment<3>(first_row[static_cast<std::size_t>(v)]); }
 
@@ -117,10 +136,7 @@ struct StiffnessAssembly {
     const Eigen::Vector3d pull = scaled * (v0.segment<3>(3 * b) - v0.segment<3>(3 * a));
     rhs_of(a) += pull;
     rhs_of(b) -= pull;
-    add_free_block(first, left);
-    add_free_block(first + 1, left);
-    add_free_block(first + 2, -left);
-    add_free_block(first + 3, -left);
+    target.spring_blocks(first, left);
   }
 
   void add_bending(int first, const std::array<int, 3>& v, double kb) {
