@@ -50,7 +50,15 @@ VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const
     column_.insert(column_.end(), cols.begin(), cols.end());
     outer_.push_back(static_cast<int>(column_.size()));
   }
-  // where each block entry (p, q) of block (i, j) lies in a: column of (j, q), row of (i, p)
+  find_sources(a);
+  values_.assign(source_.size(), 0.0f);
+  refresh(a);
+}
+
+// Where each block entry (p, q) of block (i, j) lies in a (source_).
+void VertexBlockMatrix::find_sources(const Eigen::SparseMatrix<double>& a) {
+  const int rows = block_rows();
+  // column of (j, q), row of (i, p)
   source_.assign(9 * column_.size(), -1);
   for (int i = 0; i < rows; ++i) {
     for (int k = outer_[static_cast<std::size_t>(i)]; k < outer_[static_cast<std::size_t>(i) + 1]; ++k) {
@@ -71,8 +79,6 @@ VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const
       }
     }
   }
-  values_.assign(source_.size(), 0.0f);
-  refresh(a);
 }
 
 bool VertexBlockMatrix::has_pattern_of(const Eigen::SparseMatrix<double>& a) const {

@@ -97,6 +97,7 @@ class VertexBlockMatrix {
 
  private:
   void invert_diagonal();
+  void find_sources(const Eigen::SparseMatrix<double>& a);
 
   int scalar_rows_ = 0;          // a's rows
   std::vector<int> scalar_outer_, scalar_inner_;  // a's pattern
