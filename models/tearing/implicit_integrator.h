@@ -51,6 +51,24 @@
 // of the issue (50 ms) is out of reach of this scheme: the V-cycles alone
 // cost ~85 ms a step on a quiet machine (4.5 a step at ~19 ms; the fine
 // level's three passes read 21 MB of float blocks at ~6 GB/s, ~10 ms).
+// 2026-11-27 (BM_ImplicitStepMultigrid/200, 5 s, median of 3, CPU; main
+// at dcd3538 and this binary in turn, twice, load 1.6-1.8): 93.5, 88.7 ->
+// 76.5, 73.5 ms a step (10.7-11.3 -> 13.1-13.6 steps/s), the outcomes the
+// same (whole tear at 100 cells: 2,128 steps, 50 cells, work 50.858 mJ,
+// fracture 1.7371 mJ, peak 24.5724 N in both; 71.9 and 42.1 CPU s, not
+// run in turn). By:
+// conjugate gradients and the V-cycle in block vectors in kept workspaces;
+// fused passes (the sweep from zero scatters its residual, the fine
+// level's last backward sweep A z, so A p is carried: fine-level reads a
+// cycle 3 -> 1.5 matrices); the fine block pattern kept across rebuilds;
+// the mass and bending blocks copied in from a kept base (refilled when a
+// cell tears) and the springs' constants worked out once. Where a step
+// goes now (scratch timers, 40 steps from rest, wall, load ~2.9): internal
+// forces 3.4 ms, assembly 19.8 (springs; the base copy ~3), solve 38.8
+// (3.6 cycles of ~10.7 ms), the hierarchy's one build 484 ms (12.1 a step
+// over 40 steps; at 50 steps it is built again). 20 steps/s (50 ms) is
+// still missed ~1.5x. A rebuild every 200 steps instead of 50 bought
+// nothing over a whole tear at 100 cells (the growth rule rebuilds anyway).
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
