@@ -121,7 +121,6 @@ template <class Spring, class Bending>
 void for_each_stiffness_term(const SheetModel& model, const SheetParams& params, const SheetState& state,
                              const std::vector<double>& spring_constant, Spring&& spring, Bending&& bending) {
   const SpringConstants kc = spring_constants(model, params);
-  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (int c = 0; c < model.cell_count(); ++c) {
     if (!state.intact(c)) continue;
     const std::array<CellSpring, 6> springs = cell_springs(model, c);
@@ -133,9 +132,16 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
       const Eigen::Vector3d n = d / length;
       const double ks = spring_constant[static_cast<std::size_t>(6 * c + k)];
       const double geometric = std::max(0.0, 1.0 - s.rest_length_m / length);
-      const Eigen::Matrix3d nn = n * n.transpose();
-      const Eigen::Matrix3d axial = ks * nn;
-      const Eigen::Matrix3d h = ks * (nn + geometric * (identity - nn));
+      // ks n n^T and ks (n n^T + geometric (I - n n^T)) entry by entry
+      // (Eigen's 3 x 3 temporaries had stalled on the stack)
+      Eigen::Matrix3d axial, h;
+      for (int q = 0; q < 3; ++q) {
+        for (int p = 0; p < 3; ++p) {
+          const double npq = n[p] * n[q];
+          axial(p, q) = ks * npq;
+          h(p, q) = ks * (npq + geometric * ((p == q ? 1.0 : 0.0) - npq));
+        }
+      }
       spring(4 * (6 * c + k), s.a, s.b, h, axial);
     }
   }
