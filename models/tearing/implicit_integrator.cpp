@@ -277,6 +277,7 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
   if (solver_.preconditioner == ImplicitSolverOptions::Preconditioner::kMultigrid && free_count_ > 0) {
     multigrid_ = std::make_unique<SheetMultigrid>(model.cells_x + 1, model.cells_y + 1, free_index_, free_count_,
                                                   solver_.multigrid);
+    multigrid_->prepare_fine_pattern(system_);  // the mesh's, like system_'s
   }
 }
 

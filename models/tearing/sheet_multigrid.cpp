@@ -265,6 +265,11 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
   REPOSE_DEMAND(coarsest_->info() == Eigen::Success);
 }
 
+void SheetMultigrid::prepare_fine_pattern(const Eigen::SparseMatrix<double>& pattern) {
+  REPOSE_DEMAND(pattern.rows() == free_count_ && pattern.cols() == free_count_);
+  fine_blocks_ = VertexBlockMatrix(pattern, free_index_, false);
+}
+
 bool SheetMultigrid::built() const { return coarsest_ != nullptr; }
 
 int SheetMultigrid::level_count() const { return 1 + static_cast<int>(levels_.size()); }

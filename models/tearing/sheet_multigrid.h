@@ -90,6 +90,10 @@ class SheetMultigrid {
   // symmetric positive definite, both triangles stored).
   void rebuild(const Eigen::SparseMatrix<double>& system);
   bool built() const;
+  // Makes the fine block pattern from the pattern of the systems to come
+  // (values ignored) ahead of the first rebuild(), which then gathers the
+  // values only, as later ones do: the pattern is the mesh's, fixed.
+  void prepare_fine_pattern(const Eigen::SparseMatrix<double>& pattern);
   // Refreshes the fine level's smoother for a later system of the same
   // pattern (one pass over it); the coarse levels are kept. Required
   // before apply() whenever the fine system changed.

@@ -8,7 +8,8 @@
 
 namespace repose {
 
-VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const std::vector<int>& index) {
+VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const std::vector<int>& index,
+                                     bool with_values) {
   REPOSE_DEMAND(a.rows() == a.cols() && a.isCompressed() && index.size() % 3 == 0);
   // block rows: the vertices with an unknown, in order
   const int vertices = static_cast<int>(index.size() / 3);
@@ -52,7 +53,7 @@ VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const
   }
   find_sources(a);
   values_.assign(source_.size(), 0.0f);
-  refresh(a);
+  if (with_values) refresh(a);
 }
 
 // Where each block entry (p, q) of block (i, j) lies in a (source_).

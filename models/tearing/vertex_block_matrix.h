@@ -30,7 +30,9 @@ class VertexBlockMatrix {
   // The pattern and values of `a` (square, symmetric, both triangles
   // stored, compressed); index per (vertex, axis) 3 v + axis: its row in a,
   // or -1 when that axis is not an unknown. Every row of a must be named.
-  VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const std::vector<int>& index);
+  // with_values false: the pattern only (values 0, no sweep before a
+  // refresh() or a fill).
+  VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const std::vector<int>& index, bool with_values = true);
 
   // The values of a later matrix of a's pattern (one gather).
   void refresh(const Eigen::SparseMatrix<double>& a);

@@ -179,10 +179,10 @@ TEST(SheetMultigrid, TheBlockCycleReusingItsWorkspacesGivesTheBitsOfAFreshOne) {
   }
 }
 
-// A rebuild from a later system of the same pattern keeps the fine block
-// pattern and gathers the values only: the same cycle, to the bit, as a
-// hierarchy built fresh from that system.
-TEST(SheetMultigrid, ARebuildKeepingTheFinePatternEqualsAFreshBuild) {
+// A rebuild from a later system of the same pattern (or after the pattern
+// was prepared) keeps the fine block pattern and gathers the values only:
+// the same cycle, to the bit, as a hierarchy built fresh from that system.
+TEST(SheetMultigrid, ARebuildKeepingOrPreparingTheFinePatternEqualsAFreshBuild) {
   const GridSystem g = grid_system(33, 21, 400.0, 7);
   Eigen::SparseMatrix<double> later = 0.5 * g.matrix;
   for (int k = 0; k < later.outerSize(); ++k) later.coeffRef(k, k) += 1.0;
@@ -194,8 +194,16 @@ TEST(SheetMultigrid, ARebuildKeepingTheFinePatternEqualsAFreshBuild) {
   ASSERT_TRUE(kept.fine_blocks().has_pattern_of(later));
   kept.rebuild(later);
   fresh.rebuild(later);
+  // the pattern made ahead of the first rebuild, from a matrix of zeros
+  SheetMultigrid prepared(g.vertices_x, g.vertices_y, g.free_index, static_cast<int>(g.matrix.rows()), small_coarsest());
+  Eigen::SparseMatrix<double> zeros = g.matrix;
+  zeros.coeffs().setZero();
+  prepared.prepare_fine_pattern(zeros);
+  EXPECT_FALSE(prepared.built());
+  prepared.rebuild(later);
   const Eigen::VectorXd r = Eigen::VectorXd::LinSpaced(g.matrix.rows(), -1.0, 3.0);
   EXPECT_EQ(kept.apply(later, r), fresh.apply(later, r));
+  EXPECT_EQ(prepared.apply(later, r), fresh.apply(later, r));
 }
 
 TEST(SheetMultigrid, OptionsOutsideTheirRangesAreRefusedByName) {
