@@ -100,15 +100,17 @@
 // CPU; at 50 cells work 64.496 / 64.499 / 64.499 mJ. So 1e-2 costs ~0.1 %
 // of the work, still ~100x below the ladder's resolution errors; 1e-3
 // stays the default, the converged yardstick.
-// Measured 2026-11-27 05:30 (load 1.6-1.8; CPU time, median of 3; main at
-// dcd3538 and this binary in turn, twice): BM_ImplicitStepMultigrid/200
-// 93.5, 88.7 -> 76.5, 73.5 ms (10.7-11.3 -> 13.1-13.6 steps/s; 3.8 CG
-// iterations, two hierarchy builds in each run), by block-vector
-// workspaces, fused multigrid passes that carry the CG's product, the
-// fine block pattern kept across rebuilds, and a kept mass-and-bending
-// base for the assembly (implicit_integrator.h: where a step goes now).
-// The fixed 40 steps (/iterations:40, one build; load ~3, min / median of
-// 3 in turn): 99.6 / 102 -> 82.2 / 84.7 ms. Target 20 steps/s: missed ~1.5x.
+// Measured 2026-11-27 05:24-05:31 (load 2.7-4.5; CPU time, median of 3;
+// main at dcd3538 and this binary in turn, four times):
+// BM_ImplicitStepMultigrid/200 92.0, 96.2, 101, 109 -> 72.9, 94.7, 82.5,
+// 78.8 ms (~10.1 -> ~12.4 steps/s; 3.8 CG iterations, two hierarchy
+// builds a run), by block-vector workspaces, fused multigrid passes that
+// carry the CG's product, the fine block pattern made once, and a kept
+// mass-and-bending base for the assembly (implicit_integrator.h: where a
+// step goes now). The fixed 40 steps (/iterations:40, one build; load ~3,
+// min / median of 3 in turn): 99.6 / 102 -> 82.2 / 84.7 ms. Whole tear at
+// 100 cells 47.5 -> 36.2 CPU s, the same outcomes. Target 20 steps/s:
+// missed ~1.6x.
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter='ToleranceError|WholeTearTolerance/50/(12/0|3/1)/'   (minutes)

@@ -52,23 +52,29 @@
 // cost ~85 ms a step on a quiet machine (4.5 a step at ~19 ms; the fine
 // level's three passes read 21 MB of float blocks at ~6 GB/s, ~10 ms).
 // 2026-11-27 (BM_ImplicitStepMultigrid/200, 5 s, median of 3, CPU; main
-// at dcd3538 and this binary in turn, twice, load 1.6-1.8): 93.5, 88.7 ->
-// 76.5, 73.5 ms a step (10.7-11.3 -> 13.1-13.6 steps/s), the outcomes the
-// same (whole tear at 100 cells: 2,128 steps, 50 cells, work 50.858 mJ,
-// fracture 1.7371 mJ, peak 24.5724 N in both; 71.9 and 42.1 CPU s, not
-// run in turn). By:
-// conjugate gradients and the V-cycle in block vectors in kept workspaces;
-// fused passes (the sweep from zero scatters its residual, the fine
-// level's last backward sweep A z, so A p is carried: fine-level reads a
-// cycle 3 -> 1.5 matrices); the fine block pattern kept across rebuilds;
-// the mass and bending blocks copied in from a kept base (refilled when a
-// cell tears) and the springs' constants worked out once. Where a step
-// goes now (scratch timers, 40 steps from rest, wall, load ~2.9): internal
-// forces 3.4 ms, assembly 19.8 (springs; the base copy ~3), solve 38.8
-// (3.6 cycles of ~10.7 ms), the hierarchy's one build 484 ms (12.1 a step
-// over 40 steps; at 50 steps it is built again). 20 steps/s (50 ms) is
-// still missed ~1.5x. A rebuild every 200 steps instead of 50 bought
-// nothing over a whole tear at 100 cells (the growth rule rebuilds anyway).
+// at dcd3538 and this binary in turn, four times, load 2.7-4.5): 92.0,
+// 96.2, 101, 109 -> 72.9, 94.7, 82.5, 78.8 ms a step (~10.1 -> ~12.4
+// steps/s; 3.8 products a step, two hierarchy builds a run). Whole tear
+// at 100 cells (BM_ImplicitWholeTearMultigrid/100, in turn, load ~2.5):
+// 47.5 -> 36.2 CPU s, the outcomes the same to the digits printed (2,128
+// steps, 50 cells, work 50.858 mJ, fracture 1.7371 mJ, peak 24.5724 N; at
+// 50 cells 64.4993 mJ, 3.34326 mJ, 32.1582 N). By: conjugate gradients
+// and the V-cycle in block vectors in kept workspaces; fused passes (the
+// sweep from zero scatters its residual, the fine level's last backward
+// sweep A z, so A p is carried: the fine matrix read 1.5 times a cycle,
+// 3 before); the fine block pattern made with the integrator, rebuilds
+// gathering values only; the mass and bending blocks copied in from a
+// kept base (refilled when a cell tears), the springs' constants worked
+// out once. Where a step goes (scratch timers, 40 steps from rest, wall =
+// CPU at that moment, before the last two changes): internal forces 3.4
+// ms, assembly 19.8 (the springs; the base copy ~3), solve 38.8 (3.6
+// cycles of ~10.7 ms: the block sweeps, which are scalar arithmetic more
+// than memory now), the hierarchy's build ~480 ms (Galerkin products
+// ~290, interpolation ~100, coarse blocks ~60), once in 40 steps, about
+// every 46 steps over a whole tear. 20 steps/s (50 ms) is still missed
+// ~1.6x. Rebuilding every 200 steps instead of 50 saves nothing: at 50
+// cells 11 builds instead of 25, 6.01 against 6.06 CPU s (the iterations
+// grow by as much).
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
