@@ -111,7 +111,8 @@ class SheetMultigrid {
   // One V-cycle for system z = r, starting from z = 0; `system` is the
   // fine matrix last given to rebuild() or update_fine() (Gauss-Seidel
   // smooths with its block copy made there, l1-Jacobi with `system`
-  // itself). Requires built().
+  // itself). Requires built(). Not for concurrent use (the cycle keeps its
+  // vectors in this object: apply_blocks).
   Eigen::VectorXd apply(const Eigen::SparseMatrix<double>& system, const Eigen::VectorXd& r) const;
   // The same V-cycle with the Gauss-Seidel smoother, r and *z fine block
   // vectors (fine_blocks()), z distinct from r: the levels' vectors live in
