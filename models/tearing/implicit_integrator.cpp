@@ -73,9 +73,12 @@ Eigen::VectorXd conjugate_gradients(const Eigen::VectorXd& b, double tolerance, 
 // pair may come several times, its blocks add up. first numbers the blocks
 // of the whole sheet (for_each_block_place): 4 (6 c + k) + 0..3 for spring
 // k of cell c in the order above, 24 cells + 9 t + 3 p + q for term t.
-template <class Spring, class Bending>
+// With SheetSpec::twist_stiffness, twist(first, corners, kt) per intact
+// cell c, blocks (corners[i], corners[j]) kt c_i c_j I (kTwistCoefficient),
+// first = 24 cells + 9 terms + 16 c.
+template <class Spring, class Bending, class Twist>
 void for_each_stiffness_term(const SheetModel& model, const SheetParams& params, const SheetState& state,
-                             Spring&& spring, Bending&& bending) {
+                             Spring&& spring, Bending&& bending, Twist&& twist) {
   const SpringConstants kc = spring_constants(model, params);
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (int c = 0; c < model.cell_count(); ++c) {
@@ -102,6 +105,11 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
     const std::array<int, 3> v = {t.a, t.b, t.c};
     bending(bending_first + 9 * static_cast<int>(k), v, kc.bending_n_per_m * t.weight);
   }
+  if (kc.twist_n_per_m == 0.0) return;
+  const int twist_first = bending_first + 9 * static_cast<int>(model.bending.size());
+  for (int c = 0; c < model.cell_count(); ++c) {
+    if (state.intact(c)) twist(twist_first + 16 * c, model.corners(c), kc.twist_n_per_m * model.cell_stiffness[c]);
+  }
 }
 
 // Calls place(a, b) for every block for_each_stiffness_term can give, in
@@ -118,6 +126,13 @@ void for_each_block_place(const SheetModel& model, Place&& place) {
   }
   for (const BendingTerm& t : model.bending) {
     const int v[3] = {t.a, t.b, t.c};
+    for (const int a : v) {
+      for (const int b : v) place(a, b);
+    }
+  }
+  if (!model.spec.twist_stiffness) return;
+  for (int c = 0; c < model.cell_count(); ++c) {
+    const std::array<int, 4> v = model.corners(c);
     for (const int a : v) {
       for (const int b : v) place(a, b);
     }
@@ -327,7 +342,8 @@ void ImplicitIntegrator::add_stiffness(const SheetState& state, Assembly* assemb
       [&](int first, int a, int b, const Eigen::Matrix3d& h, const Eigen::Matrix3d& axial) {
         assembly->add_spring(first, a, b, h, axial);
       },
-      [&](int first, const std::array<int, 3>& v, double kb) { assembly->add_bending(first, v, kb); });
+      [&](int first, const std::array<int, 3>& v, double kb) { assembly->add_bending(first, v, kb); },
+      [&](int first, const std::array<int, 4>& v, double kt) { assembly->add_twist(first, v, kt); });
 }
 
 int ImplicitIntegrator::step(SheetState* state) {

@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "models/tearing/sheet_forces.h"
+
 namespace repose {
 
 // The bending terms' stencil: term t couples a, b, c by kb w_t c_p c_q I.
@@ -140,7 +142,30 @@ struct StiffnessAssembly {
       for (int q = 0; q < 3; ++q) target.diagonal(first + 3 * p + q, left_p * kBendingCoefficient[q]);
     }
   }
-};
 
+  // A cell's twist term (sheet_model.h; kTwistCoefficient c over its
+  // corners v): blocks (v_p, v_q) of -K are kt c_p c_q I, constant.
+  void add_twist(int first, const std::array<int, 4>& v, double kt) {
+    const double left_scale = dt2 + dt_beta;
+    if (!(free(v[0]) && free(v[1]) && free(v[2]) && free(v[3]))) {
+      for (int p = 0; p < 4; ++p) {
+        for (int q = 0; q < 4; ++q) {
+          const Eigen::Matrix3d block = kt * kTwistCoefficient[p] * kTwistCoefficient[q] * Eigen::Matrix3d::Identity();
+          add_block(first + 4 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)], block,
+                    left_scale * block);
+        }
+      }
+      return;
+    }
+    // K v_n of the term on vertex p: kt c_p Delta(v_n)
+    Eigen::Vector3d twist = Eigen::Vector3d::Zero();
+    for (int q = 0; q < 4; ++q) twist += kTwistCoefficient[q] * v0.segment<3>(3 * v[static_cast<std::size_t>(q)]);
+    for (int p = 0; p < 4; ++p) {
+      rhs_of(v[static_cast<std::size_t>(p)]) -= (dt2 * kt * kTwistCoefficient[p]) * twist;
+      const double left_p = left_scale * kt * kTwistCoefficient[p];
+      for (int q = 0; q < 4; ++q) target.diagonal(first + 4 * p + q, left_p * kTwistCoefficient[q]);
+    }
+  }
+};
 
 }  // namespace repose

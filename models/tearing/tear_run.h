@@ -41,12 +41,12 @@ struct TearRunOptions {
 //   grip work + gravity's work = stored + kinetic + damping + fracture + residual,
 // the residual being the integrator's own energy error plus what the ledger
 // does not itemise (bending terms that stop acting when their cells tear,
-// the dashpots of stiffness_damping_s). Kinetic energy and gravity's work
+// twist terms torn with their cells, the dashpots of stiffness_damping_s). Kinetic energy and gravity's work
 // are over the free degrees of freedom (the grips move the held ones and
 // carry their weight). damping_j is 0 for the implicit integrator, whose
 // damping then sits in the residual.
 struct EnergyLedger {
-  double stored_j = 0.0;     // elastic, intact springs and acting bending terms
+  double stored_j = 0.0;     // elastic, intact springs, acting bending and twist terms
   ElasticEnergy stored;      // stored_j by kind (its total_j() is stored_j)
   double kinetic_j = 0.0;    // free degrees of freedom
   double gravity_j = 0.0;    // work gravity did on them
