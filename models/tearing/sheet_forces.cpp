@@ -165,6 +165,10 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
     if (s.over) {
       state->torn_step[static_cast<std::size_t>(c)] = step_number;
       state->torn_energy_j += cell_spring_energy(springs, s, k, model.cell_stiffness[c]);
+      if (k.twist_n_per_m > 0.0) {
+        state->torn_twist_energy_j += 0.5 * k.twist_n_per_m * model.cell_stiffness[c] *
+                                      twist_difference(model.corners(c), state->positions).squaredNorm();
+      }
       ++torn;
     } else {
       add_cell_forces(springs, s, k, model.cell_stiffness[c], forces);

@@ -61,7 +61,8 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
 // springs (each cell's verdict depends on its own springs only, so tearing
 // a cell before the next is judged changes nothing): cells over their limit
 // are marked torn at step_number, the energy their springs held added to
-// state->torn_energy_j, the forces of the rest accumulated: elastic, plus
+// state->torn_energy_j (their twist terms' to state->torn_twist_energy_j),
+// the forces of the rest accumulated: elastic, plus
 // the dashpots of SheetSpec::stiffness_damping_s at state->velocities.
 // Returns the number of cells torn.
 int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,

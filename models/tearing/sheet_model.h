@@ -50,8 +50,8 @@
 // sheet becomes the isotropic Kirchhoff plate of Poisson's ratio 0,
 // D/2 (w_xx^2 + w_yy^2 + 2 w_xy^2); a twist w = kappa x y stores
 // D kappa^2 A. It goes with its cell when the cell tears; the energy it
-// held then is not fracture energy (that is the springs') but, like a
-// bending term's that stops acting, sits in the ledger's residual.
+// held then is not counted as fracture energy (that is the springs'), but
+// kept apart (SheetState::torn_twist_energy_j, the ledger's torn_twist).
 //
 // Departure from the seed, optional: a cell's tear strain may follow its
 // fibre density too (tear_strain x w^q, q = tear_strain_density_exponent;

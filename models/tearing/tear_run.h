@@ -38,10 +38,10 @@ struct TearRunOptions {
 
 // Where the grips' work went by the end of a run (J): the sheet starts at
 // rest in its rest shape, so
-//   grip work + gravity's work = stored + kinetic + damping + fracture + residual,
+//   grip work + gravity's work = stored + kinetic + damping + fracture + torn twist + residual,
 // the residual being the integrator's own energy error plus what the ledger
 // does not itemise (bending terms that stop acting when their cells tear,
-// twist terms torn with their cells, the dashpots of stiffness_damping_s). Kinetic energy and gravity's work
+// the dashpots of stiffness_damping_s). Kinetic energy and gravity's work
 // are over the free degrees of freedom (the grips move the held ones and
 // carry their weight). damping_j is 0 for the implicit integrator, whose
 // damping then sits in the residual.
@@ -52,6 +52,7 @@ struct EnergyLedger {
   double gravity_j = 0.0;    // work gravity did on them
   double damping_j = 0.0;    // SheetState::damping_loss_j
   double fracture_j = 0.0;   // SheetState::torn_energy_j
+  double torn_twist_j = 0.0;  // SheetState::torn_twist_energy_j
   double residual_j = 0.0;
 };
 

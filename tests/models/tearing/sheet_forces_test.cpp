@@ -163,6 +163,27 @@ TEST(SheetForces, AnAffineMapStoresNoTwistEnergy) {
   EXPECT_LT(e.bending_j, 1e-20 * e.structural_j);
 }
 
+// A twisted cell torn apart takes its twist term with it: the energy it
+// held goes to SheetState::torn_twist_energy_j, none stays stored, and the
+// springs' energy alone is the fracture energy.
+TEST(SheetForces, ATornCellsTwistEnergyIsKeptApartFromTheFractureEnergy) {
+  SheetSpec spec = free_sheet_spec(0.004, 1);
+  spec.twist_stiffness = true;
+  const SheetModel model = uniform_sheet(spec);
+  SheetParams params;
+  params.tear_strain = 0.01;
+  SheetState state = displaced(model, [](double x, double y) { return 50.0 * x * y; });
+  state.positions.row(0) *= 1.02;  // past the tear strain
+  const ElasticEnergy before = elastic_energy(model, params, state);
+  ASSERT_GT(before.twist_j, 0.0);
+  Eigen::Matrix3Xd forces;
+  ASSERT_EQ(tear_and_internal_forces(model, params, 1, &state, &forces), 1);
+  EXPECT_NEAR(state.torn_twist_energy_j, before.twist_j, 1e-12 * before.twist_j);
+  EXPECT_NEAR(state.torn_energy_j, before.structural_j + before.shear_j, 1e-12 * state.torn_energy_j);
+  EXPECT_EQ(elastic_energy(model, params, state).total_j(), 0.0);
+  EXPECT_EQ(forces.cwiseAbs().maxCoeff(), 0.0);
+}
+
 // The forces are minus the gradient of the elastic energy (springs, bending
 // and twist terms of a fibre sheet with a torn cell), by central
 // differences at a random state.
