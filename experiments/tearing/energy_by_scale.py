@@ -11,10 +11,12 @@ spacing H:
     (second difference)^2 along each mesh line, plus the twist terms'
     D/H^2 (mixed difference)^2 per cell when the run had them) over the
     intact sheet below the tear tip (rows up to `margin_mm` below the
-    lowest torn cell);
+    lowest torn cell), and over the rest (the flaps and the grips) clear
+    of the torn columns by 2 H on either side (which smoothing blurs);
   - the kinetic energy of the smoothed velocities (vertex masses
     grammage x H^2, halved on the edges) there and over the whole sheet;
-all per metre of tear (J/m, as the ledger's energy.*_per_length). The
+all per metre of tear (J/m, as the ledger's energy.*_per_length; J for a
+run that did not tear, "below the tip" then below the notch). The
 energy at spacing H is that of the motion a mesh of cell H can hold; what
 it loses from one H to the next sits in waves between them. The fields are
 the run's last state (a snapshot); D is taken uniform (the model weighs
@@ -89,12 +91,18 @@ def spectrum(folder, margin_mm):
     grammage = float(setting(manifest, "grammage_kg_per_m2", 0.08))
     twist = bool(setting(manifest, "twist_stiffness", False))
     below_m = int(np.nonzero(torn.any(axis=1))[0].min()) * h - margin_mm * 1e-3
-    length = result(results, "tear.length_m")
+    length = result(results, "tear.length_m") or 1.0  # J where the run did not tear
+    torn_x = (np.nonzero(torn.any(axis=0))[0] + 0.5) * h
     table = {}
     spacing = h
     while True:
         rows = int(np.floor(below_m / spacing + 1e-9)) + 1
-        table[round(spacing * 1e3, 3)] = (bending_energy(z[:rows, :], spacing, d, twist) / length,
+        x = np.arange(z.shape[1]) * spacing
+        # the flaps: columns clear of the tear by 2 H (smoothing blurs across it)
+        left = x < torn_x.min() - 2 * spacing
+        right = x > torn_x.max() + 2 * spacing
+        flaps = sum(bending_energy(z[rows:, side], spacing, d, twist) for side in (left, right))
+        table[round(spacing * 1e3, 3)] = (bending_energy(z[:rows, :], spacing, d, twist) / length, flaps / length,
                                           kinetic_energy([v[:rows, :] for v in velocities], spacing, grammage) / length,
                                           kinetic_energy(velocities, spacing, grammage) / length)
         if z.shape[0] % 2 == 0 or z.shape[1] % 2 == 0 or z.shape[0] < 5:
@@ -110,10 +118,11 @@ def main():
     parser.add_argument("--margin-mm", type=float, default=5.0)
     parser.add_argument("runs", nargs="+")
     args = parser.parse_args()
-    names = ("bending (+twist) below the tip", "kinetic below the tip", "kinetic, whole sheet")
+    names = ("bending (+twist) below the tip", "bending (+twist) above it, clear of the tear by 2 H",
+             "kinetic below the tip", "kinetic, whole sheet")
     runs = [(folder, spectrum(folder, args.margin_mm)) for folder in args.runs]
     for k, name in enumerate(names):
-        print(f"{name}, held on a grid of spacing H (J/m of tear)")
+        print(f"{name}, held on a grid of spacing H (J/m of tear; J where the run did not tear)")
         print("run cells below_mm twist | " + " ".join(f"H={s:g}mm" for s in SPACINGS_MM))
         for folder, (cells, below_m, twist, table) in runs:
             row = " ".join(f"{table[s][k]:.4f}" if s in table else "-" for s in SPACINGS_MM)
