@@ -108,6 +108,17 @@ void for_each_bending_term(const SheetModel& model, const SpringConstants& kc, c
   }
 }
 
+// The twist part of for_each_stiffness_term (below): nothing unless
+// SheetSpec::twist_stiffness.
+template <class Twist>
+void for_each_twist_term(const SheetModel& model, const SpringConstants& kc, const SheetState& state, Twist&& twist) {
+  if (kc.twist_n_per_m == 0.0) return;
+  const int twist_first = 24 * model.cell_count() + 9 * static_cast<int>(model.bending.size());
+  for (int c = 0; c < model.cell_count(); ++c) {
+    if (state.intact(c)) twist(twist_first + 16 * c, model.corners(c), kc.twist_n_per_m * model.cell_stiffness[c]);
+  }
+}
+
 // Walks the stiffness -K (positive) of the intact springs and acting
 // bending terms: spring(first, a, b, h, axial) per spring, whose blocks are
 // (a, a) = (b, b) = h, (a, b) = (b, a) = -h (axial = k n n^T, the part its
@@ -116,10 +127,14 @@ void for_each_bending_term(const SheetModel& model, const SpringConstants& kc, c
 // pair may come several times, its blocks add up. first numbers the blocks
 // of the whole sheet (for_each_block_place): 4 (6 c + k) + 0..3 for spring
 // k of cell c in the order above, 24 cells + 9 t + 3 p + q for term t.
+// With SheetSpec::twist_stiffness, twist(first, corners, kt) per intact
+// cell c, blocks (corners[i], corners[j]) kt c_i c_j I (kTwistCoefficient),
+// first = 24 cells + 9 terms + 16 c.
 // spring_constant: per spring 6 c + k its constant (spring_constants_of).
-template <class Spring, class Bending>
+template <class Spring, class Bending, class Twist>
 void for_each_stiffness_term(const SheetModel& model, const SheetParams& params, const SheetState& state,
-                             const std::vector<double>& spring_constant, Spring&& spring, Bending&& bending) {
+                             const std::vector<double>& spring_constant, Spring&& spring, Bending&& bending,
+                             Twist&& twist) {
   const SpringConstants kc = spring_constants(model, params);
   for (int c = 0; c < model.cell_count(); ++c) {
     if (!state.intact(c)) continue;
@@ -146,6 +161,7 @@ void for_each_stiffness_term(const SheetModel& model, const SheetParams& params,
     }
   }
   for_each_bending_term(model, kc, state, bending);
+  for_each_twist_term(model, kc, state, twist);
 }
 
 // Per spring 6 c + k (cell c's spring k) its constant (N/m): fixed by
@@ -177,6 +193,13 @@ void for_each_block_place(const SheetModel& model, Place&& place) {
   }
   for (const BendingTerm& t : model.bending) {
     const int v[3] = {t.a, t.b, t.c};
+    for (const int a : v) {
+      for (const int b : v) place(a, b);
+    }
+  }
+  if (!model.spec.twist_stiffness) return;
+  for (int c = 0; c < model.cell_count(); ++c) {
+    const std::array<int, 4> v = model.corners(c);
     for (const int a : v) {
       for (const int b : v) place(a, b);
     }
@@ -386,7 +409,7 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
   }
 }
 
-// The mass and bending blocks: constant while no cell tears, so kept
+// The mass, bending and twist blocks: constant while no cell tears, so kept
 // (block_base_) and copied in over the last step's values until a cell
 // tears (the torn cells differ from those the copy was made with).
 void ImplicitIntegrator::fill_block_base(const SheetState& state, VertexBlockMatrix* blocks) {
@@ -408,8 +431,11 @@ void ImplicitIntegrator::fill_block_base(const SheetState& state, VertexBlockMat
   StiffnessAssembly<BlockTarget> assembly{
       free_index_, first_row_, all_free_, {block_index_, blocks->values()}, &discarded, v0, dv_all_, dt_ * dt_,
       dt_ * model_.spec.stiffness_damping_s};
-  for_each_bending_term(model_, spring_constants(model_, params_), state,
+  const SpringConstants kc = spring_constants(model_, params_);
+  for_each_bending_term(model_, kc, state,
                         [&](int first, const std::array<int, 3>& v, double kb) { assembly.add_bending(first, v, kb); });
+  for_each_twist_term(model_, kc, state,
+                      [&](int first, const std::array<int, 4>& v, double kt) { assembly.add_twist(first, v, kt); });
   block_base_.assign(blocks->values(), blocks->values() + blocks->value_count());
   base_torn_step_ = state.torn_step;
 }
@@ -421,7 +447,8 @@ void ImplicitIntegrator::add_stiffness(const SheetState& state, Assembly* assemb
       [&](int first, int a, int b, const Eigen::Matrix3d& h, const Eigen::Matrix3d& axial) {
         assembly->add_spring(first, a, b, h, axial);
       },
-      [&](int first, const std::array<int, 3>& v, double kb) { assembly->add_bending(first, v, kb); });
+      [&](int first, const std::array<int, 3>& v, double kb) { assembly->add_bending(first, v, kb); },
+      [&](int first, const std::array<int, 4>& v, double kt) { assembly->add_twist(first, v, kt); });
 }
 
 int ImplicitIntegrator::step(SheetState* state) {

@@ -6,9 +6,17 @@
 namespace repose {
 
 SpringConstants spring_constants(const SheetModel& model, const SheetParams& params) {
-  return {0.75 * params.stiffness_n_per_m, 0.375 * params.stiffness_n_per_m,
-          model.spec.bending_stiffness_n_m / (model.cell_size_m * model.cell_size_m), params.fibre_anisotropy,
+  const double d_over_h2 = model.spec.bending_stiffness_n_m / (model.cell_size_m * model.cell_size_m);
+  return {0.75 * params.stiffness_n_per_m,
+          0.375 * params.stiffness_n_per_m,
+          d_over_h2,
+          model.spec.twist_stiffness ? 2.0 * d_over_h2 : 0.0,
+          params.fibre_anisotropy,
           model.spec.fibres.grain_direction_rad};
+}
+
+Eigen::Vector3d twist_difference(const std::array<int, 4>& corners, const Eigen::Matrix3Xd& x) {
+  return x.col(corners[0]) - x.col(corners[1]) + x.col(corners[2]) - x.col(corners[3]);
 }
 
 double spring_constant_n_per_m(const SpringConstants& k, const CellSpring& s, double cell_stiffness) {
@@ -97,6 +105,16 @@ void add_bending_forces(const SheetModel& model, const SpringConstants& k, const
   }
 }
 
+// Cell c's twist term's forces -scale k_t w c_i Delta(y) on y = positions
+// (scale 1: elastic) or velocities (scale beta: its dashpot).
+void add_twist_forces(const SheetModel& model, const SpringConstants& k, int c, const Eigen::Matrix3Xd& y,
+                      double scale, Eigen::Matrix3Xd* forces) {
+  if (k.twist_n_per_m == 0.0) return;
+  const std::array<int, 4> corners = model.corners(c);
+  const Eigen::Vector3d g = (scale * k.twist_n_per_m * model.cell_stiffness[c]) * twist_difference(corners, y);
+  for (int i = 0; i < 4; ++i) forces->col(corners[static_cast<std::size_t>(i)]) -= kTwistCoefficient[i] * g;
+}
+
 // The springs' dashpots (SheetSpec::stiffness_damping_s): beta k times the
 // rate of stretch along each spring.
 void add_cell_damping(const std::array<CellSpring, 6>& springs, const CellStretch& s, const SpringConstants& k,
@@ -121,6 +139,7 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
     if (!state.intact(c)) continue;
     const std::array<CellSpring, 6> springs = cell_springs(model, c);
     add_cell_forces(springs, stretch_of(springs, state.positions, INFINITY), k, model.cell_stiffness[c], forces);
+    add_twist_forces(model, k, c, state.positions, 1.0, forces);
   }
   add_bending_forces(model, k, state, state.positions, 1.0, forces);
 }
@@ -146,10 +165,18 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
     if (s.over) {
       state->torn_step[static_cast<std::size_t>(c)] = step_number;
       state->torn_energy_j += cell_spring_energy(springs, s, k, model.cell_stiffness[c]);
+      if (k.twist_n_per_m > 0.0) {
+        state->torn_twist_energy_j += 0.5 * k.twist_n_per_m * model.cell_stiffness[c] *
+                                      twist_difference(model.corners(c), state->positions).squaredNorm();
+      }
       ++torn;
     } else {
       add_cell_forces(springs, s, k, model.cell_stiffness[c], forces);
-      if (beta > 0.0) add_cell_damping(springs, s, k, model.cell_stiffness[c], beta, state->velocities, forces);
+      add_twist_forces(model, k, c, state->positions, 1.0, forces);
+      if (beta > 0.0) {
+        add_cell_damping(springs, s, k, model.cell_stiffness[c], beta, state->velocities, forces);
+        add_twist_forces(model, k, c, state->velocities, beta, forces);
+      }
     }
   }
   add_bending_forces(model, k, *state, state->positions, 1.0, forces);
@@ -167,6 +194,10 @@ ElasticEnergy elastic_energy(const SheetModel& model, const SheetParams& params,
       const double stretch = (x.col(s.b) - x.col(s.a)).norm() - s.rest_length_m;
       const double e = 0.5 * spring_constant_n_per_m(k, s, model.cell_stiffness[c]) * stretch * stretch;
       (s.diagonal ? energy.shear_j : energy.structural_j) += e;
+    }
+    if (k.twist_n_per_m > 0.0) {
+      energy.twist_j += 0.5 * k.twist_n_per_m * model.cell_stiffness[c] *
+                        twist_difference(model.corners(c), x).squaredNorm();
     }
   }
   for (const BendingTerm& t : model.bending) {

@@ -18,6 +18,7 @@ struct SpringConstants {
   double edge_n_per_m = 0.0;      // a full (interior) edge: 3/4 E t
   double diagonal_n_per_m = 0.0;  // 3/8 E t
   double bending_n_per_m = 0.0;   // D / h^2
+  double twist_n_per_m = 0.0;     // 2 D / h^2 with SheetSpec::twist_stiffness, else 0
   double anisotropy = 0.0;        // SheetParams::fibre_anisotropy
   double grain_rad = 0.0;         // the fibres' grain direction
 };
@@ -41,6 +42,13 @@ std::array<CellSpring, 6> cell_springs(const SheetModel& model, int cell);
 // (sheet_params.h).
 double spring_constant_n_per_m(const SpringConstants& k, const CellSpring& s, double cell_stiffness);
 
+// The twist term's stencil over a cell's corners in SheetModel::corners'
+// order (00, 10, 11, 01): Delta = sum c_i x_i, the mixed second difference
+// (sheet_model.h); its energy 1/2 k_t w |Delta|^2, its Hessian blocks
+// k_t w c_i c_j I.
+constexpr double kTwistCoefficient[4] = {1.0, -1.0, 1.0, -1.0};
+Eigen::Vector3d twist_difference(const std::array<int, 4>& corners, const Eigen::Matrix3Xd& x);
+
 // Whether bending term t acts: both its edges have an intact cell.
 bool bending_acts(const BendingTerm& t, const SheetState& state);
 
@@ -53,7 +61,8 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
 // springs (each cell's verdict depends on its own springs only, so tearing
 // a cell before the next is judged changes nothing): cells over their limit
 // are marked torn at step_number, the energy their springs held added to
-// state->torn_energy_j, the forces of the rest accumulated: elastic, plus
+// state->torn_energy_j (their twist terms' to state->torn_twist_energy_j),
+// the forces of the rest accumulated: elastic, plus
 // the dashpots of SheetSpec::stiffness_damping_s at state->velocities.
 // Returns the number of cells torn.
 int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
@@ -69,15 +78,19 @@ bool cell_overstretched(const SheetModel& model, const SheetParams& params, cons
 // bending part of a sheet bent to curvature kappa over area A tends to
 // 1/2 D kappa^2 A whatever the cell size (k_b = D / h^2 on a second
 // difference ~ kappa h^2, one term per h^2 of sheet per mesh direction).
+// twist_j: the intact cells' twist terms (SheetSpec::twist_stiffness; 0
+// without), the plate's D kappa^2 A for a twist w = kappa x y.
 struct ElasticEnergy {
   double structural_j = 0.0;
   double shear_j = 0.0;
   double bending_j = 0.0;
-  double total_j() const { return structural_j + shear_j + bending_j; }
+  double twist_j = 0.0;
+  double total_j() const { return structural_j + shear_j + bending_j + twist_j; }
 };
 ElasticEnergy elastic_energy(const SheetModel& model, const SheetParams& params, const SheetState& state);
 
-// Elastic energy of the intact springs and acting bending terms (J):
+// Elastic energy of the intact springs, acting bending terms and intact
+// cells' twist terms (J):
 // elastic_energy(...).total_j().
 double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state);
 // Kinetic energy of all vertices (J).

@@ -33,6 +33,26 @@
 // folding and leaves E_2D as above. A bending term acts while both of its
 // edges are held by at least one intact cell.
 //
+// Departure from the seed, optional (SheetSpec::twist_stiffness): the
+// second differences along the mesh lines see w_xx and w_yy only (a
+// smooth out-of-plane w gives h^2 w_xx, one term per h^2 per direction,
+// so D/2 (w_xx^2 + w_yy^2)); a twist w = kappa x y is linear along every
+// mesh line and costs nothing, a zero-energy mode of the lattice. In
+// plate terms they are the orthotropic D11 = D22 = D, D12 = D66 = 0, which
+// is no isotropic plate for any Poisson's ratio (isotropy needs
+// D12 + 2 D66 = D): a roll about a diagonal costs half of one about a mesh
+// line, and the saddle along the diagonals (the twist) nothing. The twist
+// term adds, per intact cell with corners 00, 10, 11, 01, the mixed
+// difference Delta = x00 - x10 + x11 - x01 (= h^2 w_xy, exactly for any
+// quadratic w; 0 under any affine map, so E_2D stands, and for a rigid
+// motion) with energy 1/2 k_t w |Delta|^2, k_t = 2 D / h^2 and w the
+// cell's stiffness factor: D w_xy^2 per area, i.e. D66 = D/2, and the
+// sheet becomes the isotropic Kirchhoff plate of Poisson's ratio 0,
+// D/2 (w_xx^2 + w_yy^2 + 2 w_xy^2); a twist w = kappa x y stores
+// D kappa^2 A. It goes with its cell when the cell tears; the energy it
+// held then is not counted as fracture energy (that is the springs'), but
+// kept apart (SheetState::torn_twist_energy_j, the ledger's torn_twist).
+//
 // Departure from the seed, optional: a cell's tear strain may follow its
 // fibre density too (tear_strain x w^q, q = tear_strain_density_exponent;
 // q = 0 is the seed's single limit), so that the gaps between clumps are

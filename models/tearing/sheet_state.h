@@ -27,6 +27,10 @@ struct SheetState {
   // itself took out of the sheet, apart from what the grips put into the
   // flaps' motion, drag and the strain still stored (tear_run.h).
   double torn_energy_j = 0.0;
+  // The energy (J) the twist terms of those cells held when they tore
+  // (SheetSpec::twist_stiffness; 0 without): lost with the cell, not
+  // counted as fracture energy (sheet_model.h).
+  double torn_twist_energy_j = 0.0;
   // The kinetic energy (J) the mass-proportional damping (damping_per_s) has
   // taken from the free vertices, summed over the run; the explicit
   // integrator keeps it (the implicit one leaves it 0: its damping is inside

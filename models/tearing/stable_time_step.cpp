@@ -30,6 +30,15 @@ double stable_time_step_s(const SheetModel& model, const SheetParams& params) {
       }
     }
   }
+  if (k.twist_n_per_m > 0.0) {  // the twist terms (sheet_model.h): |c_p c_q| = 1
+    for (int c = 0; c < model.cell_count(); ++c) {
+      const std::array<int, 4> v = model.corners(c);
+      const double kt = k.twist_n_per_m * model.cell_stiffness[c];
+      for (const int p : v) {
+        for (const int q : v) bound[p] += kt / std::sqrt(m[p] * m[q]);
+      }
+    }
+  }
   const double omega_max = std::sqrt(bound.maxCoeff());
   REPOSE_DEMAND(std::isfinite(omega_max));
   if (!(omega_max > 0.0)) return INFINITY;

@@ -8,7 +8,8 @@
 // each spring adding k to ||K_ii|| and ||K_ij|| (its Hessian's norm is k
 // while it is not compressed below half its rest length; the geometric
 // part (T/L)(I - n n^T) is smaller than k then), each bending term
-// k_b |c_i c_j| with c = (1, -2, 1). Every spring of an untorn sheet is
+// k_b |c_i c_j| with c = (1, -2, 1), each cell's twist term (when the sheet
+// has them) k_t w over its four corners. Every spring of an untorn sheet is
 // counted, so the bound holds whatever tears later. It is conservative: the
 // test compares it with the exact w_max of small sheets. With the springs'
 // dashpots (SheetSpec::stiffness_damping_s = beta, the damping ratio of mode

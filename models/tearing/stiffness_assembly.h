@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 
+#include "models/tearing/sheet_forces.h"
+
 namespace repose {
 
 // The bending terms' stencil: term t couples a, b, c by kb w_t c_p c_q I.
@@ -96,8 +98,8 @@ struct StiffnessAssembly {
   const Eigen::VectorXd& dv_all;
   double dt2;
   double dt_beta;  // dt x stiffness_damping_s
-  // false: the bending terms add to the right-hand side only (their blocks,
-  // constant while no cell tears, are in the store already)
+  // false: the bending and twist terms add to the right-hand side only
+  // (their blocks, constant while no cell tears, are in the store already)
   bool bending_blocks = true;
 
   // any block, any vertices: held rows skipped, held columns to the right;
@@ -161,7 +163,31 @@ struct StiffnessAssembly {
       for (int q = 0; q < 3; ++q) target.diagonal(first + 3 * p + q, left_p * kBendingCoefficient[q]);
     }
   }
-};
 
+  // A cell's twist term (sheet_model.h; kTwistCoefficient c over its
+  // corners v): blocks (v_p, v_q) of -K are kt c_p c_q I, constant.
+  void add_twist(int first, const std::array<int, 4>& v, double kt) {
+    const double left_scale = dt2 + dt_beta;
+    if (!(free(v[0]) && free(v[1]) && free(v[2]) && free(v[3]))) {
+      for (int p = 0; p < 4; ++p) {
+        for (int q = 0; q < 4; ++q) {
+          const Eigen::Matrix3d block = kt * kTwistCoefficient[p] * kTwistCoefficient[q] * Eigen::Matrix3d::Identity();
+          add_block(first + 4 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)], block,
+                    left_scale * block, bending_blocks);
+        }
+      }
+      return;
+    }
+    // K v_n of the term on vertex p: kt c_p Delta(v_n)
+    Eigen::Vector3d twist = Eigen::Vector3d::Zero();
+    for (int q = 0; q < 4; ++q) twist += kTwistCoefficient[q] * v0.segment<3>(3 * v[static_cast<std::size_t>(q)]);
+    for (int p = 0; p < 4; ++p) {
+      rhs_of(v[static_cast<std::size_t>(p)]) -= (dt2 * kt * kTwistCoefficient[p]) * twist;
+      if (!bending_blocks) continue;
+      const double left_p = left_scale * kt * kTwistCoefficient[p];
+      for (int q = 0; q < 4; ++q) target.diagonal(first + 4 * p + q, left_p * kTwistCoefficient[q]);
+    }
+  }
+};
 
 }  // namespace repose

@@ -38,7 +38,7 @@ struct TearRunOptions {
 
 // Where the grips' work went by the end of a run (J): the sheet starts at
 // rest in its rest shape, so
-//   grip work + gravity's work = stored + kinetic + damping + fracture + residual,
+//   grip work + gravity's work = stored + kinetic + damping + fracture + torn twist + residual,
 // the residual being the integrator's own energy error plus what the ledger
 // does not itemise (bending terms that stop acting when their cells tear,
 // the dashpots of stiffness_damping_s). Kinetic energy and gravity's work
@@ -46,12 +46,13 @@ struct TearRunOptions {
 // carry their weight). damping_j is 0 for the implicit integrator, whose
 // damping then sits in the residual.
 struct EnergyLedger {
-  double stored_j = 0.0;     // elastic, intact springs and acting bending terms
+  double stored_j = 0.0;     // elastic, intact springs, acting bending and twist terms
   ElasticEnergy stored;      // stored_j by kind (its total_j() is stored_j)
   double kinetic_j = 0.0;    // free degrees of freedom
   double gravity_j = 0.0;    // work gravity did on them
   double damping_j = 0.0;    // SheetState::damping_loss_j
   double fracture_j = 0.0;   // SheetState::torn_energy_j
+  double torn_twist_j = 0.0;  // SheetState::torn_twist_energy_j
   double residual_j = 0.0;
 };
 

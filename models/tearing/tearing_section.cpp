@@ -16,6 +16,7 @@ void sheet_fields(V& v, SheetSpec& s) {
   v.number("grammage_kg_per_m2", s.grammage_kg_per_m2, Range::positive());
   v.integer("cells_x", s.cells_x, IntRange{1, 2000});
   v.number("bending_stiffness_n_m", s.bending_stiffness_n_m, Range::non_negative());
+  v.boolean("twist_stiffness", s.twist_stiffness);
   v.number("stiffness_density_exponent", s.stiffness_density_exponent, Range::closed(0, 8));
   v.number("tear_strain_density_exponent", s.tear_strain_density_exponent, Range::closed(0, 8));
   v.choice("tear_rule", s.tear_rule, ChoiceTable<TearRule>{{"strain", TearRule::kStrain}, {"energy", TearRule::kEnergy}});

@@ -9,6 +9,7 @@
 //     grammage_kg_per_m2: 0.08      # 80 g/m^2
 //     cells_x: 50                   # square cells across the width
 //     bending_stiffness_n_m: 3.0e-4
+//     twist_stiffness: false        # true: a twist term per cell, the plate isotropic (sheet_model.h)
 //     stiffness_density_exponent: 3 # springs ~ fibre density^exponent
 //     tear_strain_density_exponent: 1
 //     damping_per_s: 2000

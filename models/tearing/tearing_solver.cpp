@@ -157,7 +157,8 @@ class CompiledTearing final : public CompiledSolver {
         {"stored", t.ledger.stored_j},   {"kinetic", t.ledger.kinetic_j},   {"gravity", t.ledger.gravity_j},
         {"damping", t.ledger.damping_j}, {"fracture", t.ledger.fracture_j}, {"residual", t.ledger.residual_j},
         {"stored_structural", t.ledger.stored.structural_j}, {"stored_shear", t.ledger.stored.shear_j},
-        {"stored_bending", t.ledger.stored.bending_j}};
+        {"stored_bending", t.ledger.stored.bending_j}, {"stored_twist", t.ledger.stored.twist_j},
+        {"torn_twist", t.ledger.torn_twist_j}};
     for (const auto& [name, joules] : ledger) {
       run->set(fmt::format("energy.{}_j", name), joules, "J");
       run->set(fmt::format("energy.{}_per_length_j_per_m", name), t.tear_length_m > 0.0 ? joules / t.tear_length_m : 0.0,
@@ -179,6 +180,13 @@ class CompiledTearing final : public CompiledSolver {
     std::vector<double> z(static_cast<std::size_t>(model_.vertex_count()));
     for (int v = 0; v < model_.vertex_count(); ++v) z[static_cast<std::size_t>(v)] = state.positions(2, v);
     run->fields["displacement_z_m"] = grid_field(model_.cells_x + 1, model_.cells_y + 1, h, -0.5 * h, z);
+    // the vertices' velocities, for where the kinetic energy sits
+    // (experiments/tearing/bending_spectrum.py)
+    for (int a = 0; a < 3; ++a) {
+      for (int v = 0; v < model_.vertex_count(); ++v) z[static_cast<std::size_t>(v)] = state.velocities(a, v);
+      run->fields[fmt::format("velocity_{}_m_per_s", "xyz"[a])] =
+          grid_field(model_.cells_x + 1, model_.cells_y + 1, h, -0.5 * h, z);
+    }
     Grid pixels;
     pixels.nx = images_.nx();
     pixels.ny = images_.ny();

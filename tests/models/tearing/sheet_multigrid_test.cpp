@@ -175,7 +175,9 @@ TEST(SheetMultigrid, TheBlockCycleReusingItsWorkspacesGivesTheBitsOfAFreshOne) {
   std::vector<char> free_place(static_cast<std::size_t>(first.size()), 0);
   for (const int place : blocks.block_place_of_rows()) free_place[static_cast<std::size_t>(place)] = 1;
   for (Eigen::Index k = 0; k < first.size(); ++k) {
-    if (!free_place[static_cast<std::size_t>(k)]) EXPECT_EQ(first[k], 0.0) << k;
+    if (!free_place[static_cast<std::size_t>(k)]) {
+      EXPECT_EQ(first[k], 0.0) << k;
+    }
   }
 }
 

@@ -38,15 +38,18 @@ double exact_stable_step(const SheetModel& model, const SheetParams& params) {
 }
 
 TEST(StableTimeStep, IsBelowTheExactLimitAndWithinAFactorOfTwoOfIt) {
-  for (const std::uint64_t seed : {1u, 2u, 3u}) {
-    for (const int cells : {1, 3, 6}) {
-      SheetSpec spec = free_sheet_spec(0.02, cells);
-      spec.bending_stiffness_n_m = 3e-4 * seed * seed * 100;  // make bending matter too
-      const SheetModel model = fibre_sheet(spec, seed);
-      const SheetParams params;
-      const double bound = stable_time_step_s(model, params), exact = exact_stable_step(model, params);
-      EXPECT_LE(bound, exact * (1 + 1e-6)) << "seed " << seed << ", " << cells << " cells";
-      EXPECT_GE(bound, 0.5 * exact) << "seed " << seed << ", " << cells << " cells";
+  for (const bool twist : {false, true}) {
+    for (const std::uint64_t seed : {1u, 2u, 3u}) {
+      for (const int cells : {1, 3, 6}) {
+        SheetSpec spec = free_sheet_spec(0.02, cells);
+        spec.bending_stiffness_n_m = 3e-4 * seed * seed * 100;  // make bending matter too
+        spec.twist_stiffness = twist;
+        const SheetModel model = fibre_sheet(spec, seed);
+        const SheetParams params;
+        const double bound = stable_time_step_s(model, params), exact = exact_stable_step(model, params);
+        EXPECT_LE(bound, exact * (1 + 1e-6)) << "seed " << seed << ", " << cells << " cells, twist " << twist;
+        EXPECT_GE(bound, 0.5 * exact) << "seed " << seed << ", " << cells << " cells, twist " << twist;
+      }
     }
   }
 }

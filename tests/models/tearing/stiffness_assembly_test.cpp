@@ -1,4 +1,4 @@
-// The implicit integrator's assembly of springs and bending terms
+// The implicit integrator's assembly of springs, bending and twist terms
 // (stiffness_assembly.h): the documented blocks and right-hand side, the
 // same system in Eigen's compressed store and in the float blocks, and
 // held axes moved to the right-hand side exactly as eliminating them from
@@ -200,6 +200,55 @@ TEST(StiffnessAssembly, HeldAxesAreEliminatedFromTheAllFreeSystem) {
     EXPECT_LT((a.block - a_ff).norm(), 1e-6 * a_ff.norm()) << "mask " << mask;
     EXPECT_LT((a.rhs_csc - rhs).norm(), 1e-14 * rhs.norm()) << "mask " << mask;
     EXPECT_LT((a.rhs_block - rhs).norm(), 1e-14 * rhs.norm()) << "mask " << mask;
+  }
+}
+
+std::vector<std::pair<int, int>> twist_pairs() {
+  std::vector<std::pair<int, int>> pairs;
+  for (int p = 0; p < 4; ++p) {
+    for (int q = 0; q < 4; ++q) pairs.emplace_back(p, q);
+  }
+  return pairs;
+}
+
+// A cell's twist term on four free vertices: blocks (dt^2 + dt beta) kt
+// c_p c_q I, right-hand side -dt^2 kt c_p Delta(v0) (kTwistCoefficient);
+// with axes held, the all-free system with them eliminated.
+TEST(StiffnessAssembly, ATwistTermGivesItsStencilInBothStoresAndEliminatesHeldAxes) {
+  std::mt19937_64 rng(4);
+  const double kt = 6.0, dt2 = 1e-4, dt_beta = 2e-5;
+  const Eigen::VectorXd v0 = random_vector(12, rng), dv = random_vector(12, rng);
+  const auto add = [&](auto* assembly) { assembly->add_twist(0, {0, 1, 2, 3}, kt); };
+  TwoStores free_store(4, std::vector<bool>(12, false), twist_pairs());
+  const Assembled all = assemble_both(&free_store, v0, dv, dt2, dt_beta, add);
+  Eigen::Vector3d twist = Eigen::Vector3d::Zero();
+  for (int q = 0; q < 4; ++q) twist += kTwistCoefficient[q] * v0.segment<3>(3 * q);
+  Eigen::MatrixXd expected(12, 12);
+  Eigen::VectorXd rhs(12);
+  for (int p = 0; p < 4; ++p) {
+    for (int q = 0; q < 4; ++q) {
+      expected.block<3, 3>(3 * p, 3 * q) =
+          (dt2 + dt_beta) * kt * kTwistCoefficient[p] * kTwistCoefficient[q] * Eigen::Matrix3d::Identity();
+    }
+    rhs.segment<3>(3 * p) = -dt2 * kt * kTwistCoefficient[p] * twist;
+  }
+  EXPECT_LT((all.csc - expected).norm(), 1e-15 * expected.norm());
+  EXPECT_LT((all.block - expected).norm(), 1e-6 * expected.norm());
+  EXPECT_LT((all.rhs_csc - rhs).norm(), 1e-15 * rhs.norm());
+  EXPECT_LT((all.rhs_block - rhs).norm(), 1e-15 * rhs.norm());
+  for (const unsigned mask : {0b000000000001u, 0b000000111000u, 0b010001010100u, 0b111000000111u}) {
+    std::vector<bool> held(12);
+    for (int k = 0; k < 12; ++k) held[static_cast<std::size_t>(k)] = (mask >> k) & 1u;
+    TwoStores s(4, held, twist_pairs());
+    const Assembled a = assemble_both(&s, v0, dv, dt2, dt_beta, add);
+    std::vector<int> free_rows, held_rows;
+    for (int k = 0; k < 12; ++k) (held[static_cast<std::size_t>(k)] ? held_rows : free_rows).push_back(k);
+    const Eigen::MatrixXd a_ff = all.csc(free_rows, free_rows), a_fh = all.csc(free_rows, held_rows);
+    const Eigen::VectorXd r = all.rhs_csc(free_rows) - a_fh * dv(held_rows);
+    EXPECT_LT((a.csc - a_ff).norm(), 1e-15 * a_ff.norm()) << "mask " << mask;
+    EXPECT_LT((a.block - a_ff).norm(), 1e-6 * a_ff.norm()) << "mask " << mask;
+    EXPECT_LT((a.rhs_csc - r).norm(), 1e-14 * r.norm()) << "mask " << mask;
+    EXPECT_LT((a.rhs_block - r).norm(), 1e-14 * r.norm()) << "mask " << mask;
   }
 }
 

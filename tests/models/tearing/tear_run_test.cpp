@@ -21,8 +21,9 @@ using namespace repose::testing;
 
 // A uniform 21-cell sheet notched in its middle column under the seed's
 // twist, and a run that stops when the tear is 24 mm deep.
-SheetModel notched_twisted_sheet() {
+SheetModel notched_twisted_sheet(bool twist_stiffness = false) {
   SheetSpec spec = free_sheet_spec(0.042, 21);
+  spec.twist_stiffness = twist_stiffness;
   spec.damping_per_s = 2e3;
   spec.grips = seed_twist_grips(0.042, 0.042, 0.006, 0.006, 4.0);
   spec.notch_length_m = 0.004;
@@ -242,6 +243,20 @@ TEST(TearRun, TheEnergyLedgerAccountsForTheGripsWork) {
   EXPECT_LT(std::abs(e.residual_j), 0.02 * run.grip_work_j)
       << "stored " << e.stored_j << " kinetic " << e.kinetic_j << " damping " << e.damping_j << " fracture "
       << e.fracture_j << " grips " << run.grip_work_j;
+}
+
+// With the twist terms (SheetSpec::twist_stiffness) the ledger holds their
+// energy, stored and lost with the torn cells, and still closes.
+TEST(TearRun, TheEnergyLedgerClosesWithTheTwistTerms) {
+  const TearRun run = run_tear(notched_twisted_sheet(true), SheetParams{}, stop_at_24_mm());
+  const EnergyLedger& e = run.ledger;
+  ASSERT_GT(run.tear_length_m, 0.0);
+  EXPECT_GT(e.stored.twist_j, 0.0);
+  EXPECT_GT(e.torn_twist_j, 0.0);
+  EXPECT_NEAR(e.stored.total_j(), e.stored_j, 1e-14 * e.stored_j);
+  EXPECT_LT(std::abs(e.residual_j), 0.02 * run.grip_work_j)
+      << "torn twist " << e.torn_twist_j << " stored twist " << e.stored.twist_j << " grips " << run.grip_work_j;
+  EXPECT_EQ(run_tear(notched_twisted_sheet(false), SheetParams{}, stop_at_24_mm()).ledger.torn_twist_j, 0.0);
 }
 
 // Snapshots are the states at the end of the first step reaching each time,

@@ -48,7 +48,9 @@ TEST(TearingSection, ReadsTheSheetFibresTwistAndParameters) {
 }
 
 TEST(TearingSection, WritesWhatReadsBackToTheSameSection) {
-  const Scene scene = load("  cells_x: 10\n  notch_length_m: 0.01\n  stiffness_damping_s: 2.0e-7\n  fibres: {grain_spread_deg: 30}\n"
+  const bool twist = !SheetSpec{}.twist_stiffness;  // not the default
+  const Scene scene = load("  cells_x: 10\n  notch_length_m: 0.01\n  stiffness_damping_s: 2.0e-7\n  fibres: {grain_spread_deg: 30}\n" +
+                           std::string(twist ? "  twist_stiffness: true\n" : "  twist_stiffness: false\n") +
                            "  grips: [{x_min_m: 0, x_max_m: 0.02, y_min_m: 0.09, y_max_m: 0.1, velocity_m_per_s: [0, 0, 1],"
                            " hold_z: true, hold_x: false}]\n");
   const Scene again = load_scene_from_string(scene_to_yaml(scene), "/tmp/again.yaml", solver_registry().sections());
@@ -58,6 +60,8 @@ TEST(TearingSection, WritesWhatReadsBackToTheSameSection) {
   EXPECT_EQ(a.sheet.notch_length_m, b.sheet.notch_length_m);
   EXPECT_EQ(a.sheet.stiffness_damping_s, 2.0e-7);
   EXPECT_EQ(a.sheet.stiffness_damping_s, b.sheet.stiffness_damping_s);
+  EXPECT_EQ(a.sheet.twist_stiffness, twist);
+  EXPECT_EQ(b.sheet.twist_stiffness, twist);
   EXPECT_EQ(a.sheet.fibres.grain_spread_rad, b.sheet.fibres.grain_spread_rad);
   ASSERT_EQ(b.sheet.grips.size(), 1u);
   EXPECT_EQ(a.sheet.grips[0].held_axes, b.sheet.grips[0].held_axes);
@@ -72,6 +76,7 @@ TEST(TearingSection, ErrorsNameTheKey) {
   EXPECT_NE(error_of("  fibres: {clump_length_min_m: 0.0001}\n").find("clump_length_min_m"), std::string::npos);
   EXPECT_NE(error_of("  tear_strain: -1\n").find("tear_strain"), std::string::npos);
   EXPECT_NE(error_of("  stiffness_damping_s: -1e-7\n").find("stiffness_damping_s"), std::string::npos);
+  EXPECT_NE(error_of("  twist_stiffness: 3\n").find("twist_stiffness"), std::string::npos);
   EXPECT_NE(error_of("  time_step_fraction: 2\n").find("time_step_fraction"), std::string::npos);
   EXPECT_NE(error_of("  colour: red\n").find("colour"), std::string::npos);
   EXPECT_NE(error_of("  twist: {}\n  grips: []\n").find("grips"), std::string::npos);
