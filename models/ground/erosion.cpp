@@ -65,13 +65,30 @@ void scale_groups(std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t,
 }
 
 // Never above an object: scales the inflow of each capped cell (one under
-// an object) down to its room.
-void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t, std::size_t>>* capped) {
-  capped->clear();
-  for (std::size_t k = 0; k < fluxes->size(); ++k) {
-    if (std::isfinite((*fluxes)[k].ceiling_m)) capped->emplace_back((*fluxes)[k].to, k);
+// an object) down to its room. `inflow` is per cell, all 0 between calls:
+// each capped cell's inflow is summed there in flux order (as a group of
+// the cell's fluxes would be), read, and cleared again, so a pass costs
+// what flows, not the grid's size, and sorts nothing.
+void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<double>* inflow) {
+  std::vector<double>& in = *inflow;
+  for (const Flux& f : *fluxes) {
+    if (std::isfinite(f.ceiling_m)) in[static_cast<std::size_t>(f.to)] += f.amount;
   }
-  scale_groups(fluxes, capped, [h](std::int64_t cell, const Flux& f) { return std::max(0.0, f.ceiling_m - h[cell]); });
+  for (Flux& f : *fluxes) {
+    if (!std::isfinite(f.ceiling_m)) continue;
+    const double total = in[static_cast<std::size_t>(f.to)], allowed = std::max(0.0, f.ceiling_m - h[f.to]);
+    if (total > allowed) f.amount *= allowed / total;
+  }
+  for (const Flux& f : *fluxes) {
+    if (std::isfinite(f.ceiling_m)) in[static_cast<std::size_t>(f.to)] = 0.0;
+  }
+}
+
+// The state's per-cell inflow scratch (all 0), sized to the grid.
+std::vector<double>& inflow_scratch(const Grid& g, GroundState* state) {
+  std::vector<double>& inflow = state->erosion_scratch.inflow_m;
+  if (inflow.size() != g.cell_count()) inflow.assign(g.cell_count(), 0.0);
+  return inflow;
 }
 
 // Inclined bed (erosion.h): per material, the height differences a pair
@@ -156,6 +173,7 @@ ErosionResult erode_inclined(const GroundModel& model, const GroundParams& param
   ErosionMemory& memory = state->erosion;
   std::vector<Flux> fluxes;
   std::vector<std::pair<std::int64_t, std::size_t>> scratch;
+  std::vector<double>& inflow = inflow_scratch(g, state);
   for (int p = 0; p < passes && !memory.empty(); ++p) {
     fluxes.clear();
     for (const std::int64_t c : memory.cells()) {
@@ -180,7 +198,7 @@ ErosionResult erode_inclined(const GroundModel& model, const GroundParams& param
     if (fluxes.empty()) break;
     result.passes = p + 1;
     cap_outflow(h, &fluxes, &scratch);
-    cap_inflow(h, &fluxes, &scratch);
+    cap_inflow(h, &fluxes, &inflow);
     result.moves += apply_fluxes(fluxes, FloorAtZero::kYes, h, &memory);
   }
   return result;
@@ -297,7 +315,7 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
 
   REPOSE_DEMAND(g.cell_count() <= static_cast<std::size_t>(std::numeric_limits<int>::max()));
   std::vector<Flux> fluxes;
-  std::vector<std::pair<std::int64_t, std::size_t>> capped;
+  std::vector<double>& inflow = inflow_scratch(g, state);
   std::vector<std::array<int, 2>> ij;  // of memory.cells(), divided out once: a pass would repeat it
   for (int p = 0; p < passes && !memory.empty(); ++p) {
     fluxes.clear();
@@ -312,7 +330,7 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
     if (fluxes.empty()) break;
     result.passes = p + 1;
 
-    cap_inflow(h, &fluxes, &capped);
+    cap_inflow(h, &fluxes, &inflow);
 
     result.moves += apply_fluxes(fluxes, FloorAtZero::kNo, h, &memory);
   }
