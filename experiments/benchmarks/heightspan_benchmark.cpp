@@ -13,6 +13,9 @@
 //          false, so that only the ground model's collision, displacement
 //          and erosion run: the cost the height-span model adds is the
 //          difference;
+//   Scoop20Passes: the Scoop case with 20 erosion passes per step (En = 20)
+//          instead of the default material's 5, as the fitted scoop scenes
+//          run (experiments/scenes/ref_scoop*.yaml);
 //   ScoopPath: the Scoop case's 199 steps once, for instruction counts:
 //          valgrind --tool=callgrind --toggle-collect='repose::step(repose::HeightSpanModel*'
 //          build/bin/heightspan_benchmark --benchmark_filter=BM_ScoopPath
@@ -53,13 +56,14 @@ Keyframe key(double t, double x, double z, double pitch_deg) {
   return k;
 }
 
-enum class Case { kScoop, kCarry, kTip, kScoopGroundPath, kTipOsmesa };
+enum class Case { kScoop, kCarry, kTip, kScoopGroundPath, kTipOsmesa, kScoop20Passes };
 
 class ScoopRun {
  public:
   explicit ScoopRun(Case c) {
     const bool holds = c != Case::kScoopGroundPath, osmesa = c == Case::kTipOsmesa;
-    if (!holds) c = Case::kScoop;
+    const int passes = c == Case::kScoop20Passes ? 20 : 0;  // 0: the default material's
+    if (!holds || passes > 0) c = Case::kScoop;
     if (osmesa) c = Case::kTip;
     Scene scene;
     scene.seed = 1;
@@ -87,6 +91,7 @@ class ScoopRun {
     scene = with_heightspan(with_ground_options(std::move(scene), GroundModelSpec{}), section);
     model_ = build_heightspan_model(scene);
     params_ = default_params(model_.ground);
+    if (passes > 0) params_.materials.front().erosion_iterations = passes;
     renderer_ = make_cpu_underside_renderer();
     first_ = c == Case::kScoop ? 1 : c == Case::kCarry ? static_cast<int>(t_lift) : static_cast<int>(t_carry);
     last_ = c == Case::kScoop ? static_cast<int>(t_scoop) : c == Case::kCarry ? static_cast<int>(t_carry)
@@ -140,6 +145,7 @@ void BM_Step(benchmark::State& bench) {
 }
 
 BENCHMARK(BM_Step<Case::kScoop>)->Name("BM_ScoopStep")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step<Case::kScoop20Passes>)->Name("BM_Scoop20PassesStep")->Unit(benchmark::kMillisecond);
 // The whole scoop path once (199 steps, the same ones every run): a fixed
 // workload for instruction counts (valgrind --tool=callgrind), which a
 // shared machine's load does not change.

@@ -65,13 +65,30 @@ void scale_groups(std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t,
 }
 
 // Never above an object: scales the inflow of each capped cell (one under
-// an object) down to its room.
-void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t, std::size_t>>* capped) {
-  capped->clear();
-  for (std::size_t k = 0; k < fluxes->size(); ++k) {
-    if (std::isfinite((*fluxes)[k].ceiling_m)) capped->emplace_back((*fluxes)[k].to, k);
+// an object) down to its room. `inflow` is per cell, all 0 between calls:
+// each capped cell's inflow is summed there in flux order (as a group of
+// the cell's fluxes would be), read, and cleared again, so a pass costs
+// what flows, not the grid's size, and sorts nothing.
+void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<double>* inflow) {
+  std::vector<double>& in = *inflow;
+  for (const Flux& f : *fluxes) {
+    if (std::isfinite(f.ceiling_m)) in[static_cast<std::size_t>(f.to)] += f.amount;
   }
-  scale_groups(fluxes, capped, [h](std::int64_t cell, const Flux& f) { return std::max(0.0, f.ceiling_m - h[cell]); });
+  for (Flux& f : *fluxes) {
+    if (!std::isfinite(f.ceiling_m)) continue;
+    const double total = in[static_cast<std::size_t>(f.to)], allowed = std::max(0.0, f.ceiling_m - h[f.to]);
+    if (total > allowed) f.amount *= allowed / total;
+  }
+  for (const Flux& f : *fluxes) {
+    if (std::isfinite(f.ceiling_m)) in[static_cast<std::size_t>(f.to)] = 0.0;
+  }
+}
+
+// The state's per-cell inflow scratch (all 0), sized to the grid.
+std::vector<double>& inflow_scratch(const Grid& g, GroundState* state) {
+  std::vector<double>& inflow = state->erosion_scratch.inflow_m;
+  if (inflow.size() != g.cell_count()) inflow.assign(g.cell_count(), 0.0);
+  return inflow;
 }
 
 // Inclined bed (erosion.h): per material, the height differences a pair
@@ -156,6 +173,7 @@ ErosionResult erode_inclined(const GroundModel& model, const GroundParams& param
   ErosionMemory& memory = state->erosion;
   std::vector<Flux> fluxes;
   std::vector<std::pair<std::int64_t, std::size_t>> scratch;
+  std::vector<double>& inflow = inflow_scratch(g, state);
   for (int p = 0; p < passes && !memory.empty(); ++p) {
     fluxes.clear();
     for (const std::int64_t c : memory.cells()) {
@@ -180,11 +198,59 @@ ErosionResult erode_inclined(const GroundModel& model, const GroundParams& param
     if (fluxes.empty()) break;
     result.passes = p + 1;
     cap_outflow(h, &fluxes, &scratch);
-    cap_inflow(h, &fluxes, &scratch);
+    cap_inflow(h, &fluxes, &inflow);
     result.moves += apply_fluxes(fluxes, FloorAtZero::kYes, h, &memory);
   }
   return result;
 }
+
+// One pass's fluxes on a level bed from the pairs of the remembered cells:
+// each pair once (a neighbour before the cell in storage is skipped when it
+// is remembered too: it visits the pair itself), the cells in memory order,
+// each cell's neighbours at +x, -x, +y, -y; a flux from the higher cell of
+// a pair whose difference exceeds its rule by more than the tolerance.
+struct PairScan {
+  const GroundModel& model;
+  const std::vector<PairRule>& rules;
+  const Ceiling& ceiling;
+  const ErosionMemory& memory;
+  const double* h;
+  double tolerance_m;
+  int pass;
+  bool one_material;
+  std::vector<Flux>* fluxes;
+  double min_max_dh_m;  // the smallest of the rules' max_dh_m
+  long long visits = 0;
+
+  // Cell c = (i, j); the neighbours' indices follow from the row-major grid.
+  void cell(std::int64_t c, int i, int j) {
+    const int nx = model.grid.nx, ny = model.grid.ny;  // closed boundary: no pair leaves the grid
+    if (i + 1 < nx) pair(c, i, j, c + 1, i + 1, j);
+    if (i > 0 && !memory.contains(c - 1)) pair(c, i, j, c - 1, i - 1, j);
+    if (j + 1 < ny) pair(c, i, j, c + nx, i, j + 1);
+    if (j > 0 && !memory.contains(c - nx)) pair(c, i, j, c - nx, i, j - 1);
+  }
+
+  // Inline: most pairs are within their limits. A difference no larger
+  // than the smallest limit (plus the tolerance) gives no flux whichever
+  // cell is higher, so only the others look their rule up.
+  void pair(std::int64_t c, int i, int j, std::int64_t n, int ni, int nj) {
+    ++visits;
+    if (std::abs(h[c] - h[n]) - min_max_dh_m > tolerance_m) add(c, i, j, n, ni, nj);
+  }
+
+  void add(std::int64_t c, int i, int j, std::int64_t n, int ni, int nj) {
+    const double d = std::abs(h[c] - h[n]);  // the higher cell's difference h[hi] - h[lo], exactly
+    const bool c_higher = h[c] > h[n];
+    const std::int64_t hi = c_higher ? c : n, lo = c_higher ? n : c;
+    // one material: every pass is its own (pass < passes), no material map needed
+    const PairRule& rule = rules[one_material ? 0 : static_cast<std::size_t>(model.material_at(hi))];
+    if (pass >= rule.passes) return;
+    const double excess = d - rule.max_dh_m;
+    if (!(excess > tolerance_m)) return;
+    fluxes->push_back({hi, lo, rule.sigma * excess, c_higher ? ceiling.at(ni, nj) : ceiling.at(i, j)});
+  }
+};
 
 }  // namespace
 
@@ -242,12 +308,14 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
   for (const PairRule& r : rules) passes = std::max(passes, r.passes);
   const double tolerance_m = kErosionToleranceFraction * g.cell_size_m;
   const bool one_material = rules.size() == 1;
+  double min_max_dh_m = std::numeric_limits<double>::infinity();
+  for (const PairRule& r : rules) min_max_dh_m = std::min(min_max_dh_m, r.max_dh_m);
   double* h = state->height.heights().data();
   ErosionMemory& memory = state->erosion;
 
   REPOSE_DEMAND(g.cell_count() <= static_cast<std::size_t>(std::numeric_limits<int>::max()));
   std::vector<Flux> fluxes;
-  std::vector<std::pair<std::int64_t, std::size_t>> capped;
+  std::vector<double>& inflow = inflow_scratch(g, state);
   std::vector<std::array<int, 2>> ij;  // of memory.cells(), divided out once: a pass would repeat it
   for (int p = 0; p < passes && !memory.empty(); ++p) {
     fluxes.clear();
@@ -256,32 +324,13 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
       const int c = static_cast<int>(cells[k]);
       ij.push_back({c % g.nx, c / g.nx});
     }
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-      const std::int64_t c = cells[k];
-      const int i = ij[k][0], j = ij[k][1];
-      for (const auto& o : kNeighbours) {
-        const int ni = i + o[0], nj = j + o[1];
-        if (!g.contains(ni, nj)) continue;  // closed boundary
-        const std::int64_t n = model.cell(ni, nj);
-        if (n < c && memory.contains(n)) continue;  // each pair once
-        ++result.pair_visits;
-        // one material: every pass is its own (p < passes), and the higher
-        // cell's difference h[hi] - h[lo] is |h[c] - h[n]| exactly, so the
-        // pair needs neither the material map nor the comparison first
-        if (one_material && !(std::abs(h[c] - h[n]) - rules[0].max_dh_m > tolerance_m)) continue;
-        const bool c_higher = h[c] > h[n];
-        const std::int64_t hi = c_higher ? c : n, lo = c_higher ? n : c;
-        const PairRule& rule = rules[one_material ? 0 : model.material_at(hi)];
-        if (p >= rule.passes) continue;
-        const double excess = (h[hi] - h[lo]) - rule.max_dh_m;
-        if (!(excess > tolerance_m)) continue;
-        fluxes.push_back({hi, lo, rule.sigma * excess, c_higher ? ceiling.at(ni, nj) : ceiling.at(i, j)});
-      }
-    }
+    PairScan scan{model, rules, ceiling, memory, h, tolerance_m, p, one_material, &fluxes, min_max_dh_m};
+    for (std::size_t k = 0; k < cells.size(); ++k) scan.cell(cells[k], ij[k][0], ij[k][1]);
+    result.pair_visits += scan.visits;
     if (fluxes.empty()) break;
     result.passes = p + 1;
 
-    cap_inflow(h, &fluxes, &capped);
+    cap_inflow(h, &fluxes, &inflow);
 
     result.moves += apply_fluxes(fluxes, FloorAtZero::kNo, h, &memory);
   }

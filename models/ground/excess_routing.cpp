@@ -175,7 +175,7 @@ bool is_open(const ExcessRouting& in, int i, int j) { return in.on_open_ground(i
 class Rings {
  public:
   explicit Rings(const ExcessRouting& in) : in_(in), window_(in.region.fp) {
-    resize_window(8);
+    resize_window(16);
     const Footprint& fp = in.region.fp;
     rings_.emplace_back();
     for (int j = fp.j0; j < fp.j0 + fp.nj; ++j) {

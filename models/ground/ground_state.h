@@ -8,6 +8,7 @@
 #include "models/core/geometry/height_field.h"
 #include "models/core/geometry/triangle_mesh.h"
 #include "models/ground/erosion_memory.h"
+#include "models/ground/erosion_scratch.h"
 #include "models/ground/swept_mesh.h"
 #include "models/ground/volume_ledger.h"
 
@@ -22,6 +23,8 @@ struct GroundState {
   // Per model object (or none yet): what the vertical sweep of its body
   // keeps from step to step. Derived data only: the results do not depend on it.
   std::vector<VerticalSweepCache> sweep_caches;
+  // Scratch of erosion kept between steps (erosion.h). Derived data only.
+  ErosionScratch erosion_scratch;
   VolumeLedger ledger;
   double time_s = 0.0;
   int step_index = 0;

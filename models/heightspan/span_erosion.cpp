@@ -22,39 +22,86 @@ constexpr int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 
 using namespace span_erosion_detail;
 
-// The map's columns and the ground under them, one ring of cells beyond.
-struct Columns {
+// The map's columns and the ground under them, two rings of cells beyond
+// (the second only so that a ring column's neighbours need no bounds
+// check: nothing beyond the first ring has spans or takes part). Local
+// indices run row-major over that padded window. Each local column's first
+// span, span count (0 beyond the map), lowest span's top and bottom (+inf
+// without spans) and ground cell (-1 beyond the grid) are looked up once
+// per call: the spans' solids and the cells do not change during erosion.
+class Columns {
+ public:
+  static constexpr int kPad = 2;
   const SpanMap& map;
   const HeightField& ground;
   CellOffset off;
 
-  int stride() const { return map.grid.nx + 2; }
-  std::int64_t local(int i, int j) const { return static_cast<std::int64_t>(j + 1) * stride() + (i + 1); }
-  std::size_t local_count() const { return static_cast<std::size_t>(stride()) * (map.grid.ny + 2); }
-  int count(int i, int j) const { return map.grid.contains(i, j) ? map.count(map.cell(i, j)) : 0; }
-  const Span* spans(int i, int j) const { return map.begin(map.cell(i, j)); }
-  bool has_ground(int i, int j) const { return ground.grid().contains(i + off.di, j + off.dj); }
-  double ground_at(int i, int j) const { return ground.at(i + off.di, j + off.dj); }
+  Columns(const SpanMap& m, const HeightField& g, CellOffset o) : map(m), ground(g), off(o) {
+    first_.assign(local_count(), 0);
+    count_.assign(local_count(), 0);
+    ground_cell_.assign(local_count(), -1);
+    const Grid& grid = ground.grid();
+    // the columns whose ground cell is on the grid: [gi0, gi1) x [gj0, gj1)
+    const int gi0 = std::max(-kPad, -off.di), gi1 = std::min(map.grid.nx + kPad, grid.nx - off.di);
+    const int gj0 = std::max(-kPad, -off.dj), gj1 = std::min(map.grid.ny + kPad, grid.ny - off.dj);
+    lowest_top_.assign(local_count(), kInf);
+    lowest_bottom_.assign(local_count(), kInf);
+    for (int j = 0; j < map.grid.ny; ++j) {
+      const std::int32_t* f = map.first.data() + map.cell(0, j);
+      const std::size_t l = static_cast<std::size_t>(local(0, j));
+      for (int i = 0; i < map.grid.nx; ++i) {
+        first_[l + i] = f[i], count_[l + i] = f[i + 1] - f[i];
+        if (f[i + 1] > f[i]) lowest_top_[l + i] = map.spans[f[i]].top_m, lowest_bottom_[l + i] = map.spans[f[i]].bottom_m;
+      }
+    }
+    for (int j = gj0; j < gj1; ++j) {
+      const std::int64_t row = static_cast<std::int64_t>(j + off.dj) * grid.nx + off.di;
+      const std::size_t l = static_cast<std::size_t>(local(0, j));
+      for (int i = gi0; i < gi1; ++i) ground_cell_[l + i] = row + i;
+    }
+  }
 
-  // The surface material at height z entering column (i, j) lands on; false when z is inside its solid.
-  bool landing(int i, int j, double z, Surface* out) const {
-    const int n = count(i, j);
-    const Span* s = n > 0 ? spans(i, j) : nullptr;
+  int stride() const { return map.grid.nx + 2 * kPad; }
+  std::int64_t local(int i, int j) const {
+    return static_cast<std::int64_t>(j + kPad) * stride() + (i + kPad);
+  }
+  std::size_t local_count() const { return static_cast<std::size_t>(stride()) * (map.grid.ny + 2 * kPad); }
+  int i_of(std::int64_t l) const { return static_cast<int>(l % stride()) - kPad; }
+  int j_of(std::int64_t l) const { return static_cast<int>(l / stride()) - kPad; }
+  int count(int i, int j) const { return count_[static_cast<std::size_t>(local(i, j))]; }
+  // The ground cell under local column l, -1 beyond the grid.
+  std::int64_t ground_cell(std::int64_t l) const { return ground_cell_[static_cast<std::size_t>(l)]; }
+  // The lowest span's top and bottom in local column l, +inf where it has none.
+  double lowest_top(std::int64_t l) const { return lowest_top_[static_cast<std::size_t>(l)]; }
+  double lowest_bottom(std::int64_t l) const { return lowest_bottom_[static_cast<std::size_t>(l)]; }
+
+  // The surface material at height z entering local column l lands on; false when z is inside its solid.
+  bool landing(std::int64_t l, double z, Surface* out) const {
+    const std::size_t at = static_cast<std::size_t>(l);
+    const int n = count_[at];
+    const Span* s = map.spans.data() + first_[at];  // not read when n == 0
     int k = n - 1;
     while (k >= 0 && s[k].top_m > z) --k;
     if (k >= 0) {
       if (k + 1 < n && s[k + 1].bottom_m <= z) return false;
-      *out = {Kind::kSpan, s + k - map.spans.data(), s[k].level_m(), k + 1 < n ? s[k + 1].bottom_m : kInf};
+      *out = {Kind::kSpan, first_[at] + k, s[k].level_m(), k + 1 < n ? s[k + 1].bottom_m : kInf};
       return true;
     }
     if (n > 0 && s[0].bottom_m <= z) return false;
-    if (!has_ground(i, j)) {
-      *out = {Kind::kAir, local(i, j), 0.0, kInf};  // beyond the grid: it falls off
+    if (ground_cell_[at] < 0) {
+      *out = {Kind::kAir, l, 0.0, kInf};  // beyond the grid: it falls off
       return true;
     }
-    *out = {Kind::kGround, local(i, j), ground_at(i, j), n > 0 ? s[0].bottom_m : kInf};
+    *out = {Kind::kGround, l, ground.heights().data()[ground_cell_[at]], n > 0 ? s[0].bottom_m : kInf};
     return true;
   }
+  // The local index steps to the neighbours, in kNeighbours' order.
+  std::array<std::int64_t, 4> steps() const { return {1, -1, stride(), -stride()}; }
+
+ private:
+  std::vector<std::int32_t> first_, count_;
+  std::vector<std::int64_t> ground_cell_;
+  std::vector<double> lowest_top_, lowest_bottom_;
 };
 
 struct PassRule {
@@ -73,16 +120,17 @@ double support_of(const Columns& cols, const Surface& to) {
 
 void add_span_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
   const SpanMap& map = cols.map;
-  const std::int64_t c = map.cell(i, j);
+  const std::int64_t c = map.cell(i, j), l = cols.local(i, j);
+  const std::array<std::int64_t, 4> steps = cols.steps();
   for (int k = 0; k < map.count(c); ++k) {
     const Span& s = map.begin(c)[k];
     if (!(s.material_m > rule.dust_m)) continue;  // round-off left by a slide stays put
     const Surface from{Kind::kSpan, map.first[c] + k, s.level_m(), kInf};
     const std::size_t first = fluxes->size();
     double slide_total = 0.0;  // over the neighbours whose support drops more than the repose slope
-    for (const auto& o : kNeighbours) {
+    for (const std::int64_t step : steps) {
       Surface to;
-      if (!cols.landing(i + o[0], j + o[1], from.level_m, &to)) continue;
+      if (!cols.landing(l + step, from.level_m, &to)) continue;
       const double excess = from.level_m - to.level_m - rule.max_dh_m;
       if (!(excess > rule.tolerance_m)) continue;
       // (a layer thinner than the tolerance is round-off, left where it is as by the slope rule)
@@ -108,16 +156,16 @@ void add_span_fluxes(const Columns& cols, const PassRule& rule, int i, int j, st
 
 // Ground beside the object sliding onto its spans.
 void add_ground_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
-  const int n = cols.count(i, j);
-  if (!cols.has_ground(i, j)) return;
-  const double g = cols.ground_at(i, j);
-  if (n > 0 && g > cols.spans(i, j)[0].bottom_m) return;  // under the object: not exposed
-  const Surface from{Kind::kGround, cols.local(i, j), g, kInf};
-  for (const auto& o : kNeighbours) {
-    // only a span whose top is at or below g can take it: none when the lowest one's is above
-    if (cols.count(i + o[0], j + o[1]) == 0 || cols.spans(i + o[0], j + o[1])[0].top_m > g) continue;
+  const std::int64_t l = cols.local(i, j), gc = cols.ground_cell(l);
+  if (gc < 0) return;
+  const double g = cols.ground.heights().data()[gc];
+  if (g > cols.lowest_bottom(l)) return;  // under the object: not exposed
+  const Surface from{Kind::kGround, l, g, kInf};
+  for (const std::int64_t step : cols.steps()) {
+    // only a span whose top is at or below g can take it: none when the lowest one's is above (or there is none)
+    if (cols.lowest_top(l + step) > g) continue;
     Surface to;
-    if (!cols.landing(i + o[0], j + o[1], g, &to) || to.kind != Kind::kSpan) continue;
+    if (!cols.landing(l + step, g, &to) || to.kind != Kind::kSpan) continue;
     const double excess = g - to.level_m - rule.max_dh_m;
     if (excess > rule.tolerance_m) fluxes->push_back({from, to, rule.sigma * excess, g});
   }
@@ -152,10 +200,7 @@ struct Exchange {
   std::size_t key(const Surface& s) const {
     return static_cast<std::size_t>(s.kind == Kind::kSpan ? s.index : static_cast<std::int64_t>(n_spans) + s.index);
   }
-  std::int64_t ground_cell(std::int64_t local) const {
-    const int i = static_cast<int>(local % cols.stride()) - 1, j = static_cast<int>(local / cols.stride()) - 1;
-    return model.cell(i + cols.off.di, j + cols.off.dj);
-  }
+  std::int64_t ground_cell(std::int64_t local) const { return cols.ground_cell(local); }
   double& amount_of(const Surface& s) {
     if (s.kind == Kind::kSpan) return map.spans[static_cast<std::size_t>(s.index)].material_m;
     return ground->height.heights().data()[ground_cell(s.index)];
@@ -210,7 +255,8 @@ struct Exchange {
                std::mt19937_64* rng) {
     std::sort(released_at.begin(), released_at.end());
     for (const std::size_t l : released_at) {
-      const int i = static_cast<int>(l % cols.stride()) - 1, j = static_cast<int>(l / cols.stride()) - 1;
+      const std::int64_t ll = static_cast<std::int64_t>(l);
+      const int i = cols.i_of(ll), j = cols.j_of(ll);
       const Eigen::Vector3d at(map.grid.centre_x(i), map.grid.centre_y(j), release_z[l]);
       particles->release({at, velocity_m_s, released_m[l] * model.grid.cell_area_m2()}, spread_m_s, rng);
       released_m[l] = 0.0;
@@ -243,12 +289,8 @@ class ChangedColumns {
   // Column (i, j) or a 4-neighbour changed in the last pass.
   bool near(int i, int j) const {
     if (flags_[static_cast<std::size_t>(cols_.local(i, j))]) return true;
-    for (const auto& o : kNeighbours) {
-      const int ni = i + o[0], nj = j + o[1];
-      if (ni >= -1 && nj >= -1 && ni <= cols_.map.grid.nx && nj <= cols_.map.grid.ny &&
-          flags_[static_cast<std::size_t>(cols_.local(ni, nj))]) {
-        return true;
-      }
+    for (const auto& o : kNeighbours) {  // (i, j) is in the first ring at most: the padding holds them
+      if (flags_[static_cast<std::size_t>(cols_.local(i + o[0], j + o[1]))]) return true;
     }
     return false;
   }
