@@ -100,7 +100,7 @@ struct StiffnessAssembly {
   double dt_beta;  // dt x stiffness_damping_s
   // false: the bending and twist terms add to the right-hand side only
   // (their blocks, constant while no cell tears, are in the store already)
-  bool bending_blocks = true;
+  bool constant_blocks = true;
 
   // any block, any vertices: held rows skipped, held columns to the right;
   // block of -K, left its block in the system (dt^2 block + dt C's)
@@ -141,51 +141,38 @@ struct StiffnessAssembly {
     target.spring_blocks(first, left);
   }
 
-  void add_bending(int first, const std::array<int, 3>& v, double kb) {
-    const double left_scale = dt2 + dt_beta;  // -dt^2 K + dt beta K on the bending part
-    if (!(free(v[0]) && free(v[1]) && free(v[2]))) {
-      for (int p = 0; p < 3; ++p) {
-        for (int q = 0; q < 3; ++q) {
-          const Eigen::Matrix3d block = kb * kBendingCoefficient[p] * kBendingCoefficient[q] * Eigen::Matrix3d::Identity();
-          add_block(first + 3 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)], block,
-                    left_scale * block, bending_blocks);
-        }
-      }
-      return;
-    }
-    // K v_n of the term on vertex p: kb c_p (v_a - 2 v_b + v_c)
-    const Eigen::Vector3d curvature = v0.segment<3>(3 * v[0]) - 2.0 * v0.segment<3>(3 * v[1]) + v0.segment<3>(3 * v[2]);
-    for (int p = 0; p < 3; ++p) {
-      const double kp = dt2 * kb * kBendingCoefficient[p];
-      const double left_p = left_scale * kb * kBendingCoefficient[p];
-      rhs_of(v[static_cast<std::size_t>(p)]) -= kp * curvature;
-      if (!bending_blocks) continue;
-      for (int q = 0; q < 3; ++q) target.diagonal(first + 3 * p + q, left_p * kBendingCoefficient[q]);
-    }
-  }
+  // A bending term (kBendingCoefficient over three vertices along a mesh
+  // line) and a cell's twist term (sheet_model.h; kTwistCoefficient over its
+  // corners): blocks (v_p, v_q) of -K are k c_p c_q I, constant.
+  void add_bending(int first, const std::array<int, 3>& v, double kb) { add_stencil(first, v, kBendingCoefficient, kb); }
+  void add_twist(int first, const std::array<int, 4>& v, double kt) { add_stencil(first, v, kTwistCoefficient, kt); }
 
-  // A cell's twist term (sheet_model.h; kTwistCoefficient c over its
-  // corners v): blocks (v_p, v_q) of -K are kt c_p c_q I, constant.
-  void add_twist(int first, const std::array<int, 4>& v, double kt) {
-    const double left_scale = dt2 + dt_beta;
-    if (!(free(v[0]) && free(v[1]) && free(v[2]) && free(v[3]))) {
-      for (int p = 0; p < 4; ++p) {
-        for (int q = 0; q < 4; ++q) {
-          const Eigen::Matrix3d block = kt * kTwistCoefficient[p] * kTwistCoefficient[q] * Eigen::Matrix3d::Identity();
-          add_block(first + 4 * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)], block,
-                    left_scale * block, bending_blocks);
+  // A term of energy k/2 |sum_q c_q x_{v_q}|^2, its blocks numbered
+  // first + N p + q.
+  template <std::size_t N>
+  void add_stencil(int first, const std::array<int, N>& v, const double (&c)[N], double k) {
+    const int n = static_cast<int>(N);
+    const double left_scale = dt2 + dt_beta;  // -dt^2 K + dt beta K on the term
+    bool all_free_corners = true;
+    for (const int vertex : v) all_free_corners = all_free_corners && free(vertex);
+    if (!all_free_corners) {
+      for (int p = 0; p < n; ++p) {
+        for (int q = 0; q < n; ++q) {
+          const Eigen::Matrix3d block = k * c[p] * c[q] * Eigen::Matrix3d::Identity();
+          add_block(first + n * p + q, v[static_cast<std::size_t>(p)], v[static_cast<std::size_t>(q)], block,
+                    left_scale * block, constant_blocks);
         }
       }
       return;
     }
-    // K v_n of the term on vertex p: kt c_p Delta(v_n)
-    Eigen::Vector3d twist = Eigen::Vector3d::Zero();
-    for (int q = 0; q < 4; ++q) twist += kTwistCoefficient[q] * v0.segment<3>(3 * v[static_cast<std::size_t>(q)]);
-    for (int p = 0; p < 4; ++p) {
-      rhs_of(v[static_cast<std::size_t>(p)]) -= (dt2 * kt * kTwistCoefficient[p]) * twist;
-      if (!bending_blocks) continue;
-      const double left_p = left_scale * kt * kTwistCoefficient[p];
-      for (int q = 0; q < 4; ++q) target.diagonal(first + 4 * p + q, left_p * kTwistCoefficient[q]);
+    // K v_n of the term on vertex p: k c_p sum_q c_q v_q
+    Eigen::Vector3d combination = Eigen::Vector3d::Zero();
+    for (int q = 0; q < n; ++q) combination += c[q] * v0.segment<3>(3 * v[static_cast<std::size_t>(q)]);
+    for (int p = 0; p < n; ++p) {
+      rhs_of(v[static_cast<std::size_t>(p)]) -= (dt2 * k * c[p]) * combination;
+      if (!constant_blocks) continue;
+      const double left_p = left_scale * k * c[p];
+      for (int q = 0; q < n; ++q) target.diagonal(first + n * p + q, left_p * c[q]);
     }
   }
 };
