@@ -130,6 +130,32 @@ void write_renders(const Settings& s, const SheetModel& model, const FibreImages
   }
 }
 
+// One run's measures: a row of tearing_grain.csv and a line on the terminal.
+void write_row(std::uint64_t seed, const char* grain, const TearRun& run, std::ofstream& csv) {
+  const TearPath& p = run.path;
+  csv << fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.6g},{:.6g},{},{:.6g},{:.4g}\n", seed, grain,
+                     p.tortuosity, p.roughness_m, p.deviation_m, p.depth_m, run.tear_length_m, p.tear_cells,
+                     p.stray_cells, run.peak_grip_force_n, run.work_per_tear_length_j_per_m, run.steps,
+                     run.time_step_s, run.wall_seconds);
+  csv.flush();
+  fmt::print("seed {} {:<6}: tortuosity {:.3f} roughness {:.2f} mm deviation {:.2f} mm depth {:.1f} mm notch {} stray {} "
+             "peak {:.1f} N ({} steps, {:.1f} s)\n",
+             seed, grain, p.tortuosity, 1e3 * p.roughness_m, 1e3 * p.deviation_m, 1e3 * p.depth_m, p.holds_notch, p.stray_cells,
+             run.peak_grip_force_n, run.steps, run.wall_seconds);
+  std::fflush(stdout);
+}
+
+// Seed 1's pictures: the torn sheet, its fibre images, the layered tear edge and the 3-D renders.
+void write_seed_one_images(const Settings& s, const SheetModel& model, const FibreImages& images, const TearRun& run,
+                           const char* grain) {
+  write_png_rgb(fmt::format("{}/tear_{}_seed1.png", s.out, grain), draw_tear_image(model, run.state, images, 8));
+  write_fibre_pngs(images, fmt::format("{}/fibres_{}_seed1_", s.out, grain));
+  const TearEdgeOptions edge;
+  write_png_rgb(fmt::format("{}/tear_edge_{}_seed1.png", s.out, grain),
+                draw_layered_tear_edge(images, trace_layer_cuts(model, run.state, images, edge), edge));
+  write_renders(s, model, images, run, grain);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -166,25 +192,8 @@ int main(int argc, char** argv) {
       TearRunOptions these = options;
       for (int k = 1; seed == 1 && k < s.render_frames; ++k) these.snapshot_times_s.push_back(s.duration_s * k / s.render_frames);
       TearRun run = run_tear(model, params, these);
-      const TearPath& p = run.path;
-      csv << fmt::format("{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{:.6g},{:.6g},{},{:.6g},{:.4g}\n", seed, grain,
-                         p.tortuosity, p.roughness_m, p.deviation_m, p.depth_m, run.tear_length_m, p.tear_cells,
-                         p.stray_cells, run.peak_grip_force_n, run.work_per_tear_length_j_per_m, run.steps,
-                         run.time_step_s, run.wall_seconds);
-      csv.flush();
-      fmt::print("seed {} {:<6}: tortuosity {:.3f} roughness {:.2f} mm deviation {:.2f} mm depth {:.1f} mm notch {} stray {} "
-                 "peak {:.1f} N ({} steps, {:.1f} s)\n",
-                 seed, grain, p.tortuosity, 1e3 * p.roughness_m, 1e3 * p.deviation_m, 1e3 * p.depth_m, p.holds_notch, p.stray_cells,
-                 run.peak_grip_force_n, run.steps, run.wall_seconds);
-      std::fflush(stdout);
-      if (seed == 1) {
-        write_png_rgb(fmt::format("{}/tear_{}_seed{}.png", s.out, grain, seed), draw_tear_image(model, run.state, images, 8));
-        write_fibre_pngs(images, fmt::format("{}/fibres_{}_seed{}_", s.out, grain, seed));
-        const TearEdgeOptions edge;
-        write_png_rgb(fmt::format("{}/tear_edge_{}_seed{}.png", s.out, grain, seed),
-                      draw_layered_tear_edge(images, trace_layer_cuts(model, run.state, images, edge), edge));
-        write_renders(s, model, images, run, grain);
-      }
+      write_row(seed, grain, run, csv);
+      if (seed == 1) write_seed_one_images(s, model, images, run, grain);
       rows.push_back({seed, grain, std::move(run)});
     }
   }

@@ -64,6 +64,58 @@ std::vector<bool> determined_columns(const Eigen::MatrixXd& scaled, const std::v
   }
 }
 
+// The covariance (J^T J)^-1 of the kept blocks by ceres::Covariance, the
+// others held constant while it is computed, before scaling by the residual
+// variance; p x p, zero outside the kept rows and columns. False when Ceres
+// finds the Jacobian rank-deficient.
+bool unit_covariance(ceres::Problem& problem, const std::vector<double*>& blocks, const std::vector<std::size_t>& kept,
+                     double min_reciprocal_condition, Eigen::MatrixXd* cov) {
+  const auto p = static_cast<Eigen::Index>(blocks.size());
+  std::vector<bool> is_kept(blocks.size(), false);
+  for (const std::size_t a : kept) is_kept[a] = true;
+  for (std::size_t c = 0; c < blocks.size(); ++c) {
+    if (!is_kept[c]) problem.SetParameterBlockConstant(blocks[c]);
+  }
+  ceres::Covariance::Options options;
+  options.algorithm_type = ceres::DENSE_SVD;
+  options.min_reciprocal_condition_number = min_reciprocal_condition * min_reciprocal_condition;
+  options.null_space_rank = 0;
+  options.apply_loss_function = true;
+  options.num_threads = 1;
+  ceres::Covariance covariance(options);
+  std::vector<std::pair<const double*, const double*>> pairs;
+  for (const std::size_t a : kept) {
+    for (const std::size_t b : kept) {
+      if (a <= b) pairs.emplace_back(blocks[a], blocks[b]);
+    }
+  }
+  const bool ok = covariance.Compute(pairs, &problem);
+  for (double* block : blocks) problem.SetParameterBlockVariable(block);
+  if (!ok) return false;
+  *cov = Eigen::MatrixXd::Zero(p, p);
+  for (const std::size_t a : kept) {
+    for (const std::size_t b : kept) {
+      double value = 0.0;
+      covariance.GetCovarianceBlock(blocks[std::min(a, b)], blocks[std::max(a, b)], &value);
+      (*cov)(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = value;
+    }
+  }
+  return true;
+}
+
+// Standard errors and correlations of the kept parameters from their covariance.
+void set_errors_and_correlation(const Eigen::MatrixXd& cov, const std::vector<std::size_t>& kept,
+                                CalibrationUncertainty* u) {
+  const auto at = [](std::size_t k) { return static_cast<Eigen::Index>(k); };
+  for (const std::size_t a : kept) u->standard_error[a] = std::sqrt(std::max(0.0, cov(at(a), at(a))));
+  for (const std::size_t a : kept) {
+    for (const std::size_t b : kept) {
+      const double d = u->standard_error[a] * u->standard_error[b];
+      u->correlation(at(a), at(b)) = d > 0.0 ? cov(at(a), at(b)) / d : (a == b ? 1.0 : 0.0);
+    }
+  }
+}
+
 }  // namespace
 
 CalibrationUncertainty estimate_uncertainty(ceres::Problem& problem, const std::vector<double*>& blocks,
@@ -91,46 +143,14 @@ CalibrationUncertainty estimate_uncertainty(ceres::Problem& problem, const std::
     u.determined.assign(p, false);
     return u;
   }
-  for (std::size_t c = 0; c < p; ++c) {
-    if (!u.determined[c]) problem.SetParameterBlockConstant(blocks[c]);
-  }
-  ceres::Covariance::Options options;
-  options.algorithm_type = ceres::DENSE_SVD;
-  options.min_reciprocal_condition_number = min_reciprocal_condition * min_reciprocal_condition;
-  options.null_space_rank = 0;
-  options.apply_loss_function = true;
-  options.num_threads = 1;
-  ceres::Covariance covariance(options);
-  std::vector<std::pair<const double*, const double*>> pairs;
-  for (const std::size_t a : kept) {
-    for (const std::size_t b : kept) {
-      if (a <= b) pairs.emplace_back(blocks[a], blocks[b]);
-    }
-  }
-  const bool ok = covariance.Compute(pairs, &problem);
-  for (std::size_t c = 0; c < p; ++c) problem.SetParameterBlockVariable(blocks[c]);
-  if (!ok) {
+  Eigen::MatrixXd cov;
+  if (!unit_covariance(problem, blocks, kept, min_reciprocal_condition, &cov)) {
     u.note += std::string(u.note.empty() ? "" : "; ") + "ceres::Covariance::Compute failed (rank-deficient Jacobian)";
     u.determined.assign(p, false);
     return u;
   }
   u.residual_variance = 2.0 * cost / static_cast<double>(n - kept.size());
-  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(p));
-  for (const std::size_t a : kept) {
-    for (const std::size_t b : kept) {
-      double value = 0.0;
-      covariance.GetCovarianceBlock(blocks[std::min(a, b)], blocks[std::max(a, b)], &value);
-      cov(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = value * u.residual_variance;
-    }
-  }
-  for (const std::size_t a : kept) u.standard_error[a] = std::sqrt(std::max(0.0, cov(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(a))));
-  for (const std::size_t a : kept) {
-    for (const std::size_t b : kept) {
-      const double d = u.standard_error[a] * u.standard_error[b];
-      u.correlation(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) =
-          d > 0.0 ? cov(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) / d : (a == b ? 1.0 : 0.0);
-    }
-  }
+  set_errors_and_correlation(cov * u.residual_variance, kept, &u);
   return u;
 }
 
