@@ -20,7 +20,10 @@
 //          valgrind --tool=callgrind --toggle-collect='repose::step(repose::HeightSpanModel*'
 //          build/bin/heightspan_benchmark --benchmark_filter=BM_ScoopPath
 //   TipOsmesa: the Tip case with the span maps peeled by OSMesa
-//          (heightspan.span_maps: osmesa) instead of the CPU.
+//          (heightspan.span_maps: osmesa) instead of the CPU;
+//   ScoopOnePass, ScoopOnePassPath: the Scoop and ScoopPath cases with the
+//          heap beside the bucket laid in one pass (ground_model.heap_laying:
+//          one_pass) instead of the default portions.
 // Run:
 //   build/bin/heightspan_benchmark --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // The state is rebuilt outside the timing when a case runs out of path.
@@ -56,14 +59,16 @@ Keyframe key(double t, double x, double z, double pitch_deg) {
   return k;
 }
 
-enum class Case { kScoop, kCarry, kTip, kScoopGroundPath, kTipOsmesa, kScoop20Passes };
+enum class Case { kScoop, kCarry, kTip, kScoopGroundPath, kTipOsmesa, kScoop20Passes, kScoopOnePass };
 
 class ScoopRun {
  public:
   explicit ScoopRun(Case c) {
     const bool holds = c != Case::kScoopGroundPath, osmesa = c == Case::kTipOsmesa;
     const int passes = c == Case::kScoop20Passes ? 20 : 0;  // 0: the default material's
-    if (!holds || passes > 0) c = Case::kScoop;
+    GroundModelSpec ground_options;
+    if (c == Case::kScoopOnePass) ground_options.heap_laying = GroundModelSpec::HeapLaying::kOnePass;
+    if (!holds || passes > 0 || c == Case::kScoopOnePass) c = Case::kScoop;
     if (osmesa) c = Case::kTip;
     Scene scene;
     scene.seed = 1;
@@ -88,7 +93,7 @@ class ScoopRun {
     section.holds_material["bucket"] = holds;
     if (osmesa) section.options.span_maps = HeightSpanSpec::SpanMaps::kOsmesa;
     section.options.max_substep_angle_rad = 10 * M_PI / 180.0;  // one substep per tipping step
-    scene = with_heightspan(with_ground_options(std::move(scene), GroundModelSpec{}), section);
+    scene = with_heightspan(with_ground_options(std::move(scene), ground_options), section);
     model_ = build_heightspan_model(scene);
     params_ = default_params(model_.ground);
     if (passes > 0) params_.materials.front().erosion_iterations = passes;
@@ -150,6 +155,8 @@ BENCHMARK(BM_Step<Case::kScoop20Passes>)->Name("BM_Scoop20PassesStep")->Unit(ben
 // workload for instruction counts (valgrind --tool=callgrind), which a
 // shared machine's load does not change.
 BENCHMARK(BM_Step<Case::kScoop>)->Name("BM_ScoopPath")->Iterations(199)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step<Case::kScoopOnePass>)->Name("BM_ScoopOnePassStep")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Step<Case::kScoopOnePass>)->Name("BM_ScoopOnePassPath")->Iterations(199)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Step<Case::kScoopGroundPath>)->Name("BM_ScoopGroundPathStep")->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Step<Case::kCarry>)->Name("BM_CarryStep")->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Step<Case::kTip>)->Name("BM_TipStep")->Unit(benchmark::kMillisecond);

@@ -11,6 +11,7 @@
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/ground_state.h"
+#include "models/ground/rear_to_front_order.h"
 
 namespace repose {
 
@@ -127,24 +128,7 @@ void spread_from_inside_out(ContactRegion* r, Sink* sink) {
 // symmetric as its contact region (a mirrored contact gives the mirrored
 // result, to round-off).
 void spread_rear_to_front(const DragDirection& dir, ContactRegion* r, Sink* sink) {
-  // by position along the drag, then distance to the border (farthest
-  // first), then index: ties exchange nothing, any fixed order will do.
-  // The keys are found once, not in every comparison.
-  struct Key {
-    double along;
-    int minus_dist, l;
-    bool operator<(const Key& o) const {
-      if (along != o.along) return along < o.along;
-      if (minus_dist != o.minus_dist) return minus_dist < o.minus_dist;
-      return l < o.l;
-    }
-  };
-  std::vector<Key> keys;
-  keys.reserve(r->cells.size());
-  for (const int l : r->cells) keys.push_back({r->gi(l) * dir.dx + r->gj(l) * dir.dy, -r->dist[l], l});
-  std::sort(keys.begin(), keys.end());
-  for (const Key& key : keys) {
-    const int l = key.l;
+  for (const int l : rear_to_front_order(dir, *r)) {
     const double m = r->carry[l];
     if (m == 0.0) continue;
     const int i = r->gi(l), j = r->gj(l);

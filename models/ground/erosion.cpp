@@ -20,11 +20,7 @@ namespace {
 
 constexpr std::array<std::array<int, 2>, 4> kNeighbours = {{{1, 0}, {-1, 0}, {0, 1}, {0, -1}}};
 
-struct Flux {
-  std::int64_t from, to;
-  double amount;
-  double ceiling_m;  // over `to` (+inf: no object), found where its coordinates are known
-};
+using Flux = ErosionFlux;
 
 // Per material: the height difference a pair may have, sigma and En.
 struct PairRule {
@@ -314,9 +310,10 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
   ErosionMemory& memory = state->erosion;
 
   REPOSE_DEMAND(g.cell_count() <= static_cast<std::size_t>(std::numeric_limits<int>::max()));
-  std::vector<Flux> fluxes;
+  std::vector<Flux>& fluxes = state->erosion_scratch.fluxes;
   std::vector<double>& inflow = inflow_scratch(g, state);
-  std::vector<std::array<int, 2>> ij;  // of memory.cells(), divided out once: a pass would repeat it
+  std::vector<std::array<int, 2>>& ij = state->erosion_scratch.ij;  // of memory.cells(), divided out once: a pass would repeat it
+  ij.clear();
   for (int p = 0; p < passes && !memory.empty(); ++p) {
     fluxes.clear();
     const std::vector<std::int64_t>& cells = memory.cells();

@@ -79,6 +79,9 @@ void validate(const GroundModelSpec& o) {
   if (o.coarse_factor < 1 || o.coarse_factor > 64) {
     throw FieldError("coarse_factor", "an integer in [1, 64]", std::to_string(o.coarse_factor));
   }
+  if (o.heap_laying != GroundModelSpec::HeapLaying::kPortions && o.heap_laying != GroundModelSpec::HeapLaying::kOnePass) {
+    throw FieldError("heap_laying", "portions or one_pass", std::to_string(static_cast<int>(o.heap_laying)));
+  }
   if (!(o.far_distance_m >= 0.0 && o.far_distance_m <= 1.0e6)) {
     throw FieldError("far_distance_m", "a distance in [0, 1e6] m", yaml_number(o.far_distance_m));
   }
@@ -123,6 +126,7 @@ std::string GroundModelSection::summary() const {
                                  options.coarse_factor,
                                  options.collision == GroundModelSpec::Collision::kCpu ? "cpu" : "osmesa");
   if (options.bed_slope_rad > 0.0) text += fmt::format(", bed inclined {:.6g} deg", options.bed_slope_rad / kRadPerDeg);
+  if (options.heap_laying == GroundModelSpec::HeapLaying::kOnePass) text += ", heaps laid in one pass";
   const BekkerBearing& b = free_bodies.bearing;
   text += b.law == BekkerBearing::Law::kOff
               ? std::string("; free bodies: ODE, no bearing sinkage")

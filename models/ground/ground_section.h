@@ -13,6 +13,7 @@
 //     far_distance_m: 0            # objects farther than this from the camera use the coarse grid (0: never)
 //     collision: cpu               # cpu | osmesa
 //     bed_slope_deg: 0             # the bed inclined down +x (a bed-aligned chute; erosion.h)
+//     heap_laying: portions        # portions | one_pass: how displaced material heaps on open ground (excess_routing.h)
 //     materials:                   # optional: name -> {preset, alpha, repose_angle_deg, sigma, erosion_iterations}
 //       sand: {alpha: 0.9}         # a preset's name: its values, overridden
 //       clay: {preset: mud, sigma: 0.1}
@@ -49,6 +50,13 @@ struct GroundModelSpec {
   // the bed) and gravity is tilted. Erosion's repose rule then holds in the
   // world frame (erosion.h: inclined bed). [0, 80) deg; 0: a level ground.
   double bed_slope_rad = 0.0;
+  // How displaced material is laid on open ground beside an object
+  // (excess_routing.h): kPortions, in up to 16 portions each swept outwards
+  // ring by ring (the default, which every committed calibration used);
+  // kOnePass, the heap at the angle of repose laid at once
+  // (heap_in_one_pass.h): faster, a different heap.
+  enum class HeapLaying { kPortions, kOnePass };
+  HeapLaying heap_laying = HeapLaying::kPortions;
 };
 
 // Throws FieldError naming the field and the rule. The loader and
@@ -66,6 +74,9 @@ void ground_model_fields(Visitor& v, GroundModelSpec& g) {
   using C = GroundModelSpec::Collision;
   v.choice("collision", g.collision, std::vector<std::pair<std::string, C>>{{"cpu", C::kCpu}, {"osmesa", C::kOsmesa}});
   v.angle_deg("bed_slope_deg", g.bed_slope_rad, Range::any());
+  using H = GroundModelSpec::HeapLaying;
+  v.choice("heap_laying", g.heap_laying,
+           std::vector<std::pair<std::string, H>>{{"portions", H::kPortions}, {"one_pass", H::kOnePass}});
 }
 
 class GroundModelSection final : public SceneSection {
