@@ -91,6 +91,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "models/tearing/conjugate_gradients.h"
 #include "models/tearing/sheet_model.h"
 #include "models/tearing/sheet_multigrid.h"
 #include "models/tearing/sheet_params.h"
@@ -167,11 +168,7 @@ class ImplicitIntegrator {
   // Times the multigrid hierarchy was built.
   int multigrid_rebuilds() const { return rebuilds_; }
 
-  // The conjugate gradients' vectors, kept from step to step (no
-  // allocation once sized): b the right-hand side, x the solution.
-  struct SolveWork {
-    Eigen::VectorXd b, x, r, p, z, ap, az;
-  };
+  using SolveWork = ConjugateGradientWork;
 
  private:
   // The system (into system_) over the free degrees of freedom; dv_all

@@ -296,9 +296,13 @@ void SheetMultigrid::cycle_blocks(std::size_t level, const Eigen::VectorXd& b, E
     if (ax) blocks.product(*x, ax);
     return;
   }
+  const int sweeps = options_.smoothing_sweeps;
+  if (level == 0 && sweeps == 1 && options_.single_precision_fine_level) {
+    fine_cycle_in_float(b, x, ax);
+    return;
+  }
   const Level& coarse = *levels_[level];
   Work& work = work_[level];
-  const int sweeps = options_.smoothing_sweeps;
   if (sweeps == 1) {
     // one sweep from zero: its residual from the blocks it reads
     blocks.sweep_from_zero_with_residual(b, x, &work.residual);
@@ -316,6 +320,44 @@ void SheetMultigrid::cycle_blocks(std::size_t level, const Eigen::VectorXd& b, E
   } else {
     blocks.gauss_seidel_sweep(b, false, false, x);
   }
+}
+
+namespace {
+
+// block vectors (3 a vertex, double) to the float passes' (4 a vertex, the
+// fourth 0) and back
+void to_float(const Eigen::VectorXd& from, std::size_t size, AlignedFloats* to) {
+  to->assign(size, 0.0f);
+  for (Eigen::Index k = 0; k < from.size(); ++k) (*to)[static_cast<std::size_t>(k + k / 3)] = static_cast<float>(from[k]);
+}
+
+void to_double(const AlignedFloats& from, Eigen::Index size, Eigen::VectorXd* to) {
+  to->resize(size);
+  for (Eigen::Index k = 0; k < size; ++k) (*to)[k] = from[static_cast<std::size_t>(k + k / 3)];
+}
+
+}  // namespace
+
+void SheetMultigrid::fine_cycle_in_float(const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* ax) const {
+  const Level& coarse = *levels_[0];
+  Work& work = work_[0];
+  FloatWork& f = float_work_;
+  const std::size_t size = fine_blocks_.float_vector_size();
+  to_float(b, size, &f.b);
+  f.x.resize(size);
+  f.residual.resize(size);
+  fine_blocks_.sweep_from_zero_with_residual(f.b.data(), f.x.data(), f.residual.data());
+  to_double(f.residual, b.size(), &work.residual);
+  work.coarse_b.noalias() = coarse.block_restriction * work.residual;
+  cycle_blocks(1, work.coarse_b, &work.coarse_x, nullptr);
+  work.residual.noalias() = coarse.block_interpolation * work.coarse_x;  // the correction
+  for (Eigen::Index k = 0; k < b.size(); ++k) {
+    f.x[static_cast<std::size_t>(k + k / 3)] += static_cast<float>(work.residual[k]);
+  }
+  if (ax) f.ax.resize(size);
+  fine_blocks_.backward_sweep_with_product(f.b.data(), f.x.data(), ax ? f.ax.data() : nullptr);
+  to_double(f.x, b.size(), x);
+  if (ax) to_double(f.ax, b.size(), ax);
 }
 
 void SheetMultigrid::update_fine(const Eigen::SparseMatrix<double>& system) {
