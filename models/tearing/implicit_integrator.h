@@ -96,6 +96,7 @@
 #include "models/tearing/sheet_multigrid.h"
 #include "models/tearing/sheet_params.h"
 #include "models/tearing/sheet_state.h"
+#include "models/tearing/spring_links.h"
 
 namespace repose {
 
@@ -196,7 +197,7 @@ class ImplicitIntegrator {
   Eigen::SparseMatrix<double> system_;
   std::vector<int> first_row_;  // per vertex: the row of its first free axis, or -1
   std::vector<char> all_free_;  // per vertex: no axis held (its rows first_row_ + 0..2)
-  // per stiffness block (for_each_stiffness_term's index), per column of
+  // per stiffness block (for_each_block_place's index), per column of
   // the block: where its first free row lies in system_'s values, or -1
   std::vector<std::array<int, 3>> block_place_;
   int last_iterations_ = 0;
@@ -209,7 +210,7 @@ class ImplicitIntegrator {
   // velocity change (all axes), the right-hand side and dv (free rows)
   Eigen::VectorXd dv_all_, rhs_, dv_;
   SolveWork work_;
-  std::vector<double> spring_constant_;  // per spring 6 c + k: its constant, N/m
+  std::vector<SpringLink> spring_links_;  // the springs by vertex pair, their constants
   // the fine blocks' mass and bending values, and the torn cells they hold
   std::vector<float> block_base_;
   std::vector<int> base_torn_step_;
