@@ -178,10 +178,10 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
   }
   if (solver_.preconditioner == ImplicitSolverOptions::Preconditioner::kMultigrid && free_count_ > 0) {
     SheetMultigridOptions multigrid = solver_.multigrid;
-    // the float fine level's carried products hold conjugate gradients' true
+    // the float sweeps' carried products hold conjugate gradients' true
     // residual to ~5e-6 of |b| (conjugate_gradients_test.cpp): below 1e-5 the
-    // double one
-    multigrid.single_precision_fine_level = multigrid.single_precision_fine_level && solver_.relative_tolerance >= 1e-5;
+    // double sweeps
+    multigrid.single_precision_sweeps = multigrid.single_precision_sweeps && solver_.relative_tolerance >= 1e-5;
     multigrid_ = std::make_unique<SheetMultigrid>(model.cells_x + 1, model.cells_y + 1, free_index_, free_count_,
                                                   multigrid);
     multigrid_->prepare_fine_pattern(system_);  // the mesh's, like system_'s

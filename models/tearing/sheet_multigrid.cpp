@@ -297,8 +297,8 @@ void SheetMultigrid::cycle_blocks(std::size_t level, const Eigen::VectorXd& b, E
     return;
   }
   const int sweeps = options_.smoothing_sweeps;
-  if (level == 0 && sweeps == 1 && options_.single_precision_fine_level) {
-    fine_cycle_in_float(b, x, ax);
+  if (sweeps == 1 && options_.single_precision_sweeps) {
+    cycle_in_float(level, b, x, ax);
     return;
   }
   const Level& coarse = *levels_[level];
@@ -327,37 +327,53 @@ namespace {
 // block vectors (3 a vertex, double) to the float passes' (4 a vertex, the
 // fourth 0) and back
 void to_float(const Eigen::VectorXd& from, std::size_t size, AlignedFloats* to) {
-  to->assign(size, 0.0f);
-  for (Eigen::Index k = 0; k < from.size(); ++k) (*to)[static_cast<std::size_t>(k + k / 3)] = static_cast<float>(from[k]);
+  to->resize(size);
+  float* out = to->data();
+  const double* in = from.data();
+  for (Eigen::Index v = 0; v < from.size() / 3; ++v, out += 4, in += 3) {
+    out[0] = static_cast<float>(in[0]);
+    out[1] = static_cast<float>(in[1]);
+    out[2] = static_cast<float>(in[2]);
+    out[3] = 0.0f;
+  }
 }
 
 void to_double(const AlignedFloats& from, Eigen::Index size, Eigen::VectorXd* to) {
   to->resize(size);
-  for (Eigen::Index k = 0; k < size; ++k) (*to)[k] = from[static_cast<std::size_t>(k + k / 3)];
+  const float* in = from.data();
+  double* out = to->data();
+  for (Eigen::Index v = 0; v < size / 3; ++v, out += 3, in += 4) {
+    out[0] = in[0];
+    out[1] = in[1];
+    out[2] = in[2];
+  }
 }
 
 }  // namespace
 
-void SheetMultigrid::fine_cycle_in_float(const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* ax) const {
-  const Level& coarse = *levels_[0];
-  Work& work = work_[0];
-  FloatWork& f = float_work_;
-  const std::size_t size = fine_blocks_.float_vector_size();
-  to_float(b, size, &f.b);
-  f.x.resize(size);
-  f.residual.resize(size);
-  fine_blocks_.sweep_from_zero_with_residual(f.b.data(), f.x.data(), f.residual.data());
-  to_double(f.residual, b.size(), &work.residual);
-  work.coarse_b.noalias() = coarse.block_restriction * work.residual;
-  cycle_blocks(1, work.coarse_b, &work.coarse_x, nullptr);
-  work.residual.noalias() = coarse.block_interpolation * work.coarse_x;  // the correction
-  for (Eigen::Index k = 0; k < b.size(); ++k) {
-    f.x[static_cast<std::size_t>(k + k / 3)] += static_cast<float>(work.residual[k]);
+void SheetMultigrid::cycle_in_float(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x,
+                                    Eigen::VectorXd* ax) const {
+  const VertexBlockMatrix& blocks = level == 0 ? fine_blocks_ : levels_[level - 1]->blocks;
+  const Level& coarse = *levels_[level];
+  Work& w = work_[level];
+  const std::size_t size = blocks.float_vector_size();
+  to_float(b, size, &w.b);
+  w.x.resize(size);
+  w.float_residual.resize(size);
+  blocks.sweep_from_zero_with_residual(w.b.data(), w.x.data(), w.float_residual.data());
+  to_double(w.float_residual, b.size(), &w.residual);
+  w.coarse_b.noalias() = coarse.block_restriction * w.residual;
+  cycle_blocks(level + 1, w.coarse_b, &w.coarse_x, nullptr);
+  w.residual.noalias() = coarse.block_interpolation * w.coarse_x;  // the correction
+  float* xf = w.x.data();
+  const double* correction = w.residual.data();
+  for (Eigen::Index v = 0; v < b.size() / 3; ++v, xf += 4, correction += 3) {
+    for (int p = 0; p < 3; ++p) xf[p] += static_cast<float>(correction[p]);
   }
-  if (ax) f.ax.resize(size);
-  fine_blocks_.backward_sweep_with_product(f.b.data(), f.x.data(), ax ? f.ax.data() : nullptr);
-  to_double(f.x, b.size(), x);
-  if (ax) to_double(f.ax, b.size(), ax);
+  if (ax) w.ax.resize(size);
+  blocks.backward_sweep_with_product(w.b.data(), w.x.data(), ax ? w.ax.data() : nullptr);
+  to_double(w.x, b.size(), x);
+  if (ax) to_double(w.ax, b.size(), ax);
 }
 
 void SheetMultigrid::update_fine(const Eigen::SparseMatrix<double>& system) {

@@ -70,18 +70,18 @@ struct SheetMultigridOptions {
   // cheaper sweep saves.
   enum class Smoother { kGaussSeidel, kL1Jacobi };
   Smoother smoother = Smoother::kGaussSeidel;
-  // Gauss-Seidel with one sweep: the fine level's two sweeps (the cycle's
-  // dearest passes) on float vectors, 4 floats at a time
-  // (vertex_block_float_sweeps.cpp), the coarse levels in double. The
-  // cycle is then the double one to float rounding of its fine vectors
-  // (relative ~1e-6), which the conjugate gradients' own tolerance (1e-3
-  // by default) leaves no trace of: they stop on their own double
+  // Gauss-Seidel with one sweep: every level's two sweeps (but the
+  // coarsest's direct solve) on float vectors, 4 floats at a time
+  // (vertex_block_float_sweeps.cpp), the transfers between levels in
+  // double. The cycle is then the double one to float rounding of its
+  // vectors (relative ~1e-6), which the conjugate gradients' own tolerance
+  // (1e-3 by default) leaves no trace of: they stop on their own double
   // residual. Its carried product A z (apply_blocks) is then float too:
   // conjugate gradients carrying it reach a true residual of ~5e-6 |b|
   // at best (conjugate_gradients_test.cpp), so the implicit integrator
   // asks for it only at relative tolerances >= 1e-5. false: the double
-  // fine sweeps.
-  bool single_precision_fine_level = true;
+  // sweeps.
+  bool single_precision_sweeps = true;
 
   // Throws FieldError naming the field broken.
   void validate() const;
@@ -143,15 +143,12 @@ class SheetMultigrid {
   // fine residual (block vectors)
   struct Work {
     Eigen::VectorXd residual, coarse_b, coarse_x;
-  };
-  // the fine level's float vectors (single_precision_fine_level)
-  struct FloatWork {
-    AlignedFloats b, x, residual, ax;
+    AlignedFloats b, x, float_residual, ax;  // single_precision_sweeps
   };
   Eigen::VectorXd cycle(std::size_t level, const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& r) const;
   void cycle_blocks(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* ax) const;
-  // cycle_blocks at the fine level above a coarser one, its sweeps in float
-  void fine_cycle_in_float(const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* ax) const;
+  // cycle_blocks at a level above the coarsest, its sweeps in float
+  void cycle_in_float(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* ax) const;
 
   SheetMultigridOptions options_;
   // per level below the fine one: its interpolation from there, operator, grid
@@ -162,7 +159,6 @@ class SheetMultigrid {
   std::vector<int> free_index_;
   VertexBlockMatrix fine_blocks_;  // the fine matrix last given, float 3 x 3 blocks (Gauss-Seidel)
   mutable std::vector<Work> work_;  // per level but the coarsest (apply_blocks)
-  mutable FloatWork float_work_;
   Eigen::VectorXd fine_inverse_l1_;
 };
 

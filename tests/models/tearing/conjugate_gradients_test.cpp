@@ -1,10 +1,10 @@
 // The integrator's conjugate gradients with products carried from the
 // multigrid cycle (conjugate_gradients.h): they reach the tolerance asked
-// of the true residual, with the fine level's sweeps in float as with
+// of the true residual, with the sweeps in float as with
 // them in double, in the same iterations, and agree with Eigen's. Down to
 // 1e-5: below, the float cycle's carried product held the true residual
 // at ~5e-6 (measured at 1e-6 on this system), which is why the integrator
-// takes the double fine level there.
+// takes the double sweeps there.
 #include "models/tearing/conjugate_gradients.h"
 
 #include <random>
@@ -30,10 +30,10 @@ struct Solve {
 };
 
 // A x = b by conjugate gradients carrying A p from the cycle's A z.
-Solve carried_solve(const GridSystem& g, const Eigen::VectorXd& b, double tolerance, bool float_fine_level) {
+Solve carried_solve(const GridSystem& g, const Eigen::VectorXd& b, double tolerance, bool float_sweeps) {
   SheetMultigridOptions options;
   options.coarsest_unknowns = 60;
-  options.single_precision_fine_level = float_fine_level;
+  options.single_precision_sweeps = float_sweeps;
   SheetMultigrid multigrid(g.vertices_x, g.vertices_y, g.free_index, static_cast<int>(g.matrix.rows()), options);
   multigrid.rebuild(g.matrix);
   const VertexBlockMatrix& blocks = multigrid.fine_blocks();
@@ -49,7 +49,7 @@ Solve carried_solve(const GridSystem& g, const Eigen::VectorXd& b, double tolera
   return solve;
 }
 
-TEST(ConjugateGradients, WithTheFloatFineLevelTheyReachTheToleranceOfTheDoubleOne) {
+TEST(ConjugateGradients, WithTheFloatSweepsTheyReachTheToleranceOfTheDoubleOnes) {
   const GridSystem g = grid_system(41, 29, 2000.0, 31);
   std::mt19937_64 rng(32);
   std::normal_distribution<double> normal;

@@ -121,13 +121,13 @@ TEST(SheetMultigrid, TheBlockCycleReusingItsWorkspacesGivesTheBitsOfAFreshOne) {
   }
 }
 
-// The fine level's sweeps in float (the default) give the double cycle to
-// float rounding of the fine vectors, and are what runs: the two differ.
-TEST(SheetMultigrid, TheFloatFineLevelCycleIsTheDoubleOneToFloatRounding) {
+// The sweeps in float (the default) give the double cycle to
+// float rounding of the levels' vectors, and are what runs: the two differ.
+TEST(SheetMultigrid, TheFloatSweepsCycleIsTheDoubleOneToFloatRounding) {
   const GridSystem g = grid_system(33, 21, 400.0, 8);
   SheetMultigridOptions in_double = small_coarsest();
-  in_double.single_precision_fine_level = false;
-  ASSERT_TRUE(small_coarsest().single_precision_fine_level);
+  in_double.single_precision_sweeps = false;
+  ASSERT_TRUE(small_coarsest().single_precision_sweeps);
   SheetMultigrid single(g.vertices_x, g.vertices_y, g.free_index, static_cast<int>(g.matrix.rows()), small_coarsest());
   SheetMultigrid full(g.vertices_x, g.vertices_y, g.free_index, static_cast<int>(g.matrix.rows()), in_double);
   single.rebuild(g.matrix);
