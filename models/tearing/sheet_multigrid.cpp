@@ -62,7 +62,7 @@ struct SheetMultigrid::Level {
   Eigen::SparseMatrix<double> block_interpolation, block_restriction;
   Eigen::SparseMatrix<double> matrix;         // P^T A_finer P
   VertexBlockMatrix blocks;                   // matrix in float 3 x 3 blocks (Gauss-Seidel)
-  Eigen::VectorXd inverse_l1;                 // inverse_l1_rows(matrix)
+  Eigen::VectorXd inverse_l1;                 // inverse_l1_rows(matrix) (l1-Jacobi only)
   Grid grid;
 };
 
@@ -241,7 +241,8 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
   } else {
     fine_blocks_ = VertexBlockMatrix(system, free_index_);
   }
-  fine_inverse_l1_ = inverse_l1_rows(system);
+  const bool l1_jacobi = options_.smoother == SheetMultigridOptions::Smoother::kL1Jacobi;
+  if (l1_jacobi) fine_inverse_l1_ = inverse_l1_rows(system);
   Grid grid{vertices_x_, vertices_y_, free_index_, free_count_};
   const Eigen::SparseMatrix<double>* matrix = &system;
   while (grid.count > options_.coarsest_unknowns && (grid.vertices_x > 2 || grid.vertices_y > 2)) {
@@ -252,7 +253,7 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
     level->matrix = level->restriction * product;
     level->matrix.makeCompressed();
     level->blocks = VertexBlockMatrix(level->matrix, level->grid.index);
-    level->inverse_l1 = inverse_l1_rows(level->matrix);
+    if (l1_jacobi) level->inverse_l1 = inverse_l1_rows(level->matrix);
     const VertexBlockMatrix& finer = levels_.empty() ? fine_blocks_ : levels_.back()->blocks;
     level->block_interpolation = between_blocks(level->interpolation, finer, level->blocks);
     level->block_restriction = level->block_interpolation.transpose();
