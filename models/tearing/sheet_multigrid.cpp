@@ -8,6 +8,7 @@
 
 #include "models/core/base/error.h"
 #include "models/core/config/fields.h"
+#include "models/tearing/galerkin_product.h"
 
 namespace repose {
 
@@ -249,9 +250,7 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
     auto level = std::make_unique<Level>();
     std::tie(level->interpolation, level->grid) = interpolation_from_coarse(grid, *matrix);
     level->restriction = level->interpolation.transpose();
-    const Eigen::SparseMatrix<double> product = *matrix * level->interpolation;
-    level->matrix = level->restriction * product;
-    level->matrix.makeCompressed();
+    level->matrix = galerkin_product(*matrix, level->interpolation, grid.index, level->grid.index);
     level->blocks = VertexBlockMatrix(level->matrix, level->grid.index);
     if (l1_jacobi) level->inverse_l1 = inverse_l1_rows(level->matrix);
     const VertexBlockMatrix& finer = levels_.empty() ? fine_blocks_ : levels_.back()->blocks;
