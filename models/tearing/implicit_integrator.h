@@ -75,6 +75,29 @@
 // ~1.6x. Rebuilding every 200 steps instead of 50 saves nothing: at 50
 // cells 11 builds instead of 25, 6.01 against 6.06 CPU s (the iterations
 // grow by as much).
+// 2026-11-27 later (main at ee7ed6f and this binary in turn, load 2-5,
+// CPU): BM_ImplicitStepMultigrid/200/iterations:40 over 8 rounds 131,
+// 170, 135, 109, 100, 119, 118, 113 -> 107, 122, 109, 106, 92, 114, 95,
+// 105 ms a step (medians 118.5 -> 106.5, -10 %; 4 to 20 % a round);
+// /200/min (median of 3, three rounds) 148, 126, 123 -> 128, 113, 129 ms
+// (noise as large as the change). Whole tear at 100 cells in three pairs
+// 76.4 -> 62.0, 55.4 -> 50.2, 57.6 -> 54.4 CPU s, the same outcomes to
+// the digits printed (2,128 steps, 50 cells, 50.858 mJ, 1.7371 mJ, 24.5724
+// N; at 50 cells 64.4993 mJ, 3.34326 mJ, 32.1582 N). By: every multigrid level's
+// sweeps in float, 4 floats at a time (vertex_block_float_sweeps.cpp: the
+// sweeps went from scalar-arithmetic bound to memory bound; subnormals
+// flushed inside them, which had made them 2x slower), the springs by
+// vertex pair (spring_links.h, a third fewer) from n and two coefficients,
+// and the coarse operators by 3 x 3 blocks (galerkin_product.h). The
+// float sweeps' carried products hold the true residual to ~5e-6 of |b|,
+// so below a relative tolerance of 1e-5 the double sweeps run. Where a
+// step goes now (perf, 40 steps from rest, one build): the float sweeps
+// ~31 % (memory bound: 21 MB of fine blocks read 1.5 times a cycle),
+// springs ~7 %, level transfers ~4 %, the base copy ~3 %, the diagonal
+// inverses ~3 %, the bending terms' right-hand side ~3 %, the coarsest
+// solve ~3 %. 20 steps/s is still missed (~1.3-1.6x on a quiet machine):
+// fewer bytes per fine block (the 4 bending blocks a row are multiples
+// of I stored as 9 floats) or a matrix-free spring product are next.
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
