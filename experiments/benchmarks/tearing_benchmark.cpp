@@ -111,6 +111,13 @@
 // min / median of 3 in turn): 99.6 / 102 -> 82.2 / 84.7 ms. Whole tear at
 // 100 cells 47.5 -> 36.2 CPU s, the same outcomes. Target 20 steps/s:
 // missed ~1.6x.
+// Measured 2026-11-27 08:14-08:29 (load 2-5; CPU time; main at ee7ed6f
+// and the branch tear-speed in turn): /200/iterations:40 medians of 8
+// rounds 118.5 -> 106.5 ms a step (-10 %; 4-20 % a round); /200/min
+// (median of 3, three rounds) 148, 126, 123 -> 128, 113, 129 ms; whole
+// tear at 100 cells 76.4 -> 62.0, 55.4 -> 50.2, 57.6 -> 54.4 CPU s, the
+// same outcomes (implicit_integrator.h: by what). Target 20 steps/s:
+// still missed.
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter='ToleranceError|WholeTearTolerance/50/(12/0|3/1)/'   (minutes)

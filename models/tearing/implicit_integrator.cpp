@@ -10,92 +10,16 @@
 
 #include "models/core/base/error.h"
 #include "models/core/config/fields.h"
+#include "models/tearing/conjugate_gradients.h"
 #include "models/tearing/sheet_forces.h"
+#include "models/tearing/spring_links.h"
 #include "models/tearing/stiffness_assembly.h"
 
 namespace repose {
 
 namespace {
 
-// The multigrid V-cycle as Eigen's ConjugateGradient wants a preconditioner.
-class MultigridPreconditioner {
- public:
-  MultigridPreconditioner() = default;
-  void use(const SheetMultigrid* multigrid, const Eigen::SparseMatrix<double>* system) {
-    multigrid_ = multigrid;
-    system_ = system;
-  }
-  template <class Matrix> MultigridPreconditioner& analyzePattern(const Matrix&) { return *this; }
-  template <class Matrix> MultigridPreconditioner& factorize(const Matrix&) { return *this; }
-  template <class Matrix> MultigridPreconditioner& compute(const Matrix&) { return *this; }
-  Eigen::VectorXd solve(const Eigen::VectorXd& r) const { return multigrid_->apply(*system_, r); }
-  Eigen::ComputationInfo info() const { return Eigen::Success; }
-
- private:
-  const SheetMultigrid* multigrid_ = nullptr;
-  const Eigen::SparseMatrix<double>* system_ = nullptr;
-};
-
-// Preconditioned conjugate gradients for A x = b from x = 0 (Eigen's
-// ConjugateGradient's recurrences: stops once |r| <= tolerance |b|, r
-// updated recursively), with the products A p and the preconditioner
-// given; returns x and sets *iterations.
-template <class Product, class Precondition>
-Eigen::VectorXd conjugate_gradients(const Eigen::VectorXd& b, double tolerance, int max_iterations,
-                                    Product&& product, Precondition&& precondition, int* iterations) {
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
-  *iterations = 0;
-  const double threshold = tolerance * tolerance * b.squaredNorm();
-  if (threshold == 0.0) return x;
-  Eigen::VectorXd r = b;
-  Eigen::VectorXd p = precondition(r);
-  double rz = r.dot(p);
-  while (*iterations < max_iterations) {
-    const Eigen::VectorXd ap = product(p);
-    const double alpha = rz / p.dot(ap);
-    x += alpha * p;
-    r -= alpha * ap;
-    ++*iterations;
-    if (r.squaredNorm() < threshold) break;
-    const Eigen::VectorXd z = precondition(r);
-    const double rz_new = r.dot(z);
-    p = z + (rz_new / rz) * p;
-    rz = rz_new;
-  }
-  return x;
-}
-
-// The same recurrences with every vector in *work (no allocation once the
-// vectors have their size), the products A p not taken but carried: the
-// preconditioner gives z and A z (precondition(r, &z, &az)), and A p of
-// p = z + beta p_old is A z + beta A p_old. The solution in work->x.
-template <class Precondition>
-void conjugate_gradients(const Eigen::VectorXd& b, double tolerance, int max_iterations, Precondition&& precondition,
-                         ImplicitIntegrator::SolveWork* work, int* iterations) {
-  ImplicitIntegrator::SolveWork& w = *work;
-  w.x.setZero(b.size());
-  *iterations = 0;
-  const double threshold = tolerance * tolerance * b.squaredNorm();
-  if (threshold == 0.0) return;
-  w.r = b;
-  precondition(w.r, &w.p, &w.ap);
-  double rz = w.r.dot(w.p);
-  while (*iterations < max_iterations) {
-    const double alpha = rz / w.p.dot(w.ap);
-    w.x += alpha * w.p;
-    w.r -= alpha * w.ap;
-    ++*iterations;
-    if (w.r.squaredNorm() < threshold) break;
-    precondition(w.r, &w.z, &w.az);
-    const double rz_new = w.r.dot(w.z);
-    const double beta = rz_new / rz;
-    w.p = w.z + beta * w.p;
-    w.ap = w.az + beta * w.ap;
-    rz = rz_new;
-  }
-}
-
-// The bending part of for_each_stiffness_term (below).
+// The bending part of add_stiffness (below).
 template <class Bending>
 void for_each_bending_term(const SheetModel& model, const SpringConstants& kc, const SheetState& state,
                            Bending&& bending) {
@@ -108,7 +32,7 @@ void for_each_bending_term(const SheetModel& model, const SpringConstants& kc, c
   }
 }
 
-// The twist part of for_each_stiffness_term (below): nothing unless
+// The twist part of add_stiffness (below): nothing unless
 // SheetSpec::twist_stiffness.
 template <class Twist>
 void for_each_twist_term(const SheetModel& model, const SpringConstants& kc, const SheetState& state, Twist&& twist) {
@@ -117,51 +41,6 @@ void for_each_twist_term(const SheetModel& model, const SpringConstants& kc, con
   for (int c = 0; c < model.cell_count(); ++c) {
     if (state.intact(c)) twist(twist_first + 16 * c, model.corners(c), kc.twist_n_per_m * model.cell_stiffness[c]);
   }
-}
-
-// Walks the stiffness -K (positive) of the intact springs and acting
-// bending terms: spring(first, a, b, h, axial) per spring, whose blocks are
-// (a, a) = (b, b) = h, (a, b) = (b, a) = -h (axial = k n n^T, the part its
-// dashpot's damping matrix is beta times), and bending(first, v, kb) per
-// term, whose blocks (v[p], v[q]) are kb c_p c_q I (kBendingCoefficient); a
-// pair may come several times, its blocks add up. first numbers the blocks
-// of the whole sheet (for_each_block_place): 4 (6 c + k) + 0..3 for spring
-// k of cell c in the order above, 24 cells + 9 t + 3 p + q for term t.
-// With SheetSpec::twist_stiffness, twist(first, corners, kt) per intact
-// cell c, blocks (corners[i], corners[j]) kt c_i c_j I (kTwistCoefficient),
-// first = 24 cells + 9 terms + 16 c.
-// spring_constant: per spring 6 c + k its constant (spring_constants_of).
-template <class Spring, class Bending, class Twist>
-void for_each_stiffness_term(const SheetModel& model, const SheetParams& params, const SheetState& state,
-                             const std::vector<double>& spring_constant, Spring&& spring, Bending&& bending,
-                             Twist&& twist) {
-  const SpringConstants kc = spring_constants(model, params);
-  for (int c = 0; c < model.cell_count(); ++c) {
-    if (!state.intact(c)) continue;
-    const std::array<CellSpring, 6> springs = cell_springs(model, c);
-    for (int k = 0; k < 6; ++k) {
-      const CellSpring& s = springs[static_cast<std::size_t>(k)];
-      const Eigen::Vector3d d = state.positions.col(s.b) - state.positions.col(s.a);
-      const double length = d.norm();
-      if (length == 0.0) continue;
-      const Eigen::Vector3d n = d / length;
-      const double ks = spring_constant[static_cast<std::size_t>(6 * c + k)];
-      const double geometric = std::max(0.0, 1.0 - s.rest_length_m / length);
-      // ks n n^T and ks (n n^T + geometric (I - n n^T)) entry by entry
-      // (Eigen's 3 x 3 temporaries had stalled on the stack)
-      Eigen::Matrix3d axial, h;
-      for (int q = 0; q < 3; ++q) {
-        for (int p = 0; p < 3; ++p) {
-          const double npq = n[p] * n[q];
-          axial(p, q) = ks * npq;
-          h(p, q) = ks * (npq + geometric * ((p == q ? 1.0 : 0.0) - npq));
-        }
-      }
-      spring(4 * (6 * c + k), s.a, s.b, h, axial);
-    }
-  }
-  for_each_bending_term(model, kc, state, bending);
-  for_each_twist_term(model, kc, state, twist);
 }
 
 // Per spring 6 c + k (cell c's spring k) its constant (N/m): fixed by
@@ -179,7 +58,7 @@ std::vector<double> spring_constants_of(const SheetModel& model, const SheetPara
   return constants;
 }
 
-// Calls place(a, b) for every block for_each_stiffness_term can give, in
+// Calls place(a, b) for every block add_stiffness can give, in
 // the order of its index, whether or not the spring or term acts.
 template <class Place>
 void for_each_block_place(const SheetModel& model, Place&& place) {
@@ -281,7 +160,7 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
     }
   }
   system_ = system_pattern(model, free_index_, free_count_);
-  spring_constant_ = spring_constants_of(model, params);
+  spring_links_ = spring_links(model, spring_constants_of(model, params));
   first_row_.assign(static_cast<std::size_t>(model.vertex_count()), -1);
   all_free_.assign(static_cast<std::size_t>(model.vertex_count()), 0);
   for (int v = 0; v < model.vertex_count(); ++v) {
@@ -298,8 +177,13 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
     if (first_row_[static_cast<std::size_t>(v)] >= 0) block_row_[static_cast<std::size_t>(v)] = rows++;
   }
   if (solver_.preconditioner == ImplicitSolverOptions::Preconditioner::kMultigrid && free_count_ > 0) {
+    SheetMultigridOptions multigrid = solver_.multigrid;
+    // the float sweeps' carried products hold conjugate gradients' true
+    // residual to ~5e-6 of |b| (conjugate_gradients_test.cpp): below 1e-5 the
+    // double sweeps
+    multigrid.single_precision_sweeps = multigrid.single_precision_sweeps && solver_.relative_tolerance >= 1e-5;
     multigrid_ = std::make_unique<SheetMultigrid>(model.cells_x + 1, model.cells_y + 1, free_index_, free_count_,
-                                                  solver_.multigrid);
+                                                  multigrid);
     multigrid_->prepare_fine_pattern(system_);  // the mesh's, like system_'s
   }
 }
@@ -440,15 +324,28 @@ void ImplicitIntegrator::fill_block_base(const SheetState& state, VertexBlockMat
   base_torn_step_ = state.torn_step;
 }
 
+// The stiffness -K (positive) of the intact springs and acting bending
+// and twist terms: per spring link (spring_links.h) the sum of its intact
+// cells' constants, its blocks (a, a) = (b, b) = h, (a, b) = (b, a) = -h;
+// per bending term blocks (v[p], v[q]) kb c_p c_q I (kBendingCoefficient),
+// per intact cell's twist term kt c_i c_j I (kTwistCoefficient). Block
+// indices: for_each_block_place's (4 (6 c + k) + 0..3 for spring k of
+// cell c, then 24 cells + 9 t + 3 p + q for term t, then 24 cells + 9
+// terms + 16 c for cell c's twist).
 template <class Assembly>
 void ImplicitIntegrator::add_stiffness(const SheetState& state, Assembly* assembly) const {
-  for_each_stiffness_term(
-      model_, params_, state, spring_constant_,
-      [&](int first, int a, int b, const Eigen::Matrix3d& h, const Eigen::Matrix3d& axial) {
-        assembly->add_spring(first, a, b, h, axial);
-      },
-      [&](int first, const std::array<int, 3>& v, double kb) { assembly->add_bending(first, v, kb); },
-      [&](int first, const std::array<int, 4>& v, double kt) { assembly->add_twist(first, v, kt); });
+  for (const SpringLink& link : spring_links_) {
+    const double ks = link.constant_in(state);
+    if (ks == 0.0) continue;
+    const Eigen::Vector3d d = state.positions.col(link.b) - state.positions.col(link.a);
+    if (d.isZero(0.0)) continue;
+    assembly->add_spring_along(link.first, link.a, link.b, d, ks, link.rest_length_m);
+  }
+  const SpringConstants kc = spring_constants(model_, params_);
+  for_each_bending_term(model_, kc, state,
+                        [&](int first, const std::array<int, 3>& v, double kb) { assembly->add_bending(first, v, kb); });
+  for_each_twist_term(model_, kc, state,
+                      [&](int first, const std::array<int, 4>& v, double kt) { assembly->add_twist(first, v, kt); });
 }
 
 int ImplicitIntegrator::step(SheetState* state) {

@@ -75,6 +75,29 @@
 // ~1.6x. Rebuilding every 200 steps instead of 50 saves nothing: at 50
 // cells 11 builds instead of 25, 6.01 against 6.06 CPU s (the iterations
 // grow by as much).
+// 2026-11-27 later (main at ee7ed6f and this binary in turn, load 2-5,
+// CPU): BM_ImplicitStepMultigrid/200/iterations:40 over 8 rounds 131,
+// 170, 135, 109, 100, 119, 118, 113 -> 107, 122, 109, 106, 92, 114, 95,
+// 105 ms a step (medians 118.5 -> 106.5, -10 %; 4 to 20 % a round);
+// /200/min (median of 3, three rounds) 148, 126, 123 -> 128, 113, 129 ms
+// (noise as large as the change). Whole tear at 100 cells in three pairs
+// 76.4 -> 62.0, 55.4 -> 50.2, 57.6 -> 54.4 CPU s, the same outcomes to
+// the digits printed (2,128 steps, 50 cells, 50.858 mJ, 1.7371 mJ, 24.5724
+// N; at 50 cells 64.4993 mJ, 3.34326 mJ, 32.1582 N). By: every multigrid level's
+// sweeps in float, 4 floats at a time (vertex_block_float_sweeps.cpp: the
+// sweeps went from scalar-arithmetic bound to memory bound; subnormals
+// flushed inside them, which had made them 2x slower), the springs by
+// vertex pair (spring_links.h, a third fewer) from n and two coefficients,
+// and the coarse operators by 3 x 3 blocks (galerkin_product.h). The
+// float sweeps' carried products hold the true residual to ~5e-6 of |b|,
+// so below a relative tolerance of 1e-5 the double sweeps run. Where a
+// step goes now (perf, 40 steps from rest, one build): the float sweeps
+// ~31 % (memory bound: 21 MB of fine blocks read 1.5 times a cycle),
+// springs ~7 %, level transfers ~4 %, the base copy ~3 %, the diagonal
+// inverses ~3 %, the bending terms' right-hand side ~3 %, the coarsest
+// solve ~3 %. 20 steps/s is still missed (~1.3-1.6x on a quiet machine):
+// fewer bytes per fine block (the 4 bending blocks a row are multiples
+// of I stored as 9 floats) or a matrix-free spring product are next.
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme
@@ -91,10 +114,12 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "models/tearing/conjugate_gradients.h"
 #include "models/tearing/sheet_model.h"
 #include "models/tearing/sheet_multigrid.h"
 #include "models/tearing/sheet_params.h"
 #include "models/tearing/sheet_state.h"
+#include "models/tearing/spring_links.h"
 
 namespace repose {
 
@@ -167,11 +192,7 @@ class ImplicitIntegrator {
   // Times the multigrid hierarchy was built.
   int multigrid_rebuilds() const { return rebuilds_; }
 
-  // The conjugate gradients' vectors, kept from step to step (no
-  // allocation once sized): b the right-hand side, x the solution.
-  struct SolveWork {
-    Eigen::VectorXd b, x, r, p, z, ap, az;
-  };
+  using SolveWork = ConjugateGradientWork;
 
  private:
   // The system (into system_) over the free degrees of freedom; dv_all
@@ -199,7 +220,7 @@ class ImplicitIntegrator {
   Eigen::SparseMatrix<double> system_;
   std::vector<int> first_row_;  // per vertex: the row of its first free axis, or -1
   std::vector<char> all_free_;  // per vertex: no axis held (its rows first_row_ + 0..2)
-  // per stiffness block (for_each_stiffness_term's index), per column of
+  // per stiffness block (for_each_block_place's index), per column of
   // the block: where its first free row lies in system_'s values, or -1
   std::vector<std::array<int, 3>> block_place_;
   int last_iterations_ = 0;
@@ -212,7 +233,7 @@ class ImplicitIntegrator {
   // velocity change (all axes), the right-hand side and dv (free rows)
   Eigen::VectorXd dv_all_, rhs_, dv_;
   SolveWork work_;
-  std::vector<double> spring_constant_;  // per spring 6 c + k: its constant, N/m
+  std::vector<SpringLink> spring_links_;  // the springs by vertex pair, their constants
   // the fine blocks' mass and bending values, and the torn cells they hold
   std::vector<float> block_base_;
   std::vector<int> base_torn_step_;

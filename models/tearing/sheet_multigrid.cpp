@@ -8,6 +8,7 @@
 
 #include "models/core/base/error.h"
 #include "models/core/config/fields.h"
+#include "models/tearing/galerkin_product.h"
 
 namespace repose {
 
@@ -62,7 +63,7 @@ struct SheetMultigrid::Level {
   Eigen::SparseMatrix<double> block_interpolation, block_restriction;
   Eigen::SparseMatrix<double> matrix;         // P^T A_finer P
   VertexBlockMatrix blocks;                   // matrix in float 3 x 3 blocks (Gauss-Seidel)
-  Eigen::VectorXd inverse_l1;                 // inverse_l1_rows(matrix)
+  Eigen::VectorXd inverse_l1;                 // inverse_l1_rows(matrix) (l1-Jacobi only)
   Grid grid;
 };
 
@@ -241,18 +242,17 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
   } else {
     fine_blocks_ = VertexBlockMatrix(system, free_index_);
   }
-  fine_inverse_l1_ = inverse_l1_rows(system);
+  const bool l1_jacobi = options_.smoother == SheetMultigridOptions::Smoother::kL1Jacobi;
+  if (l1_jacobi) fine_inverse_l1_ = inverse_l1_rows(system);
   Grid grid{vertices_x_, vertices_y_, free_index_, free_count_};
   const Eigen::SparseMatrix<double>* matrix = &system;
   while (grid.count > options_.coarsest_unknowns && (grid.vertices_x > 2 || grid.vertices_y > 2)) {
     auto level = std::make_unique<Level>();
     std::tie(level->interpolation, level->grid) = interpolation_from_coarse(grid, *matrix);
     level->restriction = level->interpolation.transpose();
-    const Eigen::SparseMatrix<double> product = *matrix * level->interpolation;
-    level->matrix = level->restriction * product;
-    level->matrix.makeCompressed();
+    level->matrix = galerkin_product(*matrix, level->interpolation, grid.index, level->grid.index);
     level->blocks = VertexBlockMatrix(level->matrix, level->grid.index);
-    level->inverse_l1 = inverse_l1_rows(level->matrix);
+    if (l1_jacobi) level->inverse_l1 = inverse_l1_rows(level->matrix);
     const VertexBlockMatrix& finer = levels_.empty() ? fine_blocks_ : levels_.back()->blocks;
     level->block_interpolation = between_blocks(level->interpolation, finer, level->blocks);
     level->block_restriction = level->block_interpolation.transpose();
@@ -296,9 +296,13 @@ void SheetMultigrid::cycle_blocks(std::size_t level, const Eigen::VectorXd& b, E
     if (ax) blocks.product(*x, ax);
     return;
   }
+  const int sweeps = options_.smoothing_sweeps;
+  if (sweeps == 1 && options_.single_precision_sweeps) {
+    cycle_in_float(level, b, x, ax);
+    return;
+  }
   const Level& coarse = *levels_[level];
   Work& work = work_[level];
-  const int sweeps = options_.smoothing_sweeps;
   if (sweeps == 1) {
     // one sweep from zero: its residual from the blocks it reads
     blocks.sweep_from_zero_with_residual(b, x, &work.residual);
@@ -316,6 +320,60 @@ void SheetMultigrid::cycle_blocks(std::size_t level, const Eigen::VectorXd& b, E
   } else {
     blocks.gauss_seidel_sweep(b, false, false, x);
   }
+}
+
+namespace {
+
+// block vectors (3 a vertex, double) to the float passes' (4 a vertex, the
+// fourth 0) and back
+void to_float(const Eigen::VectorXd& from, std::size_t size, AlignedFloats* to) {
+  to->resize(size);
+  float* out = to->data();
+  const double* in = from.data();
+  for (Eigen::Index v = 0; v < from.size() / 3; ++v, out += 4, in += 3) {
+    out[0] = static_cast<float>(in[0]);
+    out[1] = static_cast<float>(in[1]);
+    out[2] = static_cast<float>(in[2]);
+    out[3] = 0.0f;
+  }
+}
+
+void to_double(const AlignedFloats& from, Eigen::Index size, Eigen::VectorXd* to) {
+  to->resize(size);
+  const float* in = from.data();
+  double* out = to->data();
+  for (Eigen::Index v = 0; v < size / 3; ++v, out += 3, in += 4) {
+    out[0] = in[0];
+    out[1] = in[1];
+    out[2] = in[2];
+  }
+}
+
+}  // namespace
+
+void SheetMultigrid::cycle_in_float(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x,
+                                    Eigen::VectorXd* ax) const {
+  const VertexBlockMatrix& blocks = level == 0 ? fine_blocks_ : levels_[level - 1]->blocks;
+  const Level& coarse = *levels_[level];
+  Work& w = work_[level];
+  const std::size_t size = blocks.float_vector_size();
+  to_float(b, size, &w.b);
+  w.x.resize(size);
+  w.float_residual.resize(size);
+  blocks.sweep_from_zero_with_residual(w.b.data(), w.x.data(), w.float_residual.data());
+  to_double(w.float_residual, b.size(), &w.residual);
+  w.coarse_b.noalias() = coarse.block_restriction * w.residual;
+  cycle_blocks(level + 1, w.coarse_b, &w.coarse_x, nullptr);
+  w.residual.noalias() = coarse.block_interpolation * w.coarse_x;  // the correction
+  float* xf = w.x.data();
+  const double* correction = w.residual.data();
+  for (Eigen::Index v = 0; v < b.size() / 3; ++v, xf += 4, correction += 3) {
+    for (int p = 0; p < 3; ++p) xf[p] += static_cast<float>(correction[p]);
+  }
+  if (ax) w.ax.resize(size);
+  blocks.backward_sweep_with_product(w.b.data(), w.x.data(), ax ? w.ax.data() : nullptr);
+  to_double(w.x, b.size(), x);
+  if (ax) to_double(w.ax, b.size(), ax);
 }
 
 void SheetMultigrid::update_fine(const Eigen::SparseMatrix<double>& system) {

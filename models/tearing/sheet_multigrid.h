@@ -70,6 +70,18 @@ struct SheetMultigridOptions {
   // cheaper sweep saves.
   enum class Smoother { kGaussSeidel, kL1Jacobi };
   Smoother smoother = Smoother::kGaussSeidel;
+  // Gauss-Seidel with one sweep: every level's two sweeps (but the
+  // coarsest's direct solve) on float vectors, 4 floats at a time
+  // (vertex_block_float_sweeps.cpp), the transfers between levels in
+  // double. The cycle is then the double one to float rounding of its
+  // vectors (relative ~1e-6), which the conjugate gradients' own tolerance
+  // (1e-3 by default) leaves no trace of: they stop on their own double
+  // residual. Its carried product A z (apply_blocks) is then float too:
+  // conjugate gradients carrying it reach a true residual of ~5e-6 |b|
+  // at best (conjugate_gradients_test.cpp), so the implicit integrator
+  // asks for it only at relative tolerances >= 1e-5. false: the double
+  // sweeps.
+  bool single_precision_sweeps = true;
 
   // Throws FieldError naming the field broken.
   void validate() const;
@@ -131,9 +143,12 @@ class SheetMultigrid {
   // fine residual (block vectors)
   struct Work {
     Eigen::VectorXd residual, coarse_b, coarse_x;
+    AlignedFloats b, x, float_residual, ax;  // single_precision_sweeps
   };
   Eigen::VectorXd cycle(std::size_t level, const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& r) const;
   void cycle_blocks(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* ax) const;
+  // cycle_blocks at a level above the coarsest, its sweeps in float
+  void cycle_in_float(std::size_t level, const Eigen::VectorXd& b, Eigen::VectorXd* x, Eigen::VectorXd* ax) const;
 
   SheetMultigridOptions options_;
   // per level below the fine one: its interpolation from there, operator, grid

@@ -5,8 +5,9 @@
 // found once), or the multigrid smoother's float 3 x 3 block copy of it
 // (BlockTarget, vertex_block_matrix.h), filled straight on the steps that
 // keep the hierarchy, with no double matrix in between. Block index:
-// for_each_stiffness_term's (implicit_integrator.cpp).
+// for_each_block_place's (implicit_integrator.cpp).
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -138,6 +139,40 @@ struct StiffnessAssembly {
     const Eigen::Vector3d pull = scaled * (v0.segment<3>(3 * b) - v0.segment<3>(3 * a));
     rhs_of(a) += pull;
     rhs_of(b) -= pull;
+    target.spring_blocks(first, left);
+  }
+
+  // A spring of constant ks and rest length rest_length between a and b,
+  // d = x_b - x_a (not 0): add_spring's h = ks (n n^T + g (I - n n^T)),
+  // g = max(0, 1 - rest_length / |d|), axial = ks n n^T, n = d / |d|,
+  // between free vertices from n and two coefficients (its blocks
+  // alpha n n^T + gamma I, its pull dt^2 ks ((1 - g) n (n . dv) + g dv),
+  // no 3 x 3 product); with a held axis through add_spring.
+  void add_spring_along(int first, int a, int b, const Eigen::Vector3d& d, double ks, double rest_length) {
+    const double length = d.norm();
+    const Eigen::Vector3d n = d / length;
+    const double g = std::max(0.0, 1.0 - rest_length / length);
+    if (!(free(a) && free(b))) {
+      Eigen::Matrix3d axial, h;
+      for (int q = 0; q < 3; ++q) {
+        for (int p = 0; p < 3; ++p) {
+          const double npq = n[p] * n[q];
+          axial(p, q) = ks * npq;
+          h(p, q) = ks * (npq + g * ((p == q ? 1.0 : 0.0) - npq));
+        }
+      }
+      add_spring(first, a, b, h, axial);
+      return;
+    }
+    const double alpha = dt2 * ks * (1.0 - g) + dt_beta * ks, gamma = dt2 * ks * g;
+    const Eigen::Vector3d dv = v0.segment<3>(3 * b) - v0.segment<3>(3 * a);
+    const Eigen::Vector3d pull = (dt2 * ks) * ((1.0 - g) * n.dot(dv) * n + g * dv);
+    rhs_of(a) += pull;
+    rhs_of(b) -= pull;
+    Eigen::Matrix3d left;
+    for (int q = 0; q < 3; ++q) {
+      for (int p = 0; p < 3; ++p) left(p, q) = alpha * n[p] * n[q] + (p == q ? gamma : 0.0);
+    }
     target.spring_blocks(first, left);
   }
 

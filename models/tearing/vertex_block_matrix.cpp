@@ -52,7 +52,7 @@ VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const
     outer_.push_back(static_cast<int>(column_.size()));
   }
   find_sources(a);
-  values_.assign(source_.size(), 0.0f);
+  values_.assign(source_.size() + 4, 0.0f);
   if (with_values) refresh(a);
 }
 
@@ -103,6 +103,7 @@ void VertexBlockMatrix::refresh(const Eigen::SparseMatrix<double>& a) {
 void VertexBlockMatrix::invert_diagonal() {
   const int rows = block_rows();
   inverse_.assign(9 * static_cast<std::size_t>(rows), 0.0);
+  inverse_columns_.assign(12 * static_cast<std::size_t>(rows), 0.0f);
   for (int i = 0; i < rows; ++i) {
     const float* d = &values_[9 * static_cast<std::size_t>(diagonal_[static_cast<std::size_t>(i)])];
     Eigen::Matrix3d block;
@@ -121,7 +122,10 @@ void VertexBlockMatrix::invert_diagonal() {
     }
     REPOSE_DEMAND(inverse.allFinite());
     for (int p = 0; p < 3; ++p) {
-      for (int q = 0; q < 3; ++q) inverse_[9 * static_cast<std::size_t>(i) + 3 * p + q] = inverse(p, q);
+      for (int q = 0; q < 3; ++q) {
+        inverse_[9 * static_cast<std::size_t>(i) + 3 * p + q] = inverse(p, q);
+        inverse_columns_[12 * static_cast<std::size_t>(i) + 4 * q + p] = static_cast<float>(inverse(p, q));
+      }
     }
   }
 }

@@ -24,6 +24,9 @@
 
 namespace repose {
 
+// A float vector 16-byte aligned (the float passes' block vectors).
+using AlignedFloats = std::vector<float, Eigen::aligned_allocator<float>>;
+
 class VertexBlockMatrix {
  public:
   VertexBlockMatrix() = default;
@@ -47,7 +50,7 @@ class VertexBlockMatrix {
   // left 0), then finish_values() before any sweep.
   void clear_values() { std::fill(values_.begin(), values_.end(), 0.0f); }
   float* values() { return values_.data(); }
-  std::size_t value_count() const { return values_.size(); }
+  std::size_t value_count() const { return source_.size(); }
   // Block (i, j)'s index (values() + 9 index), -1 when not in the pattern.
   int find_block(int i, int j) const;
   float* diagonal_block(int i) { return values_.data() + 9 * static_cast<std::ptrdiff_t>(diagonal_[static_cast<std::size_t>(i)]); }
@@ -97,6 +100,18 @@ class VertexBlockMatrix {
   void residual_after_sweep_from_zero(const Eigen::VectorXd& x, Eigen::VectorXd* r) const;
   void product(const Eigen::VectorXd& x, Eigen::VectorXd* y) const;
 
+  // The two fused passes in single precision on float block vectors
+  // (vertex_block_float_sweeps.cpp): the multigrid's fine level, where
+  // double vectors and a float-to-double conversion per entry made the
+  // sweeps bound by scalar arithmetic. Each vector holds
+  // float_vector_size() floats, 4 per block row (its 3 axes, then 0),
+  // 16-byte aligned (AlignedFloats). Same results as the double passes to float
+  // rounding of the vectors (relative ~1e-6). ax may be null (the sweep
+  // alone).
+  std::size_t float_vector_size() const { return 4 * static_cast<std::size_t>(block_rows()); }
+  void sweep_from_zero_with_residual(const float* b, float* x, float* r) const;
+  void backward_sweep_with_product(const float* b, float* x, float* ax) const;
+
  private:
   void invert_diagonal();
   void find_sources(const Eigen::SparseMatrix<double>& a);
@@ -107,9 +122,10 @@ class VertexBlockMatrix {
   std::vector<int> outer_;        // per block row its first block, block_rows + 1 entries
   std::vector<int> column_;       // per block: its block column
   std::vector<int> diagonal_;     // per block row: its diagonal block
-  std::vector<float> values_;     // 9 per block, row-major
+  std::vector<float> values_;     // 9 per block, row-major, then 4 of padding (0) for 4-wide loads
   std::vector<int> source_;       // 9 per block: where in a's values, or -1
   std::vector<double> inverse_;   // 9 per block row: D_i^-1, zero on held axes
+  std::vector<float> inverse_columns_;  // 12 per block row: D_i^-1's columns in float, each padded by a 0
 };
 
 }  // namespace repose

@@ -5,6 +5,7 @@
 // the all-free system would.
 #include "models/tearing/stiffness_assembly.h"
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <random>
@@ -146,6 +147,36 @@ TEST(StiffnessAssembly, ASpringGivesItsDocumentedBlocksInBothStores) {
   rhs << pull, -pull;
   EXPECT_LT((a.rhs_csc - rhs).norm(), 1e-15 * rhs.norm());
   EXPECT_EQ(a.rhs_csc, a.rhs_block);
+}
+
+// A spring given by its vertices' separation, constant and rest length is
+// add_spring with its documented h and axial, stretched (geometric
+// stiffness) and compressed (none), free and with held axes, in both stores.
+TEST(StiffnessAssembly, ASpringAlongItsSeparationIsAddSpringWithItsDocumentedBlocks) {
+  std::mt19937_64 rng(5);
+  const double ks = 40.0, dt2 = 1e-4, dt_beta = 3e-5;
+  const Eigen::VectorXd v0 = random_vector(6, rng), dv = random_vector(6, rng);
+  const Eigen::Vector3d d(0.3, -0.2, 0.1);
+  for (const double rest : {0.8 * d.norm(), 1.3 * d.norm()}) {
+    const Eigen::Vector3d n = d.normalized();
+    const double g = std::max(0.0, 1.0 - rest / d.norm());
+    const Eigen::Matrix3d axial = ks * n * n.transpose();
+    const Eigen::Matrix3d h = ks * (n * n.transpose() + g * (Eigen::Matrix3d::Identity() - n * n.transpose()));
+    for (const unsigned mask : {0u, 0b000101u, 0b111000u}) {
+      std::vector<bool> held(6);
+      for (int k = 0; k < 6; ++k) held[static_cast<std::size_t>(k)] = (mask >> k) & 1u;
+      TwoStores by_blocks(2, held, kSpringPairs), along(2, held, kSpringPairs);
+      const Assembled expected = assemble_both(&by_blocks, v0, dv, dt2, dt_beta,
+                                               [&](auto* assembly) { assembly->add_spring(0, 0, 1, h, axial); });
+      const Assembled a = assemble_both(&along, v0, dv, dt2, dt_beta, [&](auto* assembly) {
+        assembly->add_spring_along(0, 0, 1, d, ks, rest);
+      });
+      EXPECT_LT((a.csc - expected.csc).norm(), 1e-14 * expected.csc.norm()) << rest << " " << mask;
+      EXPECT_LT((a.block - expected.block).norm(), 1e-6 * expected.block.norm()) << rest << " " << mask;
+      EXPECT_LT((a.rhs_csc - expected.rhs_csc).norm(), 1e-14 * expected.rhs_csc.norm()) << rest << " " << mask;
+      EXPECT_LT((a.rhs_block - expected.rhs_csc).norm(), 1e-14 * expected.rhs_csc.norm()) << rest << " " << mask;
+    }
+  }
 }
 
 // A bending term on three free vertices: blocks (dt^2 + dt beta) kb c_p c_q I.
