@@ -58,7 +58,8 @@ int release_torn_cells(const SheetModel& model, const SheetParams& params, doubl
     if (lost == 0.0) continue;
     const Eigen::Matrix3Xd& x0 = step_start_positions;
     const Eigen::Matrix3Xd& x1 = state->positions;
-    state->torn_energy_j += lost * 0.5 * (cell_springs_energy_j(model, k, x0, c) + cell_springs_energy_j(model, k, x1, c));
+    state->torn_energy_j +=
+        lost * 0.5 * (cell_springs_energy_j(model, k, x0, c) + cell_springs_energy_j(model, k, x1, c));
     state->torn_twist_energy_j +=
         lost * 0.5 * (cell_twist_energy_j(model, k, x0, c) + cell_twist_energy_j(model, k, x1, c));
     if (next[i] > 0.0) ++still;

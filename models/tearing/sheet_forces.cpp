@@ -117,7 +117,8 @@ void add_bending_forces(const SheetModel& model, const SpringConstants& k, const
   for (const BendingTerm& t : model.bending) {
     const double hold = bending_hold(t, state);
     if (hold == 0.0) continue;
-    const Eigen::Vector3d g = (scale * k.bending_n_per_m * t.weight * hold) * (y.col(t.a) - 2.0 * y.col(t.b) + y.col(t.c));
+    const Eigen::Vector3d g =
+        (scale * k.bending_n_per_m * t.weight * hold) * (y.col(t.a) - 2.0 * y.col(t.b) + y.col(t.c));
     forces->col(t.a) -= g;
     forces->col(t.b) += 2.0 * g;
     forces->col(t.c) -= g;
