@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
+#include "models/tearing/cell_release.h"
 #include "models/tearing/sheet_forces.h"
 #include "models/tearing/stable_time_step.h"
 
@@ -26,6 +27,7 @@ ExplicitIntegrator::ExplicitIntegrator(const SheetModel& model, const SheetParam
 int ExplicitIntegrator::step(SheetState* state) {
   REPOSE_DEMAND(state->positions.cols() == model_.vertex_count());
   const int torn = tear_and_internal_forces(model_, params_, static_cast<int>(state->steps + 1), state, &forces_);
+  if (model_.spec.release_time_s > 0.0) step_start_positions_ = state->positions;
   const double t_next = state->time_s + dt_;
   const double damping = 1.0 / (1.0 + model_.spec.damping_per_s * dt_);
   const Eigen::Vector3d& g = model_.spec.gravity_m_per_s2;
@@ -51,6 +53,8 @@ int ExplicitIntegrator::step(SheetState* state) {
     state->grip_work_j += dt_ * state->grip_force_n.col(static_cast<Eigen::Index>(k)).dot(
                                     model_.spec.grips[k].velocity_m_per_s);
   }
+  // the holds fall after the move, their energy booked over x_n .. x_{n+1}
+  release_torn_cells(model_, params_, dt_, step_start_positions_, state);
   state->time_s = t_next;
   ++state->steps;
   return torn;

@@ -5,6 +5,9 @@
 //      x_n loses all its springs; all such cells tear together, decided on
 //      the same positions, so the result does not depend on the order cells
 //      are stored (tearing.h);
+//      with SheetSpec::release_time_s > 0 the torn cells let go gradually
+//      instead: f below takes them at their holds, which fall by
+//      dt / release_time_s after step 3 (cell_release.h);
 //   2. v_{n+1} = (v_n + dt (f(x_n, v_n) / m + g)) / (1 + damping dt), f the
 //      elastic forces and the springs' dashpots (SheetSpec::stiffness_damping_s);
 //   3. x_{n+1} = x_n + dt v_{n+1};
@@ -41,6 +44,7 @@ class ExplicitIntegrator {
   double dt_ = 0.0;
   double stable_dt_ = 0.0;
   Eigen::Matrix3Xd forces_;
+  Eigen::Matrix3Xd step_start_positions_;  // x_n, kept only with release_time_s > 0
 };
 
 }  // namespace repose

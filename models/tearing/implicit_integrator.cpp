@@ -153,6 +153,12 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
   if (!(std::isfinite(time_step_s) && time_step_s > 0.0)) {
     throw InputError(fmt::format("tearing: time_step_s = {} must be > 0", time_step_s));
   }
+  if (model.spec.release_time_s > 0.0) {
+    throw InputError(fmt::format(
+        "tearing: release_time_s = {} s (cells let go gradually) is supported by the explicit integrator only; set "
+        "integrator: explicit or release_time_s: 0",
+        model.spec.release_time_s));
+  }
   free_index_.assign(static_cast<std::size_t>(3 * model.vertex_count()), -1);
   for (int v = 0; v < model.vertex_count(); ++v) {
     for (int a = 0; a < 3; ++a) {

@@ -1,5 +1,6 @@
 #include "models/tearing/sheet_forces.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -39,10 +40,27 @@ bool edge_held(const std::array<int, 2>& cells, const SheetState& state) {
   return (cells[0] >= 0 && state.intact(cells[0])) || (cells[1] >= 0 && state.intact(cells[1]));
 }
 
+double edge_hold(const std::array<int, 2>& cells, const SheetState& state) {
+  return std::max(cells[0] >= 0 ? state.hold(cells[0]) : 0.0, cells[1] >= 0 ? state.hold(cells[1]) : 0.0);
+}
+
 }  // namespace
 
 bool bending_acts(const BendingTerm& t, const SheetState& state) {
   return edge_held(t.cells_ab, state) && edge_held(t.cells_bc, state);
+}
+
+double bending_hold(const BendingTerm& t, const SheetState& state) {
+  return std::min(edge_hold(t.cells_ab, state), edge_hold(t.cells_bc, state));
+}
+
+double bending_term_energy_j(const SpringConstants& k, const BendingTerm& t, const Eigen::Matrix3Xd& x) {
+  return 0.5 * k.bending_n_per_m * t.weight * (x.col(t.a) - 2.0 * x.col(t.b) + x.col(t.c)).squaredNorm();
+}
+
+double cell_twist_energy_j(const SheetModel& model, const SpringConstants& k, const Eigen::Matrix3Xd& x, int c) {
+  if (k.twist_n_per_m == 0.0) return 0.0;
+  return 0.5 * k.twist_n_per_m * model.cell_stiffness[c] * twist_difference(model.corners(c), x).squaredNorm();
 }
 
 namespace {
@@ -97,21 +115,23 @@ void add_cell_forces(const std::array<CellSpring, 6>& springs, const CellStretch
 void add_bending_forces(const SheetModel& model, const SpringConstants& k, const SheetState& state,
                         const Eigen::Matrix3Xd& y, double scale, Eigen::Matrix3Xd* forces) {
   for (const BendingTerm& t : model.bending) {
-    if (!bending_acts(t, state)) continue;
-    const Eigen::Vector3d g = (scale * k.bending_n_per_m * t.weight) * (y.col(t.a) - 2.0 * y.col(t.b) + y.col(t.c));
+    const double hold = bending_hold(t, state);
+    if (hold == 0.0) continue;
+    const Eigen::Vector3d g =
+        (scale * k.bending_n_per_m * t.weight * hold) * (y.col(t.a) - 2.0 * y.col(t.b) + y.col(t.c));
     forces->col(t.a) -= g;
     forces->col(t.b) += 2.0 * g;
     forces->col(t.c) -= g;
   }
 }
 
-// Cell c's twist term's forces -scale k_t w c_i Delta(y) on y = positions
+// Cell c's twist term's forces -scale hold k_t w c_i Delta(y) on y = positions
 // (scale 1: elastic) or velocities (scale beta: its dashpot).
-void add_twist_forces(const SheetModel& model, const SpringConstants& k, int c, const Eigen::Matrix3Xd& y,
+void add_twist_forces(const SheetModel& model, const SpringConstants& k, int c, double hold, const Eigen::Matrix3Xd& y,
                       double scale, Eigen::Matrix3Xd* forces) {
   if (k.twist_n_per_m == 0.0) return;
   const std::array<int, 4> corners = model.corners(c);
-  const Eigen::Vector3d g = (scale * k.twist_n_per_m * model.cell_stiffness[c]) * twist_difference(corners, y);
+  const Eigen::Vector3d g = (scale * k.twist_n_per_m * (model.cell_stiffness[c] * hold)) * twist_difference(corners, y);
   for (int i = 0; i < 4; ++i) forces->col(corners[static_cast<std::size_t>(i)]) -= kTwistCoefficient[i] * g;
 }
 
@@ -131,15 +151,21 @@ void add_cell_damping(const std::array<CellSpring, 6>& springs, const CellStretc
 
 }  // namespace
 
+double cell_springs_energy_j(const SheetModel& model, const SpringConstants& k, const Eigen::Matrix3Xd& x, int c) {
+  const std::array<CellSpring, 6> springs = cell_springs(model, c);
+  return cell_spring_energy(springs, stretch_of(springs, x, INFINITY), k, model.cell_stiffness[c]);
+}
+
 void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
                      Eigen::Matrix3Xd* forces) {
   forces->setZero(3, model.vertex_count());
   const SpringConstants k = spring_constants(model, params);
   for (int c = 0; c < model.cell_count(); ++c) {
-    if (!state.intact(c)) continue;
+    const double hold = state.hold(c);
+    if (hold == 0.0) continue;
     const std::array<CellSpring, 6> springs = cell_springs(model, c);
-    add_cell_forces(springs, stretch_of(springs, state.positions, INFINITY), k, model.cell_stiffness[c], forces);
-    add_twist_forces(model, k, c, state.positions, 1.0, forces);
+    add_cell_forces(springs, stretch_of(springs, state.positions, INFINITY), k, model.cell_stiffness[c] * hold, forces);
+    add_twist_forces(model, k, c, hold, state.positions, 1.0, forces);
   }
   add_bending_forces(model, k, state, state.positions, 1.0, forces);
 }
@@ -157,26 +183,30 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
   const SpringConstants k = spring_constants(model, params);
   const double beta = model.spec.stiffness_damping_s;
   int torn = 0;
+  const bool gradual = model.spec.release_time_s > 0.0;
   for (int c = 0; c < model.cell_count(); ++c) {
-    if (!state->intact(c)) continue;
+    const bool intact = state->intact(c);
+    if (!intact && state->hold(c) == 0.0) continue;
     const std::array<CellSpring, 6> springs = cell_springs(model, c);
-    const CellStretch s = stretch_of(springs, state->positions, cell_tear_strain(model, params, c),
+    const CellStretch s = stretch_of(springs, state->positions, intact ? cell_tear_strain(model, params, c) : INFINITY,
                                      model.spec.isotropic_tear_energy ? &k : nullptr);
-    if (s.over) {
+    if (intact && s.over) {
       state->torn_step[static_cast<std::size_t>(c)] = step_number;
-      state->torn_energy_j += cell_spring_energy(springs, s, k, model.cell_stiffness[c]);
-      if (k.twist_n_per_m > 0.0) {
-        state->torn_twist_energy_j += 0.5 * k.twist_n_per_m * model.cell_stiffness[c] *
-                                      twist_difference(model.corners(c), state->positions).squaredNorm();
-      }
       ++torn;
-    } else {
-      add_cell_forces(springs, s, k, model.cell_stiffness[c], forces);
-      add_twist_forces(model, k, c, state->positions, 1.0, forces);
-      if (beta > 0.0) {
-        add_cell_damping(springs, s, k, model.cell_stiffness[c], beta, state->velocities, forces);
-        add_twist_forces(model, k, c, state->velocities, beta, forces);
+      if (gradual) {  // it holds fully this step and lets go over release_time_s (cell_release.h)
+        state->releasing[static_cast<std::size_t>(c)] = 1.0;
+      } else {
+        state->torn_energy_j += cell_spring_energy(springs, s, k, model.cell_stiffness[c]);
+        state->torn_twist_energy_j += cell_twist_energy_j(model, k, state->positions, c);
+        continue;
       }
+    }
+    const double weight = model.cell_stiffness[c] * state->hold(c);
+    add_cell_forces(springs, s, k, weight, forces);
+    add_twist_forces(model, k, c, state->hold(c), state->positions, 1.0, forces);
+    if (beta > 0.0) {
+      add_cell_damping(springs, s, k, weight, beta, state->velocities, forces);
+      add_twist_forces(model, k, c, state->hold(c), state->velocities, beta, forces);
     }
   }
   add_bending_forces(model, k, *state, state->positions, 1.0, forces);
@@ -189,21 +219,18 @@ ElasticEnergy elastic_energy(const SheetModel& model, const SheetParams& params,
   const Eigen::Matrix3Xd& x = state.positions;
   ElasticEnergy energy;
   for (int c = 0; c < model.cell_count(); ++c) {
-    if (!state.intact(c)) continue;
+    const double hold = state.hold(c);
+    if (hold == 0.0) continue;
     for (const CellSpring& s : cell_springs(model, c)) {
       const double stretch = (x.col(s.b) - x.col(s.a)).norm() - s.rest_length_m;
-      const double e = 0.5 * spring_constant_n_per_m(k, s, model.cell_stiffness[c]) * stretch * stretch;
+      const double e = 0.5 * spring_constant_n_per_m(k, s, model.cell_stiffness[c] * hold) * stretch * stretch;
       (s.diagonal ? energy.shear_j : energy.structural_j) += e;
     }
-    if (k.twist_n_per_m > 0.0) {
-      energy.twist_j += 0.5 * k.twist_n_per_m * model.cell_stiffness[c] *
-                        twist_difference(model.corners(c), x).squaredNorm();
-    }
+    energy.twist_j += hold * cell_twist_energy_j(model, k, x, c);
   }
   for (const BendingTerm& t : model.bending) {
-    if (bending_acts(t, state)) {
-      energy.bending_j += 0.5 * k.bending_n_per_m * t.weight * (x.col(t.a) - 2.0 * x.col(t.b) + x.col(t.c)).squaredNorm();
-    }
+    const double hold = bending_hold(t, state);
+    if (hold > 0.0) energy.bending_j += hold * bending_term_energy_j(k, t, x);
   }
   return energy;
 }

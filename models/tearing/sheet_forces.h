@@ -51,18 +51,35 @@ Eigen::Vector3d twist_difference(const std::array<int, 4>& corners, const Eigen:
 
 // Whether bending term t acts: both its edges have an intact cell.
 bool bending_acts(const BendingTerm& t, const SheetState& state);
+// How much of bending term t acts, in [0, 1]: the smaller over its two
+// edges of the larger SheetState::hold of the edge's cells (1 or 0 with
+// bending_acts under the seed's snap; in between while a cell is released,
+// SheetSpec::release_time_s).
+double bending_hold(const BendingTerm& t, const SheetState& state);
+
+// At full strength (hold 1), at positions x (J): the energy of cell c's six
+// springs, of its twist term (0 without SheetSpec::twist_stiffness), and
+// of bending term t.
+double cell_springs_energy_j(const SheetModel& model, const SpringConstants& k, const Eigen::Matrix3Xd& x, int c);
+double cell_twist_energy_j(const SheetModel& model, const SpringConstants& k, const Eigen::Matrix3Xd& x, int c);
+double bending_term_energy_j(const SpringConstants& k, const BendingTerm& t, const Eigen::Matrix3Xd& x);
 
 // Elastic internal forces (N) on every vertex, 3 x vertex_count,
-// overwritten (no dashpots: those are tear_and_internal_forces').
+// overwritten (no dashpots: those are tear_and_internal_forces'); each
+// cell's springs and twist term scaled by its SheetState::hold, each
+// bending term by its bending_hold.
 void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
                      Eigen::Matrix3Xd* forces);
 
 // The tear rule of tearing.h and internal_forces in one pass over the
 // springs (each cell's verdict depends on its own springs only, so tearing
 // a cell before the next is judged changes nothing): cells over their limit
-// are marked torn at step_number, the energy their springs held added to
-// state->torn_energy_j (their twist terms' to state->torn_twist_energy_j),
-// the forces of the rest accumulated: elastic, plus
+// are marked torn at step_number; under the seed's snap (release_time_s 0)
+// the energy their springs held is added to state->torn_energy_j (their
+// twist terms' to state->torn_twist_energy_j) and they act no more; with
+// release_time_s > 0 they start letting go (SheetState::releasing = 1;
+// cell_release.h fades them and books the energy). The forces of every
+// cell still holding are accumulated, scaled by its hold: elastic, plus
 // the dashpots of SheetSpec::stiffness_damping_s at state->velocities.
 // Returns the number of cells torn.
 int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
@@ -90,7 +107,7 @@ struct ElasticEnergy {
 ElasticEnergy elastic_energy(const SheetModel& model, const SheetParams& params, const SheetState& state);
 
 // Elastic energy of the intact springs, acting bending terms and intact
-// cells' twist terms (J):
+// cells' twist terms, those of released cells scaled by their hold (J):
 // elastic_energy(...).total_j().
 double potential_energy(const SheetModel& model, const SheetParams& params, const SheetState& state);
 // Kinetic energy of all vertices (J).

@@ -71,6 +71,7 @@ void SheetSpec::validate() const {
   require(std::isfinite(damping_per_s) && damping_per_s >= 0.0, "damping_per_s", damping_per_s, ">= 0");
   require(std::isfinite(stiffness_damping_s) && stiffness_damping_s >= 0.0, "stiffness_damping_s",
           stiffness_damping_s, ">= 0");
+  require(std::isfinite(release_time_s) && release_time_s >= 0.0, "release_time_s", release_time_s, ">= 0");
   require(gravity_m_per_s2.allFinite(), "gravity_m_per_s2", gravity_m_per_s2.norm(), "finite");
   require(std::isfinite(notch_length_m) && notch_length_m >= 0.0 && notch_length_m <= height_m, "notch_length_m",
           notch_length_m, "in [0, height_m]");

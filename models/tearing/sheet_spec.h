@@ -93,6 +93,19 @@ struct SheetSpec {
   // (2 / w_max) (sqrt(1 + z^2) - z), z = beta w_max / 2. 0, the default, is
   // the seed's undamped springs. >= 0.
   double stiffness_damping_s = 0.0;
+  // How long (s) a torn cell takes to let go: 0, the default, is the seed's
+  // rule (every spring of the cell goes at once, its bending and twist terms
+  // with it); > 0 fades the cell's springs, dashpots, twist term and its
+  // share in the bending terms linearly from full strength at the step it
+  // tears to nothing release_time_s later, so that a tear does not drop a
+  // stretched cell in one step (a test of whether that sudden release,
+  // radiating waves down to the grid scale, makes the grips' work per tear
+  // length drift under mesh refinement: experiments/tearing_convergence_release.yaml).
+  // The energy the fading cell gives up counts as fracture energy
+  // (SheetState::torn_energy_j; its bending terms' as
+  // SheetState::torn_bending_energy_j). The explicit integrator only.
+  // >= 0 and finite.
+  double release_time_s = 0.0;
   Eigen::Vector3d gravity_m_per_s2{0.0, -9.81, 0.0};
   // A cut from the top edge straight down at x = notch_x_m, notch_length_m
   // long (0: none): the cells it crosses start torn.

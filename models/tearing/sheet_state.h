@@ -16,6 +16,11 @@ struct SheetState {
   // Per cell: -1 while intact, 0 for the notch cut before the run, n >= 1
   // when it tore at the start of step n.
   std::vector<int> torn_step;
+  // Per cell, for torn cells still letting go (SheetSpec::release_time_s):
+  // the fraction of its springs, dashpots, twist term and bending share it
+  // still holds, in (0, 1]; 0 for every other cell (empty: all 0). hold()
+  // below is the one reading of it.
+  std::vector<double> releasing;
   long steps = 0;
   double time_s = 0.0;
   // 3 x grip count: the force each grip exerts on the sheet along its held
@@ -31,6 +36,10 @@ struct SheetState {
   // (SheetSpec::twist_stiffness; 0 without): lost with the cell, not
   // counted as fracture energy (sheet_model.h).
   double torn_twist_energy_j = 0.0;
+  // The energy (J) the bending terms gave up while their cells were let go
+  // gradually (SheetSpec::release_time_s > 0; 0 under the seed's snap,
+  // whose dropped bending terms the ledger leaves in its residual).
+  double torn_bending_energy_j = 0.0;
   // The kinetic energy (J) the mass-proportional damping (damping_per_s) has
   // taken from the free vertices, summed over the run; the explicit
   // integrator keeps it (the implicit one leaves it 0: its damping is inside
@@ -38,6 +47,12 @@ struct SheetState {
   double damping_loss_j = 0.0;
 
   bool intact(int cell) const { return torn_step[static_cast<std::size_t>(cell)] < 0; }
+  // How much of its springs cell holds: 1 intact, 0 torn and let go, in
+  // between while a torn cell is released.
+  double hold(int cell) const {
+    if (intact(cell)) return 1.0;
+    return releasing.empty() ? 0.0 : releasing[static_cast<std::size_t>(cell)];
+  }
   int torn_count() const;
 };
 

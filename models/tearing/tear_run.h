@@ -38,9 +38,9 @@ struct TearRunOptions {
 
 // Where the grips' work went by the end of a run (J): the sheet starts at
 // rest in its rest shape, so
-//   grip work + gravity's work = stored + kinetic + damping + fracture + torn twist + residual,
+//   grip work + gravity's work = stored + kinetic + damping + fracture + torn twist + torn bending + residual,
 // the residual being the integrator's own energy error plus what the ledger
-// does not itemise (bending terms that stop acting when their cells tear,
+// does not itemise (bending terms that stop acting when their cells snap,
 // the dashpots of stiffness_damping_s). Kinetic energy and gravity's work
 // are over the free degrees of freedom (the grips move the held ones and
 // carry their weight). damping_j is 0 for the implicit integrator, whose
@@ -53,6 +53,7 @@ struct EnergyLedger {
   double damping_j = 0.0;    // SheetState::damping_loss_j
   double fracture_j = 0.0;   // SheetState::torn_energy_j
   double torn_twist_j = 0.0;  // SheetState::torn_twist_energy_j
+  double torn_bending_j = 0.0;  // SheetState::torn_bending_energy_j (release_time_s > 0 only)
   double residual_j = 0.0;
 };
 

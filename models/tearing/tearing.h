@@ -10,6 +10,10 @@
 // one set by an energy per unit tear length and the cell size: tear_limit.h);
 // in a fibre image the soft cells between clumps stretch most and go first,
 // which is what makes the tear follow the gaps between clumps.
+//
+// Departure from the seed, optional: SheetSpec::release_time_s > 0 lets a
+// torn cell go gradually instead of at once (cell_release.h); tear_and_internal_forces
+// (sheet_forces.h) starts it, the explicit integrator fades it.
 
 #include <vector>
 

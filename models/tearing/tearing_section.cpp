@@ -23,6 +23,7 @@ void sheet_fields(V& v, SheetSpec& s) {
   v.boolean("isotropic_tear_energy", s.isotropic_tear_energy);
   v.number("damping_per_s", s.damping_per_s, Range::non_negative());
   v.number("stiffness_damping_s", s.stiffness_damping_s, Range::non_negative());
+  v.number("release_time_s", s.release_time_s, Range::non_negative());
   v.vec3("gravity_m_per_s2", s.gravity_m_per_s2, Range::any());
   v.number("notch_length_m", s.notch_length_m, Range::non_negative());
   v.number("notch_x_m", s.notch_x_m, Range::non_negative());

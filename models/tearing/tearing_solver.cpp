@@ -158,7 +158,7 @@ class CompiledTearing final : public CompiledSolver {
         {"damping", t.ledger.damping_j}, {"fracture", t.ledger.fracture_j}, {"residual", t.ledger.residual_j},
         {"stored_structural", t.ledger.stored.structural_j}, {"stored_shear", t.ledger.stored.shear_j},
         {"stored_bending", t.ledger.stored.bending_j}, {"stored_twist", t.ledger.stored.twist_j},
-        {"torn_twist", t.ledger.torn_twist_j}};
+        {"torn_twist", t.ledger.torn_twist_j}, {"torn_bending", t.ledger.torn_bending_j}};
     for (const auto& [name, joules] : ledger) {
       run->set(fmt::format("energy.{}_j", name), joules, "J");
       run->set(fmt::format("energy.{}_per_length_j_per_m", name), t.tear_length_m > 0.0 ? joules / t.tear_length_m : 0.0,

@@ -76,6 +76,7 @@ TEST(TearingSection, ErrorsNameTheKey) {
   EXPECT_NE(error_of("  fibres: {clump_length_min_m: 0.0001}\n").find("clump_length_min_m"), std::string::npos);
   EXPECT_NE(error_of("  tear_strain: -1\n").find("tear_strain"), std::string::npos);
   EXPECT_NE(error_of("  stiffness_damping_s: -1e-7\n").find("stiffness_damping_s"), std::string::npos);
+  EXPECT_NE(error_of("  release_time_s: -1e-6\n").find("release_time_s"), std::string::npos);
   EXPECT_NE(error_of("  twist_stiffness: 3\n").find("twist_stiffness"), std::string::npos);
   EXPECT_NE(error_of("  time_step_fraction: 2\n").find("time_step_fraction"), std::string::npos);
   EXPECT_NE(error_of("  colour: red\n").find("colour"), std::string::npos);
