@@ -59,6 +59,16 @@ class Columns {
       const std::size_t l = static_cast<std::size_t>(local(0, j));
       for (int i = gi0; i < gi1; ++i) ground_cell_[l + i] = row + i;
     }
+    // the map's columns and the first ring: their neighbours are all in the padded window
+    neighbours_lowest_top_.assign(local_count(), kInf);
+    const std::array<std::int64_t, 4> s = steps();
+    for (int j = -1; j <= map.grid.ny; ++j) {
+      for (std::int64_t l = local(-1, j), end = local(map.grid.nx, j); l <= end; ++l) {
+        const std::size_t at = static_cast<std::size_t>(l);
+        neighbours_lowest_top_[at] = std::min(std::min(lowest_top_[at + s[0]], lowest_top_[at + s[1]]),
+                                              std::min(lowest_top_[at + s[2]], lowest_top_[at + s[3]]));
+      }
+    }
   }
 
   int stride() const { return map.grid.nx + 2 * kPad; }
@@ -74,6 +84,8 @@ class Columns {
   // The lowest span's top and bottom in local column l, +inf where it has none.
   double lowest_top(std::int64_t l) const { return lowest_top_[static_cast<std::size_t>(l)]; }
   double lowest_bottom(std::int64_t l) const { return lowest_bottom_[static_cast<std::size_t>(l)]; }
+  // The least of its four neighbours' lowest_top (local column l in the map or its first ring).
+  double neighbours_lowest_top(std::int64_t l) const { return neighbours_lowest_top_[static_cast<std::size_t>(l)]; }
 
   // The surface material at height z entering local column l lands on; false when z is inside its solid.
   bool landing(std::int64_t l, double z, Surface* out) const {
@@ -101,7 +113,7 @@ class Columns {
  private:
   std::vector<std::int32_t> first_, count_;
   std::vector<std::int64_t> ground_cell_;
-  std::vector<double> lowest_top_, lowest_bottom_;
+  std::vector<double> lowest_top_, lowest_bottom_, neighbours_lowest_top_;
 };
 
 struct PassRule {
@@ -159,6 +171,8 @@ void add_ground_fluxes(const Columns& cols, const PassRule& rule, int i, int j, 
   const std::int64_t l = cols.local(i, j), gc = cols.ground_cell(l);
   if (gc < 0) return;
   const double g = cols.ground.heights().data()[gc];
+  // only a span whose top is at or below g can take it: none when every neighbour's lowest one's is above
+  if (cols.neighbours_lowest_top(l) > g) return;
   if (g > cols.lowest_bottom(l)) return;  // under the object: not exposed
   const Surface from{Kind::kGround, l, g, kInf};
   for (const std::int64_t step : cols.steps()) {
@@ -286,14 +300,8 @@ class ChangedColumns {
       }
     }
   }
-  // Column (i, j) or a 4-neighbour changed in the last pass.
-  bool near(int i, int j) const {
-    if (flags_[static_cast<std::size_t>(cols_.local(i, j))]) return true;
-    for (const auto& o : kNeighbours) {  // (i, j) is in the first ring at most: the padding holds them
-      if (flags_[static_cast<std::size_t>(cols_.local(i + o[0], j + o[1]))]) return true;
-    }
-    return false;
-  }
+  // Local column l or a 4-neighbour changed in the last pass.
+  bool near(std::int64_t l) const { return flags_[static_cast<std::size_t>(l)] != 0; }
   // Forgets the last pass's changes, then records those of `fluxes` (applied).
   void record(const std::vector<Flux>& fluxes) {
     for (const std::int64_t l : marked_) flags_[static_cast<std::size_t>(l)] = 0;
@@ -309,12 +317,18 @@ class ChangedColumns {
   void mark(const Surface& s) {
     // a span: the column whose spans hold it
     const std::int64_t l = s.kind == Kind::kSpan ? local_of_span_[static_cast<std::size_t>(s.index)] : s.index;
+    // it and its neighbours (it is in the first ring at most: the padding holds them) are near a change
+    flag(l);
+    for (const std::int64_t step : steps_) flag(l + step);
+  }
+  void flag(std::int64_t l) {
     if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = 1, marked_.push_back(l);
   }
   const Columns& cols_;
   std::vector<char>& flags_;
   std::vector<std::int64_t>& local_of_span_;
-  std::vector<std::int64_t> marked_;
+  std::vector<std::int64_t> marked_;  // the flagged columns
+  const std::array<std::int64_t, 4> steps_ = cols_.steps();
 };
 
 // The columns with spans: [i0, i1] x [j0, j1] (empty when i1 < i0).
@@ -350,8 +364,9 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {
-      for (int i = i0 - 1; i <= i1 + 1; ++i) {
-        if (p > 0 && !changed.near(i, j)) continue;
+      std::int64_t l = cols.local(i0 - 1, j);
+      for (int i = i0 - 1; i <= i1 + 1; ++i, ++l) {
+        if (p > 0 && !changed.near(l)) continue;
         if (cols.count(i, j) > 0) add_span_fluxes(cols, rule, i, j, &fluxes);
         add_ground_fluxes(cols, rule, i, j, &fluxes);
       }
