@@ -78,7 +78,9 @@ class Columns {
   std::size_t local_count() const { return static_cast<std::size_t>(stride()) * (map.grid.ny + 2 * kPad); }
   int i_of(std::int64_t l) const { return static_cast<int>(l % stride()) - kPad; }
   int j_of(std::int64_t l) const { return static_cast<int>(l / stride()) - kPad; }
-  int count(int i, int j) const { return count_[static_cast<std::size_t>(local(i, j))]; }
+  // Local column l's first span (its index in map.spans) and span count.
+  std::int32_t first(std::int64_t l) const { return first_[static_cast<std::size_t>(l)]; }
+  int count(std::int64_t l) const { return count_[static_cast<std::size_t>(l)]; }
   // The ground cell under local column l, -1 beyond the grid.
   std::int64_t ground_cell(std::int64_t l) const { return ground_cell_[static_cast<std::size_t>(l)]; }
   // The lowest span's top and bottom in local column l, +inf where it has none.
@@ -130,14 +132,16 @@ double support_of(const Columns& cols, const Surface& to) {
   return -kInf;
 }
 
-void add_span_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
-  const SpanMap& map = cols.map;
-  const std::int64_t c = map.cell(i, j), l = cols.local(i, j);
+// The fluxes off the spans of local column l (one of the map's).
+void add_span_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, std::vector<Flux>* fluxes) {
+  const std::int32_t first_span = cols.first(l);
+  const int n = cols.count(l);
+  const Span* spans = cols.map.spans.data() + first_span;
   const std::array<std::int64_t, 4> steps = cols.steps();
-  for (int k = 0; k < map.count(c); ++k) {
-    const Span& s = map.begin(c)[k];
+  for (int k = 0; k < n; ++k) {
+    const Span& s = spans[k];
     if (!(s.material_m > rule.dust_m)) continue;  // round-off left by a slide stays put
-    const Surface from{Kind::kSpan, map.first[c] + k, s.level_m(), kInf};
+    const Surface from{Kind::kSpan, first_span + k, s.level_m(), kInf};
     const std::size_t first = fluxes->size();
     double slide_total = 0.0;  // over the neighbours whose support drops more than the repose slope
     for (const std::int64_t step : steps) {
@@ -167,8 +171,8 @@ void add_span_fluxes(const Columns& cols, const PassRule& rule, int i, int j, st
 }
 
 // Ground beside the object sliding onto its spans.
-void add_ground_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
-  const std::int64_t l = cols.local(i, j), gc = cols.ground_cell(l);
+void add_ground_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, std::vector<Flux>* fluxes) {
+  const std::int64_t gc = cols.ground_cell(l);
   if (gc < 0) return;
   const double g = cols.ground.heights().data()[gc];
   // only a span whose top is at or below g can take it: none when every neighbour's lowest one's is above
@@ -364,11 +368,10 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {
-      std::int64_t l = cols.local(i0 - 1, j);
-      for (int i = i0 - 1; i <= i1 + 1; ++i, ++l) {
+      for (std::int64_t l = cols.local(i0 - 1, j), end = cols.local(i1 + 1, j); l <= end; ++l) {
         if (p > 0 && !changed.near(l)) continue;
-        if (cols.count(i, j) > 0) add_span_fluxes(cols, rule, i, j, &fluxes);
-        add_ground_fluxes(cols, rule, i, j, &fluxes);
+        if (cols.count(l) > 0) add_span_fluxes(cols, rule, l, &fluxes);
+        add_ground_fluxes(cols, rule, l, &fluxes);
       }
     }
     if (fluxes.empty()) break;
