@@ -22,11 +22,12 @@ constexpr int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 
 using namespace span_erosion_detail;
 
-// The map's columns and the ground under them, two rings of cells beyond
+// The map's columns with spans (the box [i0, i1] x [j0, j1] of the map's
+// cells holding any) and the ground under them, two rings of cells beyond
 // (the second only so that a ring column's neighbours need no bounds
 // check: nothing beyond the first ring has spans or takes part). Local
 // indices run row-major over that padded window. Each local column's first
-// span, span count (0 beyond the map), lowest span's top and bottom (+inf
+// span, span count (0 where it has none), lowest span's top and bottom (+inf
 // without spans) and ground cell (-1 beyond the grid) are looked up once
 // per call: the spans' solids and the cells do not change during erosion.
 class Columns {
@@ -35,35 +36,37 @@ class Columns {
   const SpanMap& map;
   const HeightField& ground;
   CellOffset off;
+  int i0, i1, j0, j1;  // the box
 
-  Columns(const SpanMap& m, const HeightField& g, CellOffset o) : map(m), ground(g), off(o) {
+  Columns(const SpanMap& m, const HeightField& g, CellOffset o, const std::array<int, 4>& box)
+      : map(m), ground(g), off(o), i0(box[0]), i1(box[1]), j0(box[2]), j1(box[3]) {
     first_.assign(local_count(), 0);
     count_.assign(local_count(), 0);
     ground_cell_.assign(local_count(), -1);
-    const Grid& grid = ground.grid();
-    // the columns whose ground cell is on the grid: [gi0, gi1) x [gj0, gj1)
-    const int gi0 = std::max(-kPad, -off.di), gi1 = std::min(map.grid.nx + kPad, grid.nx - off.di);
-    const int gj0 = std::max(-kPad, -off.dj), gj1 = std::min(map.grid.ny + kPad, grid.ny - off.dj);
     lowest_top_.assign(local_count(), kInf);
     lowest_bottom_.assign(local_count(), kInf);
-    for (int j = 0; j < map.grid.ny; ++j) {
+    for (int j = j0; j <= j1; ++j) {  // beyond the box no column has spans
       const std::int32_t* f = map.first.data() + map.cell(0, j);
       const std::size_t l = static_cast<std::size_t>(local(0, j));
-      for (int i = 0; i < map.grid.nx; ++i) {
+      for (int i = i0; i <= i1; ++i) {
         first_[l + i] = f[i], count_[l + i] = f[i + 1] - f[i];
         if (f[i + 1] > f[i]) lowest_top_[l + i] = map.spans[f[i]].top_m, lowest_bottom_[l + i] = map.spans[f[i]].bottom_m;
       }
     }
+    const Grid& grid = ground.grid();
+    // the window's columns whose ground cell is on the grid: [gi0, gi1) x [gj0, gj1)
+    const int gi0 = std::max(i0 - kPad, -off.di), gi1 = std::min(i1 + kPad + 1, grid.nx - off.di);
+    const int gj0 = std::max(j0 - kPad, -off.dj), gj1 = std::min(j1 + kPad + 1, grid.ny - off.dj);
     for (int j = gj0; j < gj1; ++j) {
       const std::int64_t row = static_cast<std::int64_t>(j + off.dj) * grid.nx + off.di;
       const std::size_t l = static_cast<std::size_t>(local(0, j));
       for (int i = gi0; i < gi1; ++i) ground_cell_[l + i] = row + i;
     }
-    // the map's columns and the first ring: their neighbours are all in the padded window
+    // the box and its first ring: their neighbours are all in the padded window
     neighbours_lowest_top_.assign(local_count(), kInf);
     const std::array<std::int64_t, 4> s = steps();
-    for (int j = -1; j <= map.grid.ny; ++j) {
-      for (std::int64_t l = local(-1, j), end = local(map.grid.nx, j); l <= end; ++l) {
+    for (int j = j0 - 1; j <= j1 + 1; ++j) {
+      for (std::int64_t l = local(i0 - 1, j), end = local(i1 + 1, j); l <= end; ++l) {
         const std::size_t at = static_cast<std::size_t>(l);
         neighbours_lowest_top_[at] = std::min(std::min(lowest_top_[at + s[0]], lowest_top_[at + s[1]]),
                                               std::min(lowest_top_[at + s[2]], lowest_top_[at + s[3]]));
@@ -71,13 +74,14 @@ class Columns {
     }
   }
 
-  int stride() const { return map.grid.nx + 2 * kPad; }
+  int stride() const { return i1 - i0 + 1 + 2 * kPad; }
+  // The local index of the map's column (i, j) (it may lie up to kPad beyond the box).
   std::int64_t local(int i, int j) const {
-    return static_cast<std::int64_t>(j + kPad) * stride() + (i + kPad);
+    return static_cast<std::int64_t>(j - j0 + kPad) * stride() + (i - i0 + kPad);
   }
-  std::size_t local_count() const { return static_cast<std::size_t>(stride()) * (map.grid.ny + 2 * kPad); }
-  int i_of(std::int64_t l) const { return static_cast<int>(l % stride()) - kPad; }
-  int j_of(std::int64_t l) const { return static_cast<int>(l / stride()) - kPad; }
+  std::size_t local_count() const { return static_cast<std::size_t>(stride()) * (j1 - j0 + 1 + 2 * kPad); }
+  int i_of(std::int64_t l) const { return static_cast<int>(l % stride()) - kPad + i0; }
+  int j_of(std::int64_t l) const { return static_cast<int>(l / stride()) - kPad + j0; }
   // Local column l's first span (its index in map.spans) and span count.
   std::int32_t first(std::int64_t l) const { return first_[static_cast<std::size_t>(l)]; }
   int count(std::int64_t l) const { return count_[static_cast<std::size_t>(l)]; }
@@ -297,8 +301,8 @@ class ChangedColumns {
     flags_.assign(cols.local_count(), 0);
     const SpanMap& map = cols.map;
     local_of_span_.resize(map.spans.size());
-    for (int j = 0; j < map.grid.ny; ++j) {
-      for (int i = 0; i < map.grid.nx; ++i) {
+    for (int j = cols.j0; j <= cols.j1; ++j) {  // beyond the box no column has spans
+      for (int i = cols.i0; i <= cols.i1; ++i) {
         const std::int64_t c = map.cell(i, j);
         for (std::int32_t k = map.first[c]; k < map.first[c + 1]; ++k) local_of_span_[k] = cols.local(i, j);
       }
@@ -359,10 +363,11 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   const Material& m = params.materials.front();  // the spans carry the ground's base material
   const PassRule rule{g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, kErosionToleranceFraction * g.cell_size_m,
                       model.options.near_ground_cells * g.cell_size_m, g.cell_size_m, 1e-12 * g.cell_size_m};
-  const Columns cols{map, ground->height, ground_offset(map.grid, g)};
-  Exchange exchange(model.ground, map, ground, cols, &spans->erosion_scratch);
   // the columns with spans and one ring around them: nothing else can exchange with a span
-  const auto [i0, i1, j0, j1] = span_columns(map);
+  const std::array<int, 4> box = span_columns(map);  // not empty: the map has spans
+  const auto [i0, i1, j0, j1] = box;
+  const Columns cols{map, ground->height, ground_offset(map.grid, g), box};
+  Exchange exchange(model.ground, map, ground, cols, &spans->erosion_scratch);
   std::vector<Flux>& fluxes = spans->erosion_scratch.fluxes;
   ChangedColumns changed(cols, &spans->erosion_scratch.changed, &spans->erosion_scratch.local_of_span);
   for (int p = 0; p < m.erosion_iterations; ++p) {
