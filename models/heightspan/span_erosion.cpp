@@ -343,10 +343,12 @@ class ChangedColumns {
 std::array<int, 4> span_columns(const SpanMap& map) {
   std::array<int, 4> box{map.grid.nx, -1, map.grid.ny, -1};
   for (int j = 0; j < map.grid.ny; ++j) {
-    for (int i = 0; i < map.grid.nx; ++i) {
-      if (map.count(map.cell(i, j)) == 0) continue;
-      box = {std::min(box[0], i), std::max(box[1], i), std::min(box[2], j), std::max(box[3], j)};
-    }
+    const std::int32_t* f = map.first.data() + map.cell(0, j);  // the row's offsets: f[nx] starts the next row
+    if (f[0] == f[map.grid.nx]) continue;                          // no spans in the row
+    int lo = 0, hi = map.grid.nx - 1;
+    while (f[lo + 1] == f[lo]) ++lo;
+    while (f[hi + 1] == f[hi]) --hi;
+    box = {std::min(box[0], lo), std::max(box[1], hi), std::min(box[2], j), std::max(box[3], j)};
   }
   return box;
 }
