@@ -310,10 +310,13 @@ class ChangedColumns {
   }
   // Local column l or a 4-neighbour changed in the last pass.
   bool near(std::int64_t l) const { return flags_[static_cast<std::size_t>(l)] != 0; }
+  // Some column of row j is near().
+  bool row_near(int j) const { return rows_[static_cast<std::size_t>(j - cols_.j0 + Columns::kPad)] != 0; }
   // Forgets the last pass's changes, then records those of `fluxes` (applied).
   void record(const std::vector<Flux>& fluxes) {
     for (const std::int64_t l : marked_) flags_[static_cast<std::size_t>(l)] = 0;
     marked_.clear();
+    std::fill(rows_.begin(), rows_.end(), 0);
     for (const Flux& f : fluxes) {
       if (!(f.amount_m > 0.0)) continue;
       mark(f.from);
@@ -328,6 +331,8 @@ class ChangedColumns {
     // it and its neighbours (it is in the first ring at most: the padding holds them) are near a change
     flag(l);
     for (const std::int64_t step : steps_) flag(l + step);
+    const std::size_t row = static_cast<std::size_t>(l / steps_[2]);
+    rows_[row - 1] = rows_[row] = rows_[row + 1] = 1;
   }
   void flag(std::int64_t l) {
     if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = 1, marked_.push_back(l);
@@ -336,6 +341,7 @@ class ChangedColumns {
   std::vector<char>& flags_;
   std::vector<std::int64_t>& local_of_span_;
   std::vector<std::int64_t> marked_;  // the flagged columns
+  std::vector<char> rows_ = std::vector<char>(static_cast<std::size_t>(cols_.j1 - cols_.j0 + 1 + 2 * Columns::kPad), 0);
   const std::array<std::int64_t, 4> steps_ = cols_.steps();
 };
 
@@ -375,6 +381,7 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {
+      if (p > 0 && !changed.row_near(j)) continue;
       for (std::int64_t l = cols.local(i0 - 1, j), end = cols.local(i1 + 1, j); l <= end; ++l) {
         if (p > 0 && !changed.near(l)) continue;
         if (cols.count(l) > 0) add_span_fluxes(cols, rule, l, &fluxes);
