@@ -22,11 +22,12 @@ constexpr int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 
 using namespace span_erosion_detail;
 
-// The map's columns and the ground under them, two rings of cells beyond
+// The map's columns with spans (the box [i0, i1] x [j0, j1] of the map's
+// cells holding any) and the ground under them, two rings of cells beyond
 // (the second only so that a ring column's neighbours need no bounds
 // check: nothing beyond the first ring has spans or takes part). Local
 // indices run row-major over that padded window. Each local column's first
-// span, span count (0 beyond the map), lowest span's top and bottom (+inf
+// span, span count (0 where it has none), lowest span's top and bottom (+inf
 // without spans) and ground cell (-1 beyond the grid) are looked up once
 // per call: the spans' solids and the cells do not change during erosion.
 class Columns {
@@ -35,45 +36,62 @@ class Columns {
   const SpanMap& map;
   const HeightField& ground;
   CellOffset off;
+  int i0, i1, j0, j1;  // the box
 
-  Columns(const SpanMap& m, const HeightField& g, CellOffset o) : map(m), ground(g), off(o) {
+  Columns(const SpanMap& m, const HeightField& g, CellOffset o, const std::array<int, 4>& box)
+      : map(m), ground(g), off(o), i0(box[0]), i1(box[1]), j0(box[2]), j1(box[3]) {
     first_.assign(local_count(), 0);
     count_.assign(local_count(), 0);
     ground_cell_.assign(local_count(), -1);
-    const Grid& grid = ground.grid();
-    // the columns whose ground cell is on the grid: [gi0, gi1) x [gj0, gj1)
-    const int gi0 = std::max(-kPad, -off.di), gi1 = std::min(map.grid.nx + kPad, grid.nx - off.di);
-    const int gj0 = std::max(-kPad, -off.dj), gj1 = std::min(map.grid.ny + kPad, grid.ny - off.dj);
     lowest_top_.assign(local_count(), kInf);
     lowest_bottom_.assign(local_count(), kInf);
-    for (int j = 0; j < map.grid.ny; ++j) {
+    for (int j = j0; j <= j1; ++j) {  // beyond the box no column has spans
       const std::int32_t* f = map.first.data() + map.cell(0, j);
       const std::size_t l = static_cast<std::size_t>(local(0, j));
-      for (int i = 0; i < map.grid.nx; ++i) {
+      for (int i = i0; i <= i1; ++i) {
         first_[l + i] = f[i], count_[l + i] = f[i + 1] - f[i];
         if (f[i + 1] > f[i]) lowest_top_[l + i] = map.spans[f[i]].top_m, lowest_bottom_[l + i] = map.spans[f[i]].bottom_m;
       }
     }
+    const Grid& grid = ground.grid();
+    // the window's columns whose ground cell is on the grid: [gi0, gi1) x [gj0, gj1)
+    const int gi0 = std::max(i0 - kPad, -off.di), gi1 = std::min(i1 + kPad + 1, grid.nx - off.di);
+    const int gj0 = std::max(j0 - kPad, -off.dj), gj1 = std::min(j1 + kPad + 1, grid.ny - off.dj);
     for (int j = gj0; j < gj1; ++j) {
       const std::int64_t row = static_cast<std::int64_t>(j + off.dj) * grid.nx + off.di;
       const std::size_t l = static_cast<std::size_t>(local(0, j));
       for (int i = gi0; i < gi1; ++i) ground_cell_[l + i] = row + i;
     }
+    // the box and its first ring: their neighbours are all in the padded window
+    neighbours_lowest_top_.assign(local_count(), kInf);
+    const std::array<std::int64_t, 4> s = steps();
+    for (int j = j0 - 1; j <= j1 + 1; ++j) {
+      for (std::int64_t l = local(i0 - 1, j), end = local(i1 + 1, j); l <= end; ++l) {
+        const std::size_t at = static_cast<std::size_t>(l);
+        neighbours_lowest_top_[at] = std::min(std::min(lowest_top_[at + s[0]], lowest_top_[at + s[1]]),
+                                              std::min(lowest_top_[at + s[2]], lowest_top_[at + s[3]]));
+      }
+    }
   }
 
-  int stride() const { return map.grid.nx + 2 * kPad; }
+  int stride() const { return i1 - i0 + 1 + 2 * kPad; }
+  // The local index of the map's column (i, j) (it may lie up to kPad beyond the box).
   std::int64_t local(int i, int j) const {
-    return static_cast<std::int64_t>(j + kPad) * stride() + (i + kPad);
+    return static_cast<std::int64_t>(j - j0 + kPad) * stride() + (i - i0 + kPad);
   }
-  std::size_t local_count() const { return static_cast<std::size_t>(stride()) * (map.grid.ny + 2 * kPad); }
-  int i_of(std::int64_t l) const { return static_cast<int>(l % stride()) - kPad; }
-  int j_of(std::int64_t l) const { return static_cast<int>(l / stride()) - kPad; }
-  int count(int i, int j) const { return count_[static_cast<std::size_t>(local(i, j))]; }
+  std::size_t local_count() const { return static_cast<std::size_t>(stride()) * (j1 - j0 + 1 + 2 * kPad); }
+  int i_of(std::int64_t l) const { return static_cast<int>(l % stride()) - kPad + i0; }
+  int j_of(std::int64_t l) const { return static_cast<int>(l / stride()) - kPad + j0; }
+  // Local column l's first span (its index in map.spans) and span count.
+  std::int32_t first(std::int64_t l) const { return first_[static_cast<std::size_t>(l)]; }
+  int count(std::int64_t l) const { return count_[static_cast<std::size_t>(l)]; }
   // The ground cell under local column l, -1 beyond the grid.
   std::int64_t ground_cell(std::int64_t l) const { return ground_cell_[static_cast<std::size_t>(l)]; }
   // The lowest span's top and bottom in local column l, +inf where it has none.
   double lowest_top(std::int64_t l) const { return lowest_top_[static_cast<std::size_t>(l)]; }
   double lowest_bottom(std::int64_t l) const { return lowest_bottom_[static_cast<std::size_t>(l)]; }
+  // The least of its four neighbours' lowest_top (local column l in the map or its first ring).
+  double neighbours_lowest_top(std::int64_t l) const { return neighbours_lowest_top_[static_cast<std::size_t>(l)]; }
 
   // The surface material at height z entering local column l lands on; false when z is inside its solid.
   bool landing(std::int64_t l, double z, Surface* out) const {
@@ -101,7 +119,7 @@ class Columns {
  private:
   std::vector<std::int32_t> first_, count_;
   std::vector<std::int64_t> ground_cell_;
-  std::vector<double> lowest_top_, lowest_bottom_;
+  std::vector<double> lowest_top_, lowest_bottom_, neighbours_lowest_top_;
 };
 
 struct PassRule {
@@ -118,14 +136,16 @@ double support_of(const Columns& cols, const Surface& to) {
   return -kInf;
 }
 
-void add_span_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
-  const SpanMap& map = cols.map;
-  const std::int64_t c = map.cell(i, j), l = cols.local(i, j);
+// The fluxes off the spans of local column l (one of the map's).
+void add_span_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, std::vector<Flux>* fluxes) {
+  const std::int32_t first_span = cols.first(l);
+  const int n = cols.count(l);
+  const Span* spans = cols.map.spans.data() + first_span;
   const std::array<std::int64_t, 4> steps = cols.steps();
-  for (int k = 0; k < map.count(c); ++k) {
-    const Span& s = map.begin(c)[k];
+  for (int k = 0; k < n; ++k) {
+    const Span& s = spans[k];
     if (!(s.material_m > rule.dust_m)) continue;  // round-off left by a slide stays put
-    const Surface from{Kind::kSpan, map.first[c] + k, s.level_m(), kInf};
+    const Surface from{Kind::kSpan, first_span + k, s.level_m(), kInf};
     const std::size_t first = fluxes->size();
     double slide_total = 0.0;  // over the neighbours whose support drops more than the repose slope
     for (const std::int64_t step : steps) {
@@ -155,10 +175,12 @@ void add_span_fluxes(const Columns& cols, const PassRule& rule, int i, int j, st
 }
 
 // Ground beside the object sliding onto its spans.
-void add_ground_fluxes(const Columns& cols, const PassRule& rule, int i, int j, std::vector<Flux>* fluxes) {
-  const std::int64_t l = cols.local(i, j), gc = cols.ground_cell(l);
+void add_ground_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, std::vector<Flux>* fluxes) {
+  const std::int64_t gc = cols.ground_cell(l);
   if (gc < 0) return;
   const double g = cols.ground.heights().data()[gc];
+  // only a span whose top is at or below g can take it: none when every neighbour's lowest one's is above
+  if (cols.neighbours_lowest_top(l) > g) return;
   if (g > cols.lowest_bottom(l)) return;  // under the object: not exposed
   const Surface from{Kind::kGround, l, g, kInf};
   for (const std::int64_t step : cols.steps()) {
@@ -279,25 +301,22 @@ class ChangedColumns {
     flags_.assign(cols.local_count(), 0);
     const SpanMap& map = cols.map;
     local_of_span_.resize(map.spans.size());
-    for (int j = 0; j < map.grid.ny; ++j) {
-      for (int i = 0; i < map.grid.nx; ++i) {
+    for (int j = cols.j0; j <= cols.j1; ++j) {  // beyond the box no column has spans
+      for (int i = cols.i0; i <= cols.i1; ++i) {
         const std::int64_t c = map.cell(i, j);
         for (std::int32_t k = map.first[c]; k < map.first[c + 1]; ++k) local_of_span_[k] = cols.local(i, j);
       }
     }
   }
-  // Column (i, j) or a 4-neighbour changed in the last pass.
-  bool near(int i, int j) const {
-    if (flags_[static_cast<std::size_t>(cols_.local(i, j))]) return true;
-    for (const auto& o : kNeighbours) {  // (i, j) is in the first ring at most: the padding holds them
-      if (flags_[static_cast<std::size_t>(cols_.local(i + o[0], j + o[1]))]) return true;
-    }
-    return false;
-  }
+  // Local column l or a 4-neighbour changed in the last pass.
+  bool near(std::int64_t l) const { return flags_[static_cast<std::size_t>(l)] != 0; }
+  // Some column of row j is near().
+  bool row_near(int j) const { return rows_[static_cast<std::size_t>(j - cols_.j0 + Columns::kPad)] != 0; }
   // Forgets the last pass's changes, then records those of `fluxes` (applied).
   void record(const std::vector<Flux>& fluxes) {
     for (const std::int64_t l : marked_) flags_[static_cast<std::size_t>(l)] = 0;
     marked_.clear();
+    std::fill(rows_.begin(), rows_.end(), 0);
     for (const Flux& f : fluxes) {
       if (!(f.amount_m > 0.0)) continue;
       mark(f.from);
@@ -309,22 +328,33 @@ class ChangedColumns {
   void mark(const Surface& s) {
     // a span: the column whose spans hold it
     const std::int64_t l = s.kind == Kind::kSpan ? local_of_span_[static_cast<std::size_t>(s.index)] : s.index;
+    // it and its neighbours (it is in the first ring at most: the padding holds them) are near a change
+    flag(l);
+    for (const std::int64_t step : steps_) flag(l + step);
+    const std::size_t row = static_cast<std::size_t>(l / steps_[2]);
+    rows_[row - 1] = rows_[row] = rows_[row + 1] = 1;
+  }
+  void flag(std::int64_t l) {
     if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = 1, marked_.push_back(l);
   }
   const Columns& cols_;
   std::vector<char>& flags_;
   std::vector<std::int64_t>& local_of_span_;
-  std::vector<std::int64_t> marked_;
+  std::vector<std::int64_t> marked_;  // the flagged columns
+  std::vector<char> rows_ = std::vector<char>(static_cast<std::size_t>(cols_.j1 - cols_.j0 + 1 + 2 * Columns::kPad), 0);
+  const std::array<std::int64_t, 4> steps_ = cols_.steps();
 };
 
 // The columns with spans: [i0, i1] x [j0, j1] (empty when i1 < i0).
 std::array<int, 4> span_columns(const SpanMap& map) {
   std::array<int, 4> box{map.grid.nx, -1, map.grid.ny, -1};
   for (int j = 0; j < map.grid.ny; ++j) {
-    for (int i = 0; i < map.grid.nx; ++i) {
-      if (map.count(map.cell(i, j)) == 0) continue;
-      box = {std::min(box[0], i), std::max(box[1], i), std::min(box[2], j), std::max(box[3], j)};
-    }
+    const std::int32_t* f = map.first.data() + map.cell(0, j);  // the row's offsets: f[nx] starts the next row
+    if (f[0] == f[map.grid.nx]) continue;                          // no spans in the row
+    int lo = 0, hi = map.grid.nx - 1;
+    while (f[lo + 1] == f[lo]) ++lo;
+    while (f[hi + 1] == f[hi]) --hi;
+    box = {std::min(box[0], lo), std::max(box[1], hi), std::min(box[2], j), std::max(box[3], j)};
   }
   return box;
 }
@@ -341,19 +371,21 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   const Material& m = params.materials.front();  // the spans carry the ground's base material
   const PassRule rule{g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, kErosionToleranceFraction * g.cell_size_m,
                       model.options.near_ground_cells * g.cell_size_m, g.cell_size_m, 1e-12 * g.cell_size_m};
-  const Columns cols{map, ground->height, ground_offset(map.grid, g)};
-  Exchange exchange(model.ground, map, ground, cols, &spans->erosion_scratch);
   // the columns with spans and one ring around them: nothing else can exchange with a span
-  const auto [i0, i1, j0, j1] = span_columns(map);
+  const std::array<int, 4> box = span_columns(map);  // not empty: the map has spans
+  const auto [i0, i1, j0, j1] = box;
+  const Columns cols{map, ground->height, ground_offset(map.grid, g), box};
+  Exchange exchange(model.ground, map, ground, cols, &spans->erosion_scratch);
   std::vector<Flux>& fluxes = spans->erosion_scratch.fluxes;
   ChangedColumns changed(cols, &spans->erosion_scratch.changed, &spans->erosion_scratch.local_of_span);
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {
-      for (int i = i0 - 1; i <= i1 + 1; ++i) {
-        if (p > 0 && !changed.near(i, j)) continue;
-        if (cols.count(i, j) > 0) add_span_fluxes(cols, rule, i, j, &fluxes);
-        add_ground_fluxes(cols, rule, i, j, &fluxes);
+      if (p > 0 && !changed.row_near(j)) continue;
+      for (std::int64_t l = cols.local(i0 - 1, j), end = cols.local(i1 + 1, j); l <= end; ++l) {
+        if (p > 0 && !changed.near(l)) continue;
+        if (cols.count(l) > 0) add_span_fluxes(cols, rule, l, &fluxes);
+        add_ground_fluxes(cols, rule, l, &fluxes);
       }
     }
     if (fluxes.empty()) break;

@@ -83,7 +83,7 @@ struct SpanErosionScratch {
   std::vector<span_erosion_detail::Flux> fluxes;
   std::vector<double> out, in, released_m, release_z;
   std::vector<std::size_t> released_at;
-  std::vector<char> changed;  // per column (ring included): changed in the last pass
+  std::vector<char> changed;  // per column (ring included): it or a neighbour changed in the last pass
   std::vector<std::int64_t> local_of_span;  // the column (local index) of each span
 };
 

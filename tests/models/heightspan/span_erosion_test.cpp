@@ -103,6 +103,20 @@ TEST(SpanErosion, MaterialNearTheGroundSlidesOntoItAndFarAboveItFalls) {
   EXPECT_NEAR(high.state.particles.in_flight_m3(), far.to_particles_m3, 1e-18);
 }
 
+TEST(SpanErosion, MaterialFallingOffAnEdgeLeavesFromTheCellBeyondItAtItsLevel) {
+  Plate high(0.05, 30.0);
+  high.span_at(0.1775, 0.1225).material_m = 0.02;  // the plate's +x edge column (0.175 .. 0.18)
+  high.params.materials.front().erosion_iterations = 1;  // one pass: only that column gives
+  high.erode(1);
+  ASSERT_FALSE(high.state.particles.particles.empty());
+  for (const Particle& q : high.state.particles.particles) {
+    // released at the centre of the column beyond the edge, (0.18 .. 0.185) x (0.12 .. 0.125)
+    EXPECT_NEAR(q.position_m.x(), 0.1825, 1e-12);
+    EXPECT_NEAR(q.position_m.y(), 0.1225, 1e-12);
+    EXPECT_NEAR(q.position_m.z(), 0.05 + 0.02, 1e-12);  // the level it left at
+  }
+}
+
 TEST(SpanErosion, GroundHigherThanASpanSlidesOntoIt) {
   Plate p(0.0125, 30.0);
   // a heap of ground beside the plate's -x edge (0.06), 2 cm above its top
