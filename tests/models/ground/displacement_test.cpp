@@ -13,22 +13,8 @@ using namespace repose::testing;
 
 constexpr double kBed = 0.05, kRadius = 0.05;
 
-// The drag at 5 mm cells: a sphere pressed 2 cm into a 5 cm bed of
-// sand near -0.1 * dir from the grid's centre, dragged 0.2 m along dir,
-// lifted. Its outline stays off rows of cell centres (5 mm cells, centre
-// 1.1 mm off the cells' corners along the drag): an edge through a row of
-// centres is rasterised (depth_image.cpp) by a rule that does not commute
-// with the mirrors, so the symmetry would hold only to that rule.
-Scene drag_scene(const Eigen::Vector2d& dir) {
-  const double low = kBed + kRadius - 0.02, high = kBed + kRadius + 0.005;
-  const Eigen::Vector2d a = -0.0989 * dir, b = 0.1011 * dir;
-  ObjectSpec ball = sphere(kRadius, {at(0, a.x(), a.y(), high), at(0.3, a.x(), a.y(), low), at(1.3, b.x(), b.y(), low),
-                                     at(1.5, b.x(), b.y(), 0.2)});
-  ball.body = make_octasphere(kRadius, 4);  // symmetric under the grid's mirrors
-  Scene scene = flat_scene(centred_grid(80, 80, 0.005), kBed, sand(), {ball}, 2);
-  scene.time.step_s = 0.02;
-  return scene;
-}
+// The drag (ground_fixtures.h) in a 5 cm bed.
+Scene drag_scene(const Eigen::Vector2d& dir) { return symmetric_drag_scene(dir, kBed, kRadius); }
 
 HeightField run(const Scene& scene) {
   const GroundModel model = build_ground_model(scene);

@@ -124,6 +124,25 @@ inline TriangleMesh make_octasphere(double radius_m, int subdivisions) {
   return m;
 }
 
+// The drag both displacement_test.cpp and heap_in_one_pass_test.cpp check
+// for symmetry, at 5 mm cells: a sphere (an octasphere, symmetric under the
+// grid's mirrors) pressed 2 cm into a bed of sand near -0.1 * dir from the
+// grid's centre, dragged 0.2 m along dir, lifted. Its outline stays off rows
+// of cell centres (centre 1.1 mm off the cells' corners along the drag): an
+// edge through a row of centres is rasterised (depth_image.cpp) by a rule
+// that does not commute with the mirrors, so the symmetry would hold only to
+// that rule.
+inline Scene symmetric_drag_scene(const Eigen::Vector2d& dir, double bed_m, double radius_m) {
+  const double low = bed_m + radius_m - 0.02, high = bed_m + radius_m + 0.005;
+  const Eigen::Vector2d a = -0.0989 * dir, b = 0.1011 * dir;
+  ObjectSpec ball = sphere(radius_m, {at(0, a.x(), a.y(), high), at(0.3, a.x(), a.y(), low),
+                                      at(1.3, b.x(), b.y(), low), at(1.5, b.x(), b.y(), 0.2)});
+  ball.body = make_octasphere(radius_m, 4);
+  Scene scene = flat_scene(centred_grid(80, 80, 0.005), bed_m, sand(), {ball}, 2);
+  scene.time.step_s = 0.02;
+  return scene;
+}
+
 // Runs `steps` steps of a scene on the CPU collision path; the final state.
 inline GroundState run_steps(const GroundModel& model, const GroundParams& params, double initial_height_m,
                              int steps) {

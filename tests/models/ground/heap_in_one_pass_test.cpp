@@ -21,17 +21,9 @@ Scene laid(Scene scene, Laying laying) {
   return with_ground_options_changed(std::move(scene), [&](GroundModelSpec& o) { o.heap_laying = laying; });
 }
 
-// A sphere pressed 2 cm into the bed and dragged 0.2 m along dir (as in
-// displacement_test.cpp: its outline off the rows of cell centres).
+// The drag displacement_test.cpp checks (ground_fixtures.h), heap laid in one pass.
 Scene drag_scene(const Eigen::Vector2d& dir) {
-  const double low = kBed + kRadius - 0.02, high = kBed + kRadius + 0.005;
-  const Eigen::Vector2d a = -0.0989 * dir, b = 0.1011 * dir;
-  ObjectSpec ball = sphere(kRadius, {at(0, a.x(), a.y(), high), at(0.3, a.x(), a.y(), low), at(1.3, b.x(), b.y(), low),
-                                     at(1.5, b.x(), b.y(), 0.2)});
-  ball.body = make_octasphere(kRadius, 4);  // symmetric under the grid's mirrors
-  Scene scene = flat_scene(centred_grid(80, 80, 0.005), kBed, sand(), {ball}, 2);
-  scene.time.step_s = 0.02;
-  return laid(std::move(scene), Laying::kOnePass);
+  return laid(symmetric_drag_scene(dir, kBed, kRadius), Laying::kOnePass);
 }
 
 // A box (4 cm half-sides, 4 cm half-height) pressed `depth` into the bed at the grid's centre in one step.

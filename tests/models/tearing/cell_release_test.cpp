@@ -23,23 +23,12 @@ namespace {
 
 using namespace repose::testing;
 
-// A uniform 21-cell sheet notched in its middle column under the seed's
-// twist (as tear_run_test.cpp's), undamped, cells let go over release_time_s.
+// The notched sheet under the seed's twist (tearing_fixtures.h), undamped,
+// cells let go over release_time_s.
 SheetModel notched_twisted_sheet(double release_time_s, bool twist_stiffness = false) {
-  SheetSpec spec = free_sheet_spec(0.042, 21);
-  spec.twist_stiffness = twist_stiffness;
-  spec.grips = seed_twist_grips(0.042, 0.042, 0.006, 0.006, 4.0);
-  spec.notch_length_m = 0.004;
-  spec.notch_x_m = 0.021;
+  SheetSpec spec = notched_twisted_spec(twist_stiffness);
   spec.release_time_s = release_time_s;
   return uniform_sheet(spec);
-}
-
-TearRunOptions stop_at_24_mm() {
-  TearRunOptions options;
-  options.duration_s = 0.02;
-  options.stop_at_depth_m = 0.024;
-  return options;
 }
 
 // A 3 x 3 sheet rolled about y and stretched 3 % along x: every cell past

@@ -19,23 +19,11 @@ namespace {
 
 using namespace repose::testing;
 
-// A uniform 21-cell sheet notched in its middle column under the seed's
-// twist, and a run that stops when the tear is 24 mm deep.
+// The notched sheet under the seed's twist (tearing_fixtures.h), damped.
 SheetModel notched_twisted_sheet(bool twist_stiffness = false) {
-  SheetSpec spec = free_sheet_spec(0.042, 21);
-  spec.twist_stiffness = twist_stiffness;
+  SheetSpec spec = notched_twisted_spec(twist_stiffness);
   spec.damping_per_s = 2e3;
-  spec.grips = seed_twist_grips(0.042, 0.042, 0.006, 0.006, 4.0);
-  spec.notch_length_m = 0.004;
-  spec.notch_x_m = 0.021;
   return uniform_sheet(spec);
-}
-
-TearRunOptions stop_at_24_mm() {
-  TearRunOptions options;
-  options.duration_s = 0.02;
-  options.stop_at_depth_m = 0.024;
-  return options;
 }
 
 // The twist (left grip -z, right +z) maps onto itself under x -> W - x,

@@ -8,6 +8,7 @@
 #include "models/tearing/sheet_params.h"
 #include "models/tearing/sheet_state.h"
 #include "models/tearing/stable_time_step.h"
+#include "models/tearing/tear_run.h"
 
 namespace repose::testing {
 
@@ -30,6 +31,25 @@ inline SheetModel uniform_sheet(const SheetSpec& spec) {
 inline SheetModel fibre_sheet(const SheetSpec& spec, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   return build_sheet_model(spec, draw_fibre_images(spec.fibres, spec.width_m, spec.height_m, rng));
+}
+
+// A uniform 21-cell (42 mm) sheet notched 4 mm in its middle column under the
+// seed's twist (grips 6 mm deep, 6 mm apart, at 4 m/s), undamped.
+inline SheetSpec notched_twisted_spec(bool twist_stiffness) {
+  SheetSpec spec = free_sheet_spec(0.042, 21);
+  spec.twist_stiffness = twist_stiffness;
+  spec.grips = seed_twist_grips(0.042, 0.042, 0.006, 0.006, 4.0);
+  spec.notch_length_m = 0.004;
+  spec.notch_x_m = 0.021;
+  return spec;
+}
+
+// A tear run that stops when the tear is 24 mm deep (20 ms at most).
+inline TearRunOptions stop_at_24_mm() {
+  TearRunOptions options;
+  options.duration_s = 0.02;
+  options.stop_at_depth_m = 0.024;
+  return options;
 }
 
 // A grip holding the vertices of the column x = x_m along `axes`, moving at vx.
