@@ -77,6 +77,29 @@ void rasterise(Eigen::Vector3d a, Eigen::Vector3d b, Eigen::Vector3d c, const Gr
   }
 }
 
+// Sorts the hits by cell, then height, entries before exits at one height:
+// by cell with a counting sort (a cell has a few hits), then each cell's
+// by insertion. Hits that compare equal are equal in every field, so the
+// order is the one any sort gives.
+void sort_hits(std::vector<SpanHit>* hits, std::size_t cell_count) {
+  std::vector<std::size_t> start(cell_count + 1, 0);
+  for (const SpanHit& h : *hits) ++start[static_cast<std::size_t>(h.cell) + 1];
+  for (std::size_t c = 0; c < cell_count; ++c) start[c + 1] += start[c];
+  std::vector<SpanHit> sorted(hits->size());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (const SpanHit& h : *hits) sorted[next[static_cast<std::size_t>(h.cell)]++] = h;
+  auto before = [](const SpanHit& a, const SpanHit& b) { return a.z < b.z || (a.z == b.z && a.winding > b.winding); };
+  for (std::size_t c = 0; c < cell_count; ++c) {
+    for (std::size_t k = start[c] + 1; k < start[c + 1]; ++k) {
+      const SpanHit h = sorted[k];
+      std::size_t m = k;
+      for (; m > start[c] && before(h, sorted[m - 1]); --m) sorted[m] = sorted[m - 1];
+      sorted[m] = h;
+    }
+  }
+  *hits = std::move(sorted);
+}
+
 }  // namespace
 
 double SpanMap::material_m3() const {
@@ -104,11 +127,7 @@ SpanMap peel_spans(const TriangleMesh& mesh, const Grid& grid) {
 
 SpanMap spans_from_hits(std::vector<SpanHit> hits, const Grid& grid) {
   // bottom to top per cell; at one height entries first, so touching parts merge
-  std::sort(hits.begin(), hits.end(), [](const SpanHit& a, const SpanHit& b) {
-    if (a.cell != b.cell) return a.cell < b.cell;
-    if (a.z != b.z) return a.z < b.z;
-    return a.winding > b.winding;
-  });
+  sort_hits(&hits, grid.cell_count());
   SpanMap map;
   map.grid = grid;
   map.first.assign(grid.cell_count() + 1, 0);

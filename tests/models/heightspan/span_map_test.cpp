@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "heightspan_fixtures.h"
@@ -131,8 +132,10 @@ std::vector<SpanHit> plain_hits(const TriangleMesh& mesh, const Grid& g) {
 }
 
 // peel_spans (which works each edge's end order and ownership out once per
-// triangle) gives the plain rasterisation's spans to the bit: the bucket
-// turned by odd angles, and a box whose edges run through cell centres.
+// triangle, and sorts the hits by cell first) gives the plain
+// rasterisation's spans to the bit, whatever the hits' order: the bucket
+// turned by odd angles, a box whose edges run through cell centres, and two
+// boxes touching.
 TEST(SpanMap, PeelingMatchesThePlainRasterisationBitForBit) {
   const Grid g = grid(44, 0.0025, -0.055);
   std::vector<TriangleMesh> meshes;
@@ -140,9 +143,15 @@ TEST(SpanMap, PeelingMatchesThePlainRasterisationBitForBit) {
     const Eigen::Quaterniond turn(Eigen::AngleAxisd(deg * M_PI / 180.0, Eigen::Vector3d(0.3, 1.0, 0.2).normalized()));
     meshes.push_back(transformed(testing::bucket_mesh(), Pose{{0.001, -0.002, 0.03}, turn}));
   }
-  meshes.push_back(transformed(make_box({0.01, 0.01, 0.005}), Pose{{0.00125, 0.00125, 0.05}, Eigen::Quaterniond::Identity()}));
+  const TriangleMesh box = transformed(make_box({0.01, 0.01, 0.005}), Pose{{0.00125, 0.00125, 0.05}, Eigen::Quaterniond::Identity()});
+  meshes.push_back(box);
+  // touching boxes: hits at one height, an exit and an entry, which must merge in either order given
+  meshes.push_back(merged(box, transformed(box, Pose{{0.004, 0.0, 0.01}, Eigen::Quaterniond::Identity()})));
+  std::mt19937_64 rng(7);
   for (std::size_t k = 0; k < meshes.size(); ++k) {
-    const SpanMap peeled = peel_spans(meshes[k], g), plain = spans_from_hits(plain_hits(meshes[k], g), g);
+    std::vector<SpanHit> hits = plain_hits(meshes[k], g);
+    std::shuffle(hits.begin(), hits.end(), rng);  // spans_from_hits takes them in any order
+    const SpanMap peeled = peel_spans(meshes[k], g), plain = spans_from_hits(hits, g);
     ASSERT_FALSE(peeled.empty()) << k;
     EXPECT_EQ(peeled.first, plain.first) << k;
     ASSERT_EQ(peeled.spans.size(), plain.spans.size()) << k;
