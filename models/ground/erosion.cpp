@@ -205,6 +205,10 @@ ErosionResult erode_inclined(const GroundModel& model, const GroundParams& param
 // is remembered too: it visits the pair itself), the cells in memory order,
 // each cell's neighbours at +x, -x, +y, -y; a flux from the higher cell of
 // a pair whose difference exceeds its rule by more than the tolerance.
+// Two loops: the first finds the pairs whose difference exceeds the
+// smallest rule (most pairs are within their limits, and only these look
+// their rule up) with nothing but local values in reach, writing them to a
+// buffer it cannot alias; the second makes their fluxes, in the same order.
 struct PairScan {
   const GroundModel& model;
   const std::vector<PairRule>& rules;
@@ -218,21 +222,60 @@ struct PairScan {
   double min_max_dh_m;  // the smallest of the rules' max_dh_m
   long long visits = 0;
 
-  // Cell c = (i, j); the neighbours' indices follow from the row-major grid.
-  void cell(std::int64_t c, int i, int j) {
-    const int nx = model.grid.nx, ny = model.grid.ny;  // closed boundary: no pair leaves the grid
-    if (i + 1 < nx) pair(c, i, j, c + 1, i + 1, j);
-    if (i > 0 && !memory.contains(c - 1)) pair(c, i, j, c - 1, i - 1, j);
-    if (j + 1 < ny) pair(c, i, j, c + nx, i, j + 1);
-    if (j > 0 && !memory.contains(c - nx)) pair(c, i, j, c - nx, i, j - 1);
+  // A pair to look at: memory cell k's neighbour in direction `dir`
+  // (0..3: +x, -x, +y, -y).
+  using Candidate = std::array<std::int32_t, 2>;
+
+  // The memory's cells (ij: their (i, j)); `candidates` is scratch.
+  void cells(const std::vector<std::int64_t>& cs, const std::vector<std::array<int, 2>>& ij,
+             std::vector<Candidate>* candidates) {
+    if (candidates->size() < 4 * cs.size()) candidates->resize(4 * cs.size());
+    const std::size_t found = over_limit(cs, ij, candidates->data());
+    const std::int64_t nx = model.grid.nx;
+    const std::array<std::int64_t, 4> step = {1, -1, nx, -nx};
+    for (std::size_t q = 0; q < found; ++q) {
+      const Candidate& cand = (*candidates)[q];
+      const std::int64_t c = cs[static_cast<std::size_t>(cand[0])];
+      const int i = ij[static_cast<std::size_t>(cand[0])][0], j = ij[static_cast<std::size_t>(cand[0])][1];
+      const auto& o = kNeighbours[static_cast<std::size_t>(cand[1])];
+      add(c, i, j, c + step[static_cast<std::size_t>(cand[1])], i + o[0], j + o[1]);
+    }
   }
 
-  // Inline: most pairs are within their limits. A difference no larger
-  // than the smallest limit (plus the tolerance) gives no flux whichever
-  // cell is higher, so only the others look their rule up.
-  void pair(std::int64_t c, int i, int j, std::int64_t n, int ni, int nj) {
-    ++visits;
-    if (std::abs(h[c] - h[n]) - min_max_dh_m > tolerance_m) add(c, i, j, n, ni, nj);
+  // The pairs whose difference exceeds the smallest limit by more than the
+  // tolerance (no flux otherwise, whichever cell is higher), in visiting order.
+  std::size_t over_limit(const std::vector<std::int64_t>& cs, const std::vector<std::array<int, 2>>& ij,
+                         Candidate* out) {
+    const int nx = model.grid.nx, ny = model.grid.ny;  // closed boundary: no pair leaves the grid
+    const double* hh = h;
+    const double lim = min_max_dh_m, tol = tolerance_m;
+    const ErosionMemory& mem = memory;
+    std::size_t found = 0;
+    long long seen = 0;
+    for (std::size_t k = 0; k < cs.size(); ++k) {
+      const std::int64_t c = cs[k];
+      const int i = ij[k][0], j = ij[k][1];
+      const double hc = hh[c];
+      const std::int32_t kk = static_cast<std::int32_t>(k);
+      if (i + 1 < nx) {
+        ++seen;
+        if (std::abs(hc - hh[c + 1]) - lim > tol) out[found++] = {kk, 0};
+      }
+      if (i > 0 && !mem.contains(c - 1)) {
+        ++seen;
+        if (std::abs(hc - hh[c - 1]) - lim > tol) out[found++] = {kk, 1};
+      }
+      if (j + 1 < ny) {
+        ++seen;
+        if (std::abs(hc - hh[c + nx]) - lim > tol) out[found++] = {kk, 2};
+      }
+      if (j > 0 && !mem.contains(c - nx)) {
+        ++seen;
+        if (std::abs(hc - hh[c - nx]) - lim > tol) out[found++] = {kk, 3};
+      }
+    }
+    visits += seen;
+    return found;
   }
 
   void add(std::int64_t c, int i, int j, std::int64_t n, int ni, int nj) {
@@ -322,7 +365,7 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
       ij.push_back({c % g.nx, c / g.nx});
     }
     PairScan scan{model, rules, ceiling, memory, h, tolerance_m, p, one_material, &fluxes, min_max_dh_m};
-    for (std::size_t k = 0; k < cells.size(); ++k) scan.cell(cells[k], ij[k][0], ij[k][1]);
+    scan.cells(cells, ij, &state->erosion_scratch.candidates);
     result.pair_visits += scan.visits;
     if (fluxes.empty()) break;
     result.passes = p + 1;

@@ -24,6 +24,8 @@ struct ErosionScratch {
   // afresh every call): kept only so that their capacity is.
   std::vector<ErosionFlux> fluxes;
   std::vector<std::array<int, 2>> ij;
+  // A pass's pairs over the smallest limit: (index in the memory's cells, direction).
+  std::vector<std::array<std::int32_t, 2>> candidates;
 };
 
 }  // namespace repose

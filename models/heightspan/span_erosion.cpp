@@ -64,7 +64,7 @@ class Columns {
     }
     // the box and its first ring: their neighbours are all in the padded window
     neighbours_lowest_top_.assign(local_count(), kInf);
-    const std::array<std::int64_t, 4> s = steps();
+    const std::array<std::int64_t, 4>& s = steps();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {
       for (std::int64_t l = local(i0 - 1, j), end = local(i1 + 1, j); l <= end; ++l) {
         const std::size_t at = static_cast<std::size_t>(l);
@@ -114,9 +114,10 @@ class Columns {
     return true;
   }
   // The local index steps to the neighbours, in kNeighbours' order.
-  std::array<std::int64_t, 4> steps() const { return {1, -1, stride(), -stride()}; }
+  const std::array<std::int64_t, 4>& steps() const { return steps_; }
 
  private:
+  std::array<std::int64_t, 4> steps_ = {1, -1, stride(), -stride()};
   std::vector<std::int32_t> first_, count_;
   std::vector<std::int64_t> ground_cell_;
   std::vector<double> lowest_top_, lowest_bottom_, neighbours_lowest_top_;
@@ -141,7 +142,7 @@ void add_span_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, 
   const std::int32_t first_span = cols.first(l);
   const int n = cols.count(l);
   const Span* spans = cols.map.spans.data() + first_span;
-  const std::array<std::int64_t, 4> steps = cols.steps();
+  const std::array<std::int64_t, 4>& steps = cols.steps();
   for (int k = 0; k < n; ++k) {
     const Span& s = spans[k];
     if (!(s.material_m > rule.dust_m)) continue;  // round-off left by a slide stays put

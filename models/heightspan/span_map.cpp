@@ -28,7 +28,25 @@ bool owns_edge(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
   return v.y() < u.y() || (v.y() == u.y() && v.x() < u.x());
 }
 
-bool covers(double w, const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return w > 0.0 || (w == 0.0 && owns_edge(u, v)); }
+// One edge (u, v) of a triangle being rasterised: what edge_function and
+// covers work out from its ends alone, once per triangle instead of once per
+// cell. at(p) is edge_function(u, v, p), to the bit: the same operations
+// from the same end, then negated or not.
+struct Edge {
+  double ox, oy, dx, dy;  // the lexicographically smaller end and the vector to the other
+  bool negate, owned;
+
+  Edge(const Eigen::Vector2d& u, const Eigen::Vector2d& v) : negate(!lex_less(u, v)), owned(owns_edge(u, v)) {
+    const Eigen::Vector2d& a = negate ? v : u;
+    const Eigen::Vector2d& b = negate ? u : v;
+    ox = a.x(), oy = a.y(), dx = b.x() - a.x(), dy = b.y() - a.y();
+  }
+  double at(double px, double py) const {
+    const double w = dx * (py - oy) - dy * (px - ox);
+    return negate ? -w : w;
+  }
+  bool covers(double w) const { return w > 0.0 || (w == 0.0 && owned); }
+};
 
 void rasterise(Eigen::Vector3d a, Eigen::Vector3d b, Eigen::Vector3d c, const Grid& grid, std::vector<SpanHit>* hits) {
   const double area = edge_function(a.head<2>(), b.head<2>(), c.head<2>());
@@ -44,17 +62,42 @@ void rasterise(Eigen::Vector3d a, Eigen::Vector3d b, Eigen::Vector3d c, const Gr
   int i0, i1, j0, j1;
   range(std::min({a.x(), b.x(), c.x()}), std::max({a.x(), b.x(), c.x()}), grid.origin_x_m, grid.nx, &i0, &i1);
   range(std::min({a.y(), b.y(), c.y()}), std::max({a.y(), b.y(), c.y()}), grid.origin_y_m, grid.ny, &j0, &j1);
+  const Edge ea(b2, c2), eb(c2, a2), ec(a2, b2);
   for (int j = j0; j <= j1; ++j) {
+    const double py = grid.centre_y(j);
     for (int i = i0; i <= i1; ++i) {
-      const Eigen::Vector2d p(grid.centre_x(i), grid.centre_y(j));
-      const double wa = edge_function(b2, c2, p), wb = edge_function(c2, a2, p), wc = edge_function(a2, b2, p);
-      if (!covers(wa, b2, c2) || !covers(wb, c2, a2) || !covers(wc, a2, b2)) continue;
+      const double px = grid.centre_x(i);
+      const double wa = ea.at(px, py), wb = eb.at(px, py), wc = ec.at(px, py);
+      if (!ea.covers(wa) || !eb.covers(wb) || !ec.covers(wc)) continue;
       const double sum = wa + wb + wc;
       if (!(sum > 0.0)) continue;
       const double z = (wa * a.z() + wb * b.z() + wc * c.z()) / sum;
       hits->push_back({static_cast<std::int64_t>(j) * grid.nx + i, z, winding});
     }
   }
+}
+
+// Sorts the hits by cell, then height, entries before exits at one height:
+// by cell with a counting sort (a cell has a few hits), then each cell's
+// by insertion. Hits that compare equal are equal in every field, so the
+// order is the one any sort gives.
+void sort_hits(std::vector<SpanHit>* hits, std::size_t cell_count) {
+  std::vector<std::size_t> start(cell_count + 1, 0);
+  for (const SpanHit& h : *hits) ++start[static_cast<std::size_t>(h.cell) + 1];
+  for (std::size_t c = 0; c < cell_count; ++c) start[c + 1] += start[c];
+  std::vector<SpanHit> sorted(hits->size());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (const SpanHit& h : *hits) sorted[next[static_cast<std::size_t>(h.cell)]++] = h;
+  auto before = [](const SpanHit& a, const SpanHit& b) { return a.z < b.z || (a.z == b.z && a.winding > b.winding); };
+  for (std::size_t c = 0; c < cell_count; ++c) {
+    for (std::size_t k = start[c] + 1; k < start[c + 1]; ++k) {
+      const SpanHit h = sorted[k];
+      std::size_t m = k;
+      for (; m > start[c] && before(h, sorted[m - 1]); --m) sorted[m] = sorted[m - 1];
+      sorted[m] = h;
+    }
+  }
+  *hits = std::move(sorted);
 }
 
 }  // namespace
@@ -84,11 +127,7 @@ SpanMap peel_spans(const TriangleMesh& mesh, const Grid& grid) {
 
 SpanMap spans_from_hits(std::vector<SpanHit> hits, const Grid& grid) {
   // bottom to top per cell; at one height entries first, so touching parts merge
-  std::sort(hits.begin(), hits.end(), [](const SpanHit& a, const SpanHit& b) {
-    if (a.cell != b.cell) return a.cell < b.cell;
-    if (a.z != b.z) return a.z < b.z;
-    return a.winding > b.winding;
-  });
+  sort_hits(&hits, grid.cell_count());
   SpanMap map;
   map.grid = grid;
   map.first.assign(grid.cell_count() + 1, 0);

@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
 #include <random>
 
 #include "models/core/base/error.h"
@@ -152,6 +155,88 @@ TEST(Erosion, PassesAfterTheFirstFindWhatFullSweepsFind) {
     EXPECT_GT((swept.height.heights() != start.height.heights()).count(), 4) << seed;  // it did erode
     EXPECT_TRUE((restricted.height.heights() == swept.height.heights()).all()) << seed;
     EXPECT_EQ(restricted.erosion.cells(), swept.erosion.cells()) << seed;
+  }
+}
+
+// erode()'s level-bed passes written plainly (erosion.h): every remembered
+// cell in memory order, its neighbours at +x, -x, +y, -y, each pair once
+// (a remembered neighbour before the cell in storage visits the pair
+// itself); a flux sigma * (dh - cell tan(theta)) from the higher cell where
+// that exceeds the tolerance; the inflow of a cell under the ceiling summed
+// in flux order and scaled to its room; the moves applied in flux order,
+// then both cells of each remembered.
+void plain_passes(const GroundModel& model, const Material& m, const Ceiling& ceiling, GroundState* state) {
+  const Grid& g = model.grid;
+  const double max_dh = g.cell_size_m * std::tan(m.repose_angle_rad), tol = kErosionToleranceFraction * g.cell_size_m;
+  double* h = state->height.heights().data();
+  struct Move {
+    std::int64_t from, to;
+    double amount, ceiling_m;
+  };
+  for (int p = 0; p < m.erosion_iterations; ++p) {
+    std::vector<Move> moves;
+    for (const std::int64_t c : state->erosion.cells()) {
+      const int i = static_cast<int>(c % g.nx), j = static_cast<int>(c / g.nx);
+      for (const auto& [di, dj] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        if (!g.contains(i + di, j + dj)) continue;
+        const std::int64_t n = model.cell(i + di, j + dj);
+        if (n < c && state->erosion.contains(n)) continue;
+        const bool c_higher = h[c] > h[n];
+        const double excess = std::abs(h[c] - h[n]) - max_dh;
+        if (!(excess > tol)) continue;
+        moves.push_back({c_higher ? c : n, c_higher ? n : c, m.sigma * excess,
+                         c_higher ? ceiling.at(i + di, j + dj) : ceiling.at(i, j)});
+      }
+    }
+    if (moves.empty()) return;
+    std::map<std::int64_t, double> inflow;
+    for (const Move& f : moves) {
+      if (std::isfinite(f.ceiling_m)) inflow[f.to] += f.amount;
+    }
+    for (Move& f : moves) {
+      const double allowed = std::max(0.0, f.ceiling_m - h[f.to]);
+      if (std::isfinite(f.ceiling_m) && inflow[f.to] > allowed) f.amount *= allowed / inflow[f.to];
+    }
+    for (const Move& f : moves) {
+      if (f.amount > 0.0) h[f.from] -= f.amount, h[f.to] += f.amount;
+    }
+    for (const Move& f : moves) {
+      if (f.amount > 0.0) state->erosion.touch(f.from), state->erosion.touch(f.to);
+    }
+  }
+}
+
+// The scan erode() runs (erosion.cpp: the pairs over the limit found first,
+// their fluxes made after) moves what the plain one does, to the bit, in
+// the same order: the same heights and the same memory, cell for cell.
+TEST(Erosion, ErodeMovesWhatAPlainScanOfTheRememberedPairsMoves) {
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    Material m = sand();
+    m.sigma = 0.1 + 0.15 * u(rng);
+    m.erosion_iterations = 5;
+    const GroundModel model = make_plain_ground_model(centred_grid(23, 17, 0.01), m);
+    GroundState start = make_ground_state(model, HeightField(model.grid, 0.0));
+    for (int j = 0; j < 17; ++j) {  // rough, every cell's slopes over the limit or not, the memory in random order
+      for (int i = 0; i < 23; ++i) start.height.at(i, j) = 0.02 * u(rng);
+    }
+    for (int k = 0; k < 300; ++k) start.erosion.touch(static_cast<std::int64_t>(23 * 17 * u(rng)));
+    Underside plate;
+    plate.footprint = Footprint{6, 4, 8, 7};
+    plate.z_m = ArrayXXdR::Constant(7, 8, 0.012);
+    Ceiling ceiling;
+    ceiling.undersides.push_back(plate);
+    GroundState scanned = start, plain = start;
+    for (int step = 0; step < 3; ++step) {
+      erode(model, GroundParams{{m}}, ceiling, &scanned);
+      plain_passes(model, m, ceiling, &plain);
+      scanned.erosion.end_step();
+      plain.erosion.end_step();
+    }
+    EXPECT_GT((plain.height.heights() != start.height.heights()).count(), 20) << seed;  // it did erode
+    EXPECT_TRUE((scanned.height.heights() == plain.height.heights()).all()) << seed;
+    EXPECT_EQ(scanned.erosion.cells(), plain.erosion.cells()) << seed;
   }
 }
 
