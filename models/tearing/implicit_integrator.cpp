@@ -159,6 +159,11 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
         "integrator: explicit or release_time_s: 0",
         model.spec.release_time_s));
   }
+  if (model.spec.tear_rule == TearRule::kCohesive) {
+    throw InputError(
+        "tearing: tear_rule: cohesive (springs softening past their peak) is supported by the explicit integrator "
+        "only; set integrator: explicit or tear_rule: energy");
+  }
   free_index_.assign(static_cast<std::size_t>(3 * model.vertex_count()), -1);
   for (int v = 0; v < model.vertex_count(); ++v) {
     for (int a = 0; a < 3; ++a) {

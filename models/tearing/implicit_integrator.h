@@ -179,7 +179,8 @@ class ImplicitIntegrator {
   // Refuses (InputError naming time_step_s) a step that is not positive or
   // finite, and (naming release_time_s) a sheet whose torn cells let go
   // gradually (SheetSpec::release_time_s > 0: the explicit integrator's
-  // only). model and params must outlive the integrator.
+  // only), and (naming tear_rule) softening springs (tear_rule cohesive).
+  // model and params must outlive the integrator.
   ImplicitIntegrator(const SheetModel& model, const SheetParams& params, double time_step_s,
                      const ImplicitSolverOptions& solver = {});
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "models/tearing/cohesive_law.h"
+
 namespace repose {
 
 SpringConstants spring_constants(const SheetModel& model, const SheetParams& params) {
@@ -72,39 +74,91 @@ struct CellStretch {
   bool over = false;
 };
 
-// `limit` is the cell's tear strain; with SheetSpec::isotropic_tear_energy
-// (`isotropic`) each spring's is limit / sqrt(its direction factor).
+// A spring's limit from its cell's `limit`: with SheetSpec::isotropic_tear_energy
+// (`isotropic`) limit / sqrt(its direction factor), else limit.
+double spring_limit_of(double limit, const CellSpring& spring, const SpringConstants* isotropic) {
+  if (isotropic != nullptr && isotropic->anisotropy != 0.0) {
+    return limit / std::sqrt(1.0 + isotropic->anisotropy * std::cos(2.0 * (spring.direction_rad - isotropic->grain_rad)));
+  }
+  return limit;
+}
+
+// `limit` is the cell's tear strain; each spring's is spring_limit_of it.
 CellStretch stretch_of(const std::array<CellSpring, 6>& springs, const Eigen::Matrix3Xd& x, double limit,
                        const SpringConstants* isotropic = nullptr) {
   CellStretch s;
   for (int k = 0; k < 6; ++k) {
     s.d[k] = x.col(springs[k].b) - x.col(springs[k].a);
     s.length[k] = s.d[k].norm();
-    double spring_limit = limit;
-    if (isotropic != nullptr && isotropic->anisotropy != 0.0) {
-      spring_limit /= std::sqrt(1.0 + isotropic->anisotropy * std::cos(2.0 * (springs[k].direction_rad - isotropic->grain_rad)));
-    }
+    const double spring_limit = spring_limit_of(limit, springs[k], isotropic);
     s.over = s.over || s.length[k] > (1.0 + spring_limit) * springs[k].rest_length_m;
   }
   return s;
 }
 
+// Under tear_rule cohesive (cohesive_law.h), the laws of one cell's springs:
+// the sheet's law times the cell's tear factor, each spring's limits as
+// stretch_of takes them.
+struct CellLaws {
+  std::array<CohesiveLaw, 6> spring;
+};
+
+CellLaws cell_laws(const CohesiveLaw& sheet_law, const SheetModel& model, const std::array<CellSpring, 6>& springs,
+                   int c, const SpringConstants* isotropic) {
+  const CohesiveLaw cell = sheet_law.scaled(model.cell_tear_factor[c]);
+  CellLaws laws;
+  for (int q = 0; q < 6; ++q) {
+    laws.spring[q] = {spring_limit_of(cell.peak_strain, springs[q], isotropic),
+                      spring_limit_of(cell.zero_strain, springs[q], isotropic)};
+  }
+  return laws;
+}
+
+// The fraction of its linear force each spring of a cell pulls with
+// (CohesiveLaw::secant_factor at the largest strains `reached`, 6 values).
+using SpringFactors = std::array<double, 6>;
+SpringFactors secant_factors(const std::array<CellSpring, 6>& springs, const CellStretch& s, const CellLaws& laws,
+                             const double* reached) {
+  SpringFactors f;
+  for (int q = 0; q < 6; ++q) {
+    f[q] = laws.spring[q].secant_factor(s.length[q] / springs[q].rest_length_m - 1.0, reached[q]);
+  }
+  return f;
+}
+
+// Raises each spring's largest strain (`reached`, 6 values) to its strain
+// now where that passes its peak; returns the energy dissipated (J).
+double soften_cell(const std::array<CellSpring, 6>& springs, const CellStretch& s, const CellLaws& laws,
+                   const SpringConstants& k, double weight, double* reached) {
+  double dissipated = 0.0;
+  for (int q = 0; q < 6; ++q) {
+    const double strain = s.length[q] / springs[q].rest_length_m - 1.0;
+    dissipated += laws.spring[q].soften(spring_constant_n_per_m(k, springs[q], weight), springs[q].rest_length_m,
+                                        strain, &reached[q]);
+  }
+  return dissipated;
+}
+
+// factors: each spring's share of its constant (SpringFactors), or null: all 1.
 double cell_spring_energy(const std::array<CellSpring, 6>& springs, const CellStretch& s, const SpringConstants& k,
-                          double weight) {
+                          double weight, const SpringFactors* factors = nullptr) {
   double energy = 0.0;
   for (int q = 0; q < 6; ++q) {
     const double stretch = s.length[q] - springs[q].rest_length_m;
-    energy += 0.5 * spring_constant_n_per_m(k, springs[q], weight) * stretch * stretch;
+    const double e = 0.5 * spring_constant_n_per_m(k, springs[q], weight) * stretch * stretch;
+    energy += factors == nullptr ? e : (*factors)[q] * e;
   }
   return energy;
 }
 
 void add_cell_forces(const std::array<CellSpring, 6>& springs, const CellStretch& s, const SpringConstants& k,
-                     double weight, Eigen::Matrix3Xd* forces) {
+                     double weight, Eigen::Matrix3Xd* forces, const SpringFactors* factors = nullptr) {
   for (int q = 0; q < 6; ++q) {
     if (s.length[q] == 0.0) continue;  // coincident ends: no direction to push along
     const CellSpring& sp = springs[q];
-    const Eigen::Vector3d f = (spring_constant_n_per_m(k, sp, weight) * (s.length[q] - sp.rest_length_m) / s.length[q]) * s.d[q];
+    double constant = spring_constant_n_per_m(k, sp, weight);
+    if (factors != nullptr) constant *= (*factors)[q];
+    const Eigen::Vector3d f = (constant * (s.length[q] - sp.rest_length_m) / s.length[q]) * s.d[q];
     forces->col(sp.a) += f;
     forces->col(sp.b) -= f;
   }
@@ -138,12 +192,15 @@ void add_twist_forces(const SheetModel& model, const SpringConstants& k, int c, 
 // The springs' dashpots (SheetSpec::stiffness_damping_s): beta k times the
 // rate of stretch along each spring.
 void add_cell_damping(const std::array<CellSpring, 6>& springs, const CellStretch& s, const SpringConstants& k,
-                      double weight, double beta, const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd* forces) {
+                      double weight, double beta, const Eigen::Matrix3Xd& v, Eigen::Matrix3Xd* forces,
+                      const SpringFactors* factors = nullptr) {
   for (int q = 0; q < 6; ++q) {
     if (s.length[q] == 0.0) continue;
     const CellSpring& sp = springs[q];
     const Eigen::Vector3d n = s.d[q] / s.length[q];
-    const Eigen::Vector3d f = (beta * spring_constant_n_per_m(k, sp, weight) * n.dot(v.col(sp.b) - v.col(sp.a))) * n;
+    double constant = spring_constant_n_per_m(k, sp, weight);
+    if (factors != nullptr) constant *= (*factors)[q];
+    const Eigen::Vector3d f = (beta * constant * n.dot(v.col(sp.b) - v.col(sp.a))) * n;
     forces->col(sp.a) += f;
     forces->col(sp.b) -= f;
   }
@@ -156,6 +213,23 @@ double cell_springs_energy_j(const SheetModel& model, const SpringConstants& k, 
   return cell_spring_energy(springs, stretch_of(springs, x, INFINITY), k, model.cell_stiffness[c]);
 }
 
+namespace {
+
+// Under tear_rule cohesive, the secant factors of cell c's springs at the
+// state's largest strains (SheetState::softening); else null.
+const SpringFactors* state_factors(const SheetModel& model, const SheetParams& params, const SheetState& state,
+                                   const std::array<CellSpring, 6>& springs, int c, SpringFactors* storage) {
+  if (model.spec.tear_rule != TearRule::kCohesive) return nullptr;
+  const SpringConstants k = spring_constants(model, params);
+  const CellLaws laws =
+      cell_laws(cohesive_law(model, params), model, springs, c, model.spec.isotropic_tear_energy ? &k : nullptr);
+  *storage = secant_factors(springs, stretch_of(springs, state.positions, INFINITY), laws,
+                            state.softening.data() + 6 * static_cast<std::size_t>(c));
+  return storage;
+}
+
+}  // namespace
+
 void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
                      Eigen::Matrix3Xd* forces) {
   forces->setZero(3, model.vertex_count());
@@ -164,7 +238,10 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
     const double hold = state.hold(c);
     if (hold == 0.0) continue;
     const std::array<CellSpring, 6> springs = cell_springs(model, c);
-    add_cell_forces(springs, stretch_of(springs, state.positions, INFINITY), k, model.cell_stiffness[c] * hold, forces);
+    const CellStretch s = stretch_of(springs, state.positions, INFINITY);
+    SpringFactors storage;
+    add_cell_forces(springs, s, k, model.cell_stiffness[c] * hold, forces,
+                    state_factors(model, params, state, springs, c, &storage));
     add_twist_forces(model, k, c, hold, state.positions, 1.0, forces);
   }
   add_bending_forces(model, k, state, state.positions, 1.0, forces);
@@ -184,28 +261,42 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
   const double beta = model.spec.stiffness_damping_s;
   int torn = 0;
   const bool gradual = model.spec.release_time_s > 0.0;
+  const bool cohesive = model.spec.tear_rule == TearRule::kCohesive;
+  const SpringConstants* isotropic = model.spec.isotropic_tear_energy ? &k : nullptr;
+  const CohesiveLaw sheet_law = cohesive ? cohesive_law(model, params) : CohesiveLaw{};
   for (int c = 0; c < model.cell_count(); ++c) {
     const bool intact = state->intact(c);
     if (!intact && state->hold(c) == 0.0) continue;
     const std::array<CellSpring, 6> springs = cell_springs(model, c);
     const CellStretch s = stretch_of(springs, state->positions, intact ? cell_tear_strain(model, params, c) : INFINITY,
-                                     model.spec.isotropic_tear_energy ? &k : nullptr);
+                                     isotropic);
+    SpringFactors factor_storage;
+    const SpringFactors* factors = nullptr;
+    if (cohesive && intact) {  // soften first: a cell that tears gives up what its springs hold after it
+      double* reached = state->softening.data() + 6 * static_cast<std::size_t>(c);
+      const CellLaws laws = cell_laws(sheet_law, model, springs, c, isotropic);
+      const double dissipated = soften_cell(springs, s, laws, k, model.cell_stiffness[c], reached);
+      state->torn_energy_j += dissipated;
+      state->softening_energy_j += dissipated;
+      factor_storage = secant_factors(springs, s, laws, reached);
+      factors = &factor_storage;
+    }
     if (intact && s.over) {
       state->torn_step[static_cast<std::size_t>(c)] = step_number;
       ++torn;
       if (gradual) {  // it holds fully this step and lets go over release_time_s (cell_release.h)
         state->releasing[static_cast<std::size_t>(c)] = 1.0;
       } else {
-        state->torn_energy_j += cell_spring_energy(springs, s, k, model.cell_stiffness[c]);
+        state->torn_energy_j += cell_spring_energy(springs, s, k, model.cell_stiffness[c], factors);
         state->torn_twist_energy_j += cell_twist_energy_j(model, k, state->positions, c);
         continue;
       }
     }
     const double weight = model.cell_stiffness[c] * state->hold(c);
-    add_cell_forces(springs, s, k, weight, forces);
+    add_cell_forces(springs, s, k, weight, forces, factors);
     add_twist_forces(model, k, c, state->hold(c), state->positions, 1.0, forces);
     if (beta > 0.0) {
-      add_cell_damping(springs, s, k, weight, beta, state->velocities, forces);
+      add_cell_damping(springs, s, k, weight, beta, state->velocities, forces, factors);
       add_twist_forces(model, k, c, state->hold(c), state->velocities, beta, forces);
     }
   }
@@ -221,9 +312,14 @@ ElasticEnergy elastic_energy(const SheetModel& model, const SheetParams& params,
   for (int c = 0; c < model.cell_count(); ++c) {
     const double hold = state.hold(c);
     if (hold == 0.0) continue;
-    for (const CellSpring& s : cell_springs(model, c)) {
+    const std::array<CellSpring, 6> springs = cell_springs(model, c);
+    SpringFactors storage;
+    const SpringFactors* factors = state_factors(model, params, state, springs, c, &storage);
+    for (int q = 0; q < 6; ++q) {
+      const CellSpring& s = springs[q];
       const double stretch = (x.col(s.b) - x.col(s.a)).norm() - s.rest_length_m;
-      const double e = 0.5 * spring_constant_n_per_m(k, s, model.cell_stiffness[c] * hold) * stretch * stretch;
+      double e = 0.5 * spring_constant_n_per_m(k, s, model.cell_stiffness[c] * hold) * stretch * stretch;
+      if (factors != nullptr) e *= (*factors)[q];
       (s.diagonal ? energy.shear_j : energy.structural_j) += e;
     }
     energy.twist_j += hold * cell_twist_energy_j(model, k, x, c);

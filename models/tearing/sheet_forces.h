@@ -67,7 +67,8 @@ double bending_term_energy_j(const SpringConstants& k, const BendingTerm& t, con
 // Elastic internal forces (N) on every vertex, 3 x vertex_count,
 // overwritten (no dashpots: those are tear_and_internal_forces'); each
 // cell's springs and twist term scaled by its SheetState::hold, each
-// bending term by its bending_hold.
+// bending term by its bending_hold; under tear_rule cohesive each spring
+// by its secant factor at SheetState::softening (cohesive_law.h).
 void internal_forces(const SheetModel& model, const SheetParams& params, const SheetState& state,
                      Eigen::Matrix3Xd* forces);
 
@@ -81,6 +82,10 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
 // cell_release.h fades them and books the energy). The forces of every
 // cell still holding are accumulated, scaled by its hold: elastic, plus
 // the dashpots of SheetSpec::stiffness_damping_s at state->velocities.
+// Under tear_rule cohesive every intact cell's springs first soften
+// (SheetState::softening raised to their strains past the peak, the work
+// dissipated added to torn_energy_j and softening_energy_j) and pull with
+// their secant factors; a cell tears when one reaches its zero-force strain.
 // Returns the number of cells torn.
 int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
                              Eigen::Matrix3Xd* forces);
@@ -89,7 +94,8 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
 // rule both tear_and_internal_forces and tearing.h apply.
 bool cell_overstretched(const SheetModel& model, const SheetParams& params, const SheetState& state, int c);
 
-// The elastic energy (J) split by kind: the structural springs (the cells'
+// The elastic energy (J) split by kind (under tear_rule cohesive, each
+// spring's secant factor times its linear energy: what it would give back): the structural springs (the cells'
 // edges: stretching along the mesh lines), the shear springs (their
 // diagonals) and the acting bending terms (out-of-plane folding). The
 // bending part of a sheet bent to curvature kappa over area A tends to

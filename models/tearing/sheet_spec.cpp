@@ -72,6 +72,8 @@ void SheetSpec::validate() const {
   require(std::isfinite(stiffness_damping_s) && stiffness_damping_s >= 0.0, "stiffness_damping_s",
           stiffness_damping_s, ">= 0");
   require(std::isfinite(release_time_s) && release_time_s >= 0.0, "release_time_s", release_time_s, ">= 0");
+  require(tear_rule != TearRule::kCohesive || release_time_s == 0.0, "release_time_s", release_time_s,
+          "0 with tear_rule: cohesive (its springs let go by themselves)");
   require(gravity_m_per_s2.allFinite(), "gravity_m_per_s2", gravity_m_per_s2.norm(), "finite");
   require(std::isfinite(notch_length_m) && notch_length_m >= 0.0 && notch_length_m <= height_m, "notch_length_m",
           notch_length_m, "in [0, height_m]");

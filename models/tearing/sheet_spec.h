@@ -30,8 +30,10 @@ struct GripSpec {
 };
 
 // Which limit tears a cell (tear_limit.h): the seed's one strain for every
-// mesh, or a strain set by the energy per unit tear length and the cell size.
-enum class TearRule { kStrain, kEnergy };
+// mesh, a strain set by the energy per unit tear length and the cell size,
+// or springs that soften past a fixed peak over a fixed opening set by that
+// energy (cohesive_law.h).
+enum class TearRule { kStrain, kEnergy, kCohesive };
 
 struct SheetSpec {
   double width_m = 0.1;
@@ -64,7 +66,12 @@ struct SheetSpec {
   // The tear limit (tear_limit.h): kStrain, the default, is the seed's rule
   // (SheetParams::tear_strain on every mesh, so tearing depends on the
   // mesh); kEnergy sets the strain from SheetParams::tear_energy_j_per_m and
-  // the cell size, so the work per unit tear length does not.
+  // the cell size, so the work per unit tear length does not; kCohesive
+  // (cohesive_law.h) softens each spring linearly from a peak at
+  // SheetParams::tear_strain to zero force at a stretch (a material length,
+  // the same on every mesh) set so that the law's area per unit tear length
+  // is tear_energy_j_per_m, the softening work booked as fracture energy;
+  // the explicit integrator only, and not with release_time_s > 0.
   TearRule tear_rule = TearRule::kStrain;
   // With fibre anisotropy a, a spring along the grain is (1 + a) stiffer; if
   // its tear strain stays the cell's, it tears holding (1 + a) times the

@@ -21,6 +21,10 @@ struct SheetState {
   // still holds, in (0, 1]; 0 for every other cell (empty: all 0). hold()
   // below is the one reading of it.
   std::vector<double> releasing;
+  // Per spring of each cell (6 per cell, cell_springs' order), under
+  // tear_rule cohesive (cohesive_law.h): the largest strain it has reached
+  // past its peak, 0 while it never has (empty under the other rules).
+  std::vector<double> softening;
   long steps = 0;
   double time_s = 0.0;
   // 3 x grip count: the force each grip exerts on the sheet along its held
@@ -30,8 +34,12 @@ struct SheetState {
   // The elastic energy (J) the springs of each cell held at the moment it
   // tore, summed over the run (the notch excluded): the energy the tear
   // itself took out of the sheet, apart from what the grips put into the
-  // flaps' motion, drag and the strain still stored (tear_run.h).
+  // flaps' motion, drag and the strain still stored (tear_run.h); under
+  // tear_rule cohesive also the work its softening springs dissipated.
   double torn_energy_j = 0.0;
+  // The part of torn_energy_j the softening springs of tear_rule cohesive
+  // dissipated before their cells tore (cohesive_law.h; 0 under the others).
+  double softening_energy_j = 0.0;
   // The energy (J) the twist terms of those cells held when they tore
   // (SheetSpec::twist_stiffness; 0 without): lost with the cell, not
   // counted as fracture energy (sheet_model.h).

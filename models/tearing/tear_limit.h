@@ -1,6 +1,6 @@
 #pragma once
 // How far a cell's springs may stretch before the cell tears (tearing.h),
-// under one of two rules chosen in the scene (SheetSpec::tear_rule):
+// under one of three rules chosen in the scene (SheetSpec::tear_rule):
 //
 // - strain (the seed paper's rule, section 3.2, and the default): one strain
 //   for every spring, params.tear_strain, whatever the cell size. The energy
@@ -25,14 +25,21 @@
 //   The price: an uncut strip's strength, E t eps_c, now grows as h^-1/2
 //   (one brittle limit cannot hold both a strength and a fracture energy
 //   fixed), so a tensile fit holds for the mesh it was made on.
+// - cohesive (cohesive_law.h): the springs soften past a fixed peak strain
+//   (tear_strain) and the cell tears when one reaches the zero-force strain
+//   set by tear_energy_j_per_m (the crack band of Bazant & Oh 1983 over a
+//   fixed opening); the limit below is that zero-force strain.
 //
-// Either way a cell's limit is the rule's strain times its tear factor
+// Any way a cell's limit is the rule's strain times its tear factor
 // w^q (SheetModel::cell_tear_factor, q = tear_strain_density_exponent).
 
 #include "models/tearing/sheet_model.h"
 #include "models/tearing/sheet_params.h"
 
 namespace repose {
+
+// The energy rule's tear strain sqrt(2 Gamma / (E t h)).
+double energy_rule_tear_strain(double stiffness_n_per_m, double tear_energy_j_per_m, double cell_size_m);
 
 // The tear strain of a cell of relative fibre density 1 under the sheet's rule.
 double base_tear_strain(const SheetModel& model, const SheetParams& params);

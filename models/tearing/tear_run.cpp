@@ -97,6 +97,7 @@ EnergyLedger energy_ledger(const SheetModel& model, const SheetParams& params, c
   }
   e.damping_j = state.damping_loss_j;
   e.fracture_j = state.torn_energy_j;
+  e.softening_j = state.softening_energy_j;
   e.torn_twist_j = state.torn_twist_energy_j;
   e.torn_bending_j = state.torn_bending_energy_j;
   e.residual_j = state.grip_work_j + e.gravity_j - e.stored_j - e.kinetic_j - e.damping_j - e.fracture_j -

@@ -52,6 +52,7 @@ struct EnergyLedger {
   double gravity_j = 0.0;    // work gravity did on them
   double damping_j = 0.0;    // SheetState::damping_loss_j
   double fracture_j = 0.0;   // SheetState::torn_energy_j
+  double softening_j = 0.0;  // SheetState::softening_energy_j, a part of fracture_j (tear_rule cohesive)
   double torn_twist_j = 0.0;  // SheetState::torn_twist_energy_j
   double torn_bending_j = 0.0;  // SheetState::torn_bending_energy_j (release_time_s > 0 only)
   double residual_j = 0.0;

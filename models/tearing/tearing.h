@@ -7,7 +7,8 @@
 // shared by two cells has the same strain in both, so both tear.
 //
 // The limit is one strain for every spring, as in the seed (or, optionally,
-// one set by an energy per unit tear length and the cell size: tear_limit.h);
+// one set by an energy per unit tear length and the cell size: tear_limit.h;
+// or springs that soften past a peak before the cell goes: cohesive_law.h);
 // in a fibre image the soft cells between clumps stretch most and go first,
 // which is what makes the tear follow the gaps between clumps.
 //

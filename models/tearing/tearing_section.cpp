@@ -19,7 +19,7 @@ void sheet_fields(V& v, SheetSpec& s) {
   v.boolean("twist_stiffness", s.twist_stiffness);
   v.number("stiffness_density_exponent", s.stiffness_density_exponent, Range::closed(0, 8));
   v.number("tear_strain_density_exponent", s.tear_strain_density_exponent, Range::closed(0, 8));
-  v.choice("tear_rule", s.tear_rule, ChoiceTable<TearRule>{{"strain", TearRule::kStrain}, {"energy", TearRule::kEnergy}});
+  v.choice("tear_rule", s.tear_rule, ChoiceTable<TearRule>{{"strain", TearRule::kStrain}, {"energy", TearRule::kEnergy}, {"cohesive", TearRule::kCohesive}});
   v.boolean("isotropic_tear_energy", s.isotropic_tear_energy);
   v.number("damping_per_s", s.damping_per_s, Range::non_negative());
   v.number("stiffness_damping_s", s.stiffness_damping_s, Range::non_negative());
@@ -164,9 +164,10 @@ std::string TearingSection::summary() const {
                      sheet.fibres.grain_direction_rad / kRadPerDeg, sheet.grips.size(),
                      run.integrator == TearRunOptions::Integrator::kExplicit ? "explicit" : "implicit",
                      params.stiffness_n_per_m,
-                     sheet.tear_rule == TearRule::kStrain
-                         ? fmt::format("tear strain {}", params.tear_strain)
-                         : fmt::format("tear energy {} J/m", params.tear_energy_j_per_m));
+                     sheet.tear_rule == TearRule::kStrain   ? fmt::format("tear strain {}", params.tear_strain)
+                     : sheet.tear_rule == TearRule::kEnergy ? fmt::format("tear energy {} J/m", params.tear_energy_j_per_m)
+                                                            : fmt::format("cohesive, peak strain {}, tear energy {} J/m",
+                                                                          params.tear_strain, params.tear_energy_j_per_m));
 }
 
 std::shared_ptr<const SceneSection> read_tearing_section(const YamlValue& value, const Scene& common) {

@@ -19,7 +19,7 @@
 //     notch_x_m: 0.05
 //     stiffness_n_per_m: 4.0e5      # E t; parameter stiffness_scale
 //     tear_strain: 0.02             # parameter tear_strain (tear_rule: strain)
-//     tear_rule: strain             # strain (the seed's, default) | energy (tear_limit.h)
+//     tear_rule: strain             # strain (the seed's, default) | energy (tear_limit.h) | cohesive (cohesive_law.h)
 //     tear_energy_j_per_m: 0.16     # parameter tear_energy (tear_rule: energy)
 //     fibre_anisotropy: 0           # parameter fibre_anisotropy: springs along the grain (1 + a) stiffer
 //     isotropic_tear_energy: false  # true: springs' tear strains scaled so each tears at one energy (sheet_spec.h)

@@ -164,6 +164,11 @@ class CompiledTearing final : public CompiledSolver {
       run->set(fmt::format("energy.{}_per_length_j_per_m", name), t.tear_length_m > 0.0 ? joules / t.tear_length_m : 0.0,
                "J/m");
     }
+    if (!t.state.softening.empty()) {  // tear_rule cohesive: the softening springs' part of the fracture energy
+      run->set("energy.softening_j", t.ledger.softening_j, "J");
+      run->set("energy.softening_per_length_j_per_m", t.tear_length_m > 0.0 ? t.ledger.softening_j / t.tear_length_m : 0.0,
+               "J/m");
+    }
     run->set("steps", static_cast<double>(t.steps), "count");
     run->set("time_step_s", t.time_step_s, "s");
     run->set("stable_time_step_s", t.stable_time_step_s, "s");

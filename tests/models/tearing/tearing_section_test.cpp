@@ -77,6 +77,9 @@ TEST(TearingSection, ErrorsNameTheKey) {
   EXPECT_NE(error_of("  tear_strain: -1\n").find("tear_strain"), std::string::npos);
   EXPECT_NE(error_of("  stiffness_damping_s: -1e-7\n").find("stiffness_damping_s"), std::string::npos);
   EXPECT_NE(error_of("  release_time_s: -1e-6\n").find("release_time_s"), std::string::npos);
+  EXPECT_NE(error_of("  tear_rule: cohesiv\n").find("tear_rule"), std::string::npos);
+  EXPECT_NE(error_of("  tear_rule: cohesive\n  release_time_s: 1e-6\n").find("release_time_s"), std::string::npos);
+  EXPECT_EQ(load("  tear_rule: cohesive\n").section<TearingSection>()->sheet.tear_rule, TearRule::kCohesive);
   EXPECT_NE(error_of("  twist_stiffness: 3\n").find("twist_stiffness"), std::string::npos);
   EXPECT_NE(error_of("  time_step_fraction: 2\n").find("time_step_fraction"), std::string::npos);
   EXPECT_NE(error_of("  colour: red\n").find("colour"), std::string::npos);
