@@ -159,10 +159,12 @@ void VertexBlockMatrix::refresh(const Eigen::SparseMatrix<double>& a) {
 
 // D_i^-1 of the rounded matrix, so that both sweeps use one smoother; a
 // held axis is given a unit diagonal to invert, then zeroed (its x stays 0).
+// Every entry is written each time (no clearing pass: the fine level's runs
+// each step).
 void VertexBlockMatrix::invert_diagonal() {
   const int rows = block_rows();
-  inverse_.assign(9 * static_cast<std::size_t>(rows), 0.0);
-  inverse_columns_.assign(12 * static_cast<std::size_t>(rows), 0.0f);
+  inverse_.resize(9 * static_cast<std::size_t>(rows));
+  inverse_columns_.resize(12 * static_cast<std::size_t>(rows));
   for (int i = 0; i < rows; ++i) {
     const float* d = &values_[9 * static_cast<std::size_t>(diagonal_[static_cast<std::size_t>(i)])];
     Eigen::Matrix3d block;
@@ -180,11 +182,12 @@ void VertexBlockMatrix::invert_diagonal() {
       if (row_of_[static_cast<std::size_t>(3 * i + p)] < 0) inverse(p, p) = 0.0;
     }
     REPOSE_DEMAND(inverse.allFinite());
-    for (int p = 0; p < 3; ++p) {
-      for (int q = 0; q < 3; ++q) {
+    for (int q = 0; q < 3; ++q) {
+      for (int p = 0; p < 3; ++p) {
         inverse_[9 * static_cast<std::size_t>(i) + 3 * p + q] = inverse(p, q);
         inverse_columns_[12 * static_cast<std::size_t>(i) + 4 * q + p] = static_cast<float>(inverse(p, q));
       }
+      inverse_columns_[12 * static_cast<std::size_t>(i) + 4 * q + 3] = 0.0f;  // the padding
     }
   }
 }
