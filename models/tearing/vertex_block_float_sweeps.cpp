@@ -11,7 +11,9 @@
 // a vertex, 4-wide loads that straddled two vertices' stores missed the
 // store forwarding and the passes ran 2x slower than the double ones. Lane
 // 3 of a block row's load reads the next entry (the last block's padding):
-// it is dropped in the row sums and masked to 0 before any store.
+// it is dropped in the row sums and masked to 0 before any store. Scalar
+// blocks (k I, vertex_block_matrix.h) are one broadcast times x_j; x's
+// lane 3 is 0, so they keep it 0.
 #include "models/tearing/vertex_block_matrix.h"
 
 #include <xmmintrin.h>
@@ -172,11 +174,11 @@ void VertexBlockMatrix::backward_sweep_with_product(const float* b, float* x, fl
     const std::size_t u = static_cast<std::size_t>(i);
     const int diagonal = diagonal_[u], begin = outer_[u], end = outer_[u + 1];
     const int scalar_begin = identity_outer_[u], scalar_upper = identity_upper_[u], scalar_end = identity_outer_[u + 1];
-    const __m128 upper = _mm_add_ps(gather_blocks<true>(values, column, diagonal + 1, end, x),
-                                    gather_scalars<true>(scalars, scalar_column, scalar_upper, scalar_end, x));
-    const __m128 lower = _mm_add_ps(gather_blocks<true>(values, column, begin, diagonal, x),
-                                    gather_scalars<true>(scalars, scalar_column, scalar_begin, scalar_upper, x));
-    const __m128 s = _mm_sub_ps(_mm_load_ps(b + 4 * i), _mm_add_ps(upper, lower));
+    const __m128 upper = gather_blocks<true>(values, column, diagonal + 1, end, x);
+    const __m128 lower = gather_blocks<true>(values, column, begin, diagonal, x);
+    // the row's scalar blocks, both sides, in one backward run
+    const __m128 scalar = gather_scalars<true>(scalars, scalar_column, scalar_begin, scalar_end, x);
+    const __m128 s = _mm_sub_ps(_mm_load_ps(b + 4 * i), _mm_add_ps(_mm_add_ps(upper, lower), scalar));
     const __m128 xi = times_inverse(&inverse_columns_[12 * u], s);
     const __m128 change = _mm_sub_ps(xi, _mm_load_ps(x + 4 * i));
     _mm_store_ps(x + 4 * i, xi);
