@@ -218,18 +218,11 @@ struct StiffnessAssembly {
       }
       return;
     }
-    // K v_n of the term on vertex p: k c_p sum_q c_q v_q (plain arrays: this
-    // runs for every bending term every step)
-    double combination[3] = {0.0, 0.0, 0.0};
-    for (int q = 0; q < n; ++q) {
-      const double* vq = v0.data() + 3 * static_cast<std::ptrdiff_t>(v[static_cast<std::size_t>(q)]);
-      for (int a = 0; a < 3; ++a) combination[a] += c[q] * vq[a];
-    }
+    // K v_n of the term on vertex p: k c_p sum_q c_q v_q
+    Eigen::Vector3d combination = Eigen::Vector3d::Zero();
+    for (int q = 0; q < n; ++q) combination += c[q] * v0.segment<3>(3 * v[static_cast<std::size_t>(q)]);
     for (int p = 0; p < n; ++p) {
-      const int vertex = v[static_cast<std::size_t>(p)];
-      double* r = rhs->data() + first_row[static_cast<std::size_t>(vertex)];
-      const double scale = dt2 * k * c[p];
-      for (int a = 0; a < 3; ++a) r[a] -= scale * combination[a];
+      rhs_of(v[static_cast<std::size_t>(p)]) -= (dt2 * k * c[p]) * combination;
       if (!constant_blocks) continue;
       const double left_p = left_scale * k * c[p];
       for (int q = 0; q < n; ++q) target.diagonal(first + n * p + q, left_p * c[q]);
