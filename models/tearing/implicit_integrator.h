@@ -103,8 +103,8 @@
 // (vertex_block_matrix.h's scalar blocks: a fine row 392 bytes instead of
 // 520), the diagonal inverses and the sweep from zero without clearing
 // passes. BM_ImplicitStepMultigrid/200/iterations:40 medians 58.9 -> 51.9
-// ms (7 rounds, per-round ratio median 0.88) and 57.5 -> 54.6 ms (6
-// rounds, 0.93); callgrind over the 40 steps 15,807.8 -> 15,785.6 M
+// ms (7 rounds, the branch at b9b470f; per-round ratio median 0.88) and
+// 57.5 -> 54.6 ms (6 rounds, this binary; 0.93); callgrind over the 40 steps 15,807.8 -> 15,785.6 M
 // instructions (the two float sweeps +0.5 %: the scalar lists' loops; memset
 // -289 M), so the gain is in bytes read, not instructions. Whole
 // tear at 100 cells: the same 2,128 steps and 50 cells; work, fracture
