@@ -118,6 +118,13 @@
 // tear at 100 cells 76.4 -> 62.0, 55.4 -> 50.2, 57.6 -> 54.4 CPU s, the
 // same outcomes (implicit_integrator.h: by what). Target 20 steps/s:
 // still missed.
+// Measured 2026-11-27 11:12-11:41 (load 7.5-12; CPU time; main at 054449b
+// built into its own directory and the branch tear-speed in turn):
+// /200/iterations:40 medians 58.9 -> 51.9 ms (7 rounds, the branch at
+// b9b470f) and 57.5 -> 54.6 ms (6 rounds, at its end), single rounds 49.3-64.1 ms after; whole tear at 100
+// cells 23.9 -> 21.2 CPU s, the same 2,128 steps and 50 cells, its work,
+// fracture energy and peak force within 2e-8 (implicit_integrator.h: by
+// what). Target 20 steps/s (50 ms): missed by ~5-10 % at this load.
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter='ToleranceError|WholeTearTolerance/50/(12/0|3/1)/'   (minutes)

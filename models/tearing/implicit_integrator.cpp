@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Sparse>
 #include <Eigen/IterativeLinearSolvers>
@@ -83,6 +85,30 @@ void for_each_block_place(const SheetModel& model, Place&& place) {
       for (const int b : v) place(a, b);
     }
   }
+}
+
+// The vertex pairs whose blocks are multiples of the identity in every
+// system: the ends of a bending term (kBendingCoefficient's 1 x 1), free in
+// every axis, that no spring or twist term couples (those blocks are
+// general); the fine blocks keep them as one float each
+// (VertexBlockMatrix's scalar blocks), 4 of a fine row's 13 blocks.
+std::vector<std::pair<int, int>> identity_couplings(const SheetModel& model) {
+  const int bending_first = 24 * model.cell_count(), twist_first = bending_first + 9 * static_cast<int>(model.bending.size());
+  std::vector<std::pair<int, int>> general, identity;
+  int index = 0;
+  for_each_block_place(model, [&](int a, int b) {
+    if (index < bending_first || index >= twist_first) general.emplace_back(a, b);
+    ++index;
+  });
+  std::sort(general.begin(), general.end());
+  const auto all_free = [&](int v) { return model.held_axes[static_cast<std::size_t>(v)] == 0; };
+  for (const BendingTerm& t : model.bending) {
+    if (t.a == t.c || !all_free(t.a) || !all_free(t.c)) continue;
+    if (std::binary_search(general.begin(), general.end(), std::pair<int, int>(t.a, t.c))) continue;
+    if (std::binary_search(general.begin(), general.end(), std::pair<int, int>(t.c, t.a))) continue;
+    identity.emplace_back(t.a, t.c);
+  }
+  return identity;
 }
 
 // Every (row, col) of the free system any intact sheet can fill: the mass
@@ -195,7 +221,7 @@ ImplicitIntegrator::ImplicitIntegrator(const SheetModel& model, const SheetParam
     multigrid.single_precision_sweeps = multigrid.single_precision_sweeps && solver_.relative_tolerance >= 1e-5;
     multigrid_ = std::make_unique<SheetMultigrid>(model.cells_x + 1, model.cells_y + 1, free_index_, free_count_,
                                                   multigrid);
-    multigrid_->prepare_fine_pattern(system_);  // the mesh's, like system_'s
+    multigrid_->prepare_fine_pattern(system_, identity_couplings(model));  // the mesh's, like system_'s
   }
 }
 
@@ -270,7 +296,10 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
   if (blocks && block_index_.empty()) {
     for_each_block_place(model_, [&](int a, int b) {
       const int i = block_row_[static_cast<std::size_t>(a)], j = block_row_[static_cast<std::size_t>(b)];
-      block_index_.push_back(i < 0 || j < 0 ? -1 : blocks->find_block(i, j));
+      // a full block k, a scalar block s as -2 - s (BlockTarget), or none
+      const int k = i < 0 || j < 0 ? -1 : blocks->find_block(i, j);
+      const int scalar = k < 0 && i >= 0 && j >= 0 ? blocks->find_scalar(i, j) : -1;
+      block_index_.push_back(scalar >= 0 ? -2 - scalar : k);
     });
   }
   // the fixed pattern, refilled in place: no sort of millions of triplets
@@ -292,7 +321,10 @@ void ImplicitIntegrator::assemble(const SheetState& state, const Eigen::VectorXd
   const Eigen::Map<const Eigen::VectorXd> v0(state.velocities.data(), 3 * model_.vertex_count());
   const double dt2 = dt_ * dt_, dt_beta = dt_ * model_.spec.stiffness_damping_s;
   if (blocks) {
-    StiffnessAssembly<BlockTarget> assembly{free_index_, first_row_, all_free_, {block_index_, blocks->values()},
+    StiffnessAssembly<BlockTarget> assembly{free_index_,
+                                            first_row_,
+                                            all_free_,
+                                            {block_index_, blocks->values(), blocks->values() + blocks->scalar_offset()},
                                             &rhs,        v0,         dv_all,    dt2,
                                             dt_beta,     false};
     add_stiffness(state, &assembly);
@@ -324,7 +356,8 @@ void ImplicitIntegrator::fill_block_base(const SheetState& state, VertexBlockMat
   Eigen::VectorXd discarded = Eigen::VectorXd::Zero(free_count_);
   const Eigen::Map<const Eigen::VectorXd> v0(state.velocities.data(), 3 * model_.vertex_count());
   StiffnessAssembly<BlockTarget> assembly{
-      free_index_, first_row_, all_free_, {block_index_, blocks->values()}, &discarded, v0, dv_all_, dt_ * dt_,
+      free_index_, first_row_, all_free_, {block_index_, blocks->values(), blocks->values() + blocks->scalar_offset()},
+      &discarded,  v0,         dv_all_,   dt_ * dt_,
       dt_ * model_.spec.stiffness_damping_s};
   const SpringConstants kc = spring_constants(model_, params_);
   for_each_bending_term(model_, kc, state,

@@ -98,6 +98,18 @@
 // solve ~3 %. 20 steps/s is still missed (~1.3-1.6x on a quiet machine):
 // fewer bytes per fine block (the 4 bending blocks a row are multiples
 // of I stored as 9 floats) or a matrix-free spring product are next.
+// 2026-11-27 session 17 (main at 054449b and this binary in turn, load
+// 7.5-11, CPU): the bending ends' blocks (k I) kept as one float each
+// (vertex_block_matrix.h's scalar blocks: a fine row 392 bytes instead of
+// 520), the diagonal inverses and the sweep from zero without clearing
+// passes. BM_ImplicitStepMultigrid/200/iterations:40 medians 58.9 -> 51.9
+// ms (7 rounds, the branch at b9b470f; per-round ratio median 0.88) and
+// 57.5 -> 54.6 ms (6 rounds, this binary; 0.93); callgrind over the 40 steps 15,807.8 -> 15,785.6 M
+// instructions (the two float sweeps +0.5 %: the scalar lists' loops; memset
+// -289 M), so the gain is in bytes read, not instructions. Whole
+// tear at 100 cells: the same 2,128 steps and 50 cells; work, fracture
+// energy and peak force within 2e-8 of main's (50.858018 mJ, 1.737103 mJ,
+// 24.572394 N). 20 steps/s (50 ms) still missed by ~5-10 % at this load.
 //
 // It is the converged yardstick, not the fast path: stable at any step,
 // first-order accurate, and it damps the fast modes the explicit scheme

@@ -265,9 +265,10 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
   REPOSE_DEMAND(coarsest_->info() == Eigen::Success);
 }
 
-void SheetMultigrid::prepare_fine_pattern(const Eigen::SparseMatrix<double>& pattern) {
+void SheetMultigrid::prepare_fine_pattern(const Eigen::SparseMatrix<double>& pattern,
+                                          const std::vector<std::pair<int, int>>& identity_pairs) {
   REPOSE_DEMAND(pattern.rows() == free_count_ && pattern.cols() == free_count_);
-  fine_blocks_ = VertexBlockMatrix(pattern, free_index_, false);
+  fine_blocks_ = VertexBlockMatrix(pattern, free_index_, false, identity_pairs);
 }
 
 bool SheetMultigrid::built() const { return coarsest_ != nullptr; }

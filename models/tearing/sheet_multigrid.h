@@ -46,6 +46,7 @@
 // matrix last given to rebuild() or update_fine().
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -105,7 +106,11 @@ class SheetMultigrid {
   // Makes the fine block pattern from the pattern of the systems to come
   // (values ignored) ahead of the first rebuild(), which then gathers the
   // values only, as later ones do: the pattern is the mesh's, fixed.
-  void prepare_fine_pattern(const Eigen::SparseMatrix<double>& pattern);
+  // identity_pairs: vertex pairs whose blocks are multiples of the identity
+  // in every system to come, kept as one float each
+  // (VertexBlockMatrix's scalar blocks).
+  void prepare_fine_pattern(const Eigen::SparseMatrix<double>& pattern,
+                            const std::vector<std::pair<int, int>>& identity_pairs = {});
   // Refreshes the fine level's smoother for a later system of the same
   // pattern (one pass over it); the coarse levels are kept. Required
   // before apply() whenever the fine system changed.

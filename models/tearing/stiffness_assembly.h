@@ -52,12 +52,26 @@ struct CscTarget {
   }
 };
 
-// Row-major float 3 x 3 blocks: per block index, its block in values.
+// Row-major float 3 x 3 blocks: per block index, its block in values
+// (k >= 0: values + 9 k), or a scalar block k I (-2 - s: the float at
+// scalars + s; VertexBlockMatrix's identity couplings, only ever given
+// multiples of the identity).
 struct BlockTarget {
   const std::vector<int>& block_index;
   float* values;
+  float* scalars = nullptr;
   float* at(int index) { return values + 9 * static_cast<std::ptrdiff_t>(block_index[static_cast<std::size_t>(index)]); }
-  void entry(int index, int p, int q, int, double value) { at(index)[3 * p + q] += static_cast<float>(value); }
+  float* scalar(int index) {
+    const int k = block_index[static_cast<std::size_t>(index)];
+    return k <= -2 ? scalars + (-2 - k) : nullptr;
+  }
+  void entry(int index, int p, int q, int, double value) {
+    if (float* s = scalar(index)) {
+      if (p == 0 && q == 0) *s += static_cast<float>(value);  // (1, 1) and (2, 2) the same, the rest 0
+      return;
+    }
+    at(index)[3 * p + q] += static_cast<float>(value);
+  }
   void block(int index, const Eigen::Matrix3d& m) {
     float* b = at(index);
     for (int p = 0; p < 3; ++p) {
@@ -79,6 +93,10 @@ struct BlockTarget {
     }
   }
   void diagonal(int index, double value) {
+    if (float* s = scalar(index)) {
+      *s += static_cast<float>(value);
+      return;
+    }
     float* b = at(index);
     for (int axis = 0; axis < 3; ++axis) b[4 * axis] += static_cast<float>(value);
   }

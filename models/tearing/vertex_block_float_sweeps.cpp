@@ -11,7 +11,9 @@
 // a vertex, 4-wide loads that straddled two vertices' stores missed the
 // store forwarding and the passes ran 2x slower than the double ones. Lane
 // 3 of a block row's load reads the next entry (the last block's padding):
-// it is dropped in the row sums and masked to 0 before any store.
+// it is dropped in the row sums and masked to 0 before any store. Scalar
+// blocks (k I, vertex_block_matrix.h) are one broadcast times x_j; x's
+// lane 3 is 0, so they keep it 0.
 #include "models/tearing/vertex_block_matrix.h"
 
 #include <xmmintrin.h>
@@ -65,6 +67,34 @@ inline __m128 gather_blocks(const float* values, const int* column, int begin, i
   return _mm_and_ps(_mm_add_ps(_mm_add_ps(r0, r1), r2), _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1)));
 }
 
+// sum_k a_k x_k over the scalar blocks [begin, end) of a row (a_k I each),
+// in memory order or against it, two sums; lane 3 stays 0 (x's padding).
+template <bool kDescending>
+inline __m128 gather_scalars(const float* scalars, const int* column, int begin, int end, const float* x) {
+  __m128 a = _mm_setzero_ps(), b = _mm_setzero_ps();
+  const int count = end - begin;
+  const auto block = [&](int j) { return kDescending ? end - 1 - j : begin + j; };
+  int j = 0;
+  for (; j + 2 <= count; j += 2) {
+    const int k0 = block(j), k1 = block(j + 1);
+    a = _mm_add_ps(a, _mm_mul_ps(_mm_set1_ps(scalars[k0]), _mm_load_ps(x + 4 * static_cast<std::ptrdiff_t>(column[k0]))));
+    b = _mm_add_ps(b, _mm_mul_ps(_mm_set1_ps(scalars[k1]), _mm_load_ps(x + 4 * static_cast<std::ptrdiff_t>(column[k1]))));
+  }
+  if (j < count) {
+    const int k = block(j);
+    a = _mm_add_ps(a, _mm_mul_ps(_mm_set1_ps(scalars[k]), _mm_load_ps(x + 4 * static_cast<std::ptrdiff_t>(column[k]))));
+  }
+  return _mm_add_ps(a, b);
+}
+
+// y_j += a_k v over the scalar blocks [begin, end) of a row (v's lane 3 0).
+inline void scatter_scalars(const float* scalars, const int* column, int begin, int end, __m128 v, float* y) {
+  for (int k = begin; k < end; ++k) {
+    float* yj = y + 4 * static_cast<std::ptrdiff_t>(column[k]);
+    _mm_store_ps(yj, _mm_add_ps(_mm_load_ps(yj), _mm_mul_ps(_mm_set1_ps(scalars[k]), v)));
+  }
+}
+
 // D_i^-1 s from its padded columns (lane 3 0).
 inline __m128 times_inverse(const float* columns, __m128 s) {
   const __m128 x0 = _mm_mul_ps(_mm_loadu_ps(columns), _mm_shuffle_ps(s, s, 0x00));
@@ -106,42 +136,57 @@ class FlushSubnormals {
 }  // namespace
 
 void VertexBlockMatrix::sweep_from_zero_with_residual(const float* b, float* x, float* r) const {
-  REPOSE_DEMAND(x != r && values_.size() >= source_.size() + 4);
+  REPOSE_DEMAND(x != r && values_.size() >= value_count() + 4);
   const FlushSubnormals flush;
-  const std::size_t size = float_vector_size();
-  std::fill(x, x + size, 0.0f);
-  std::fill(r, r + size, 0.0f);
+  // x needs no clearing: each x_i is stored (4 lanes) before a later row reads it
+  std::fill(r, r + float_vector_size(), 0.0f);
   const int rows = block_rows();
   const float* values = values_.data();
   const int* column = column_.data();
+  const float* scalars = values + source_.size();
+  const int* scalar_column = identity_column_.data();
   for (int i = 0; i < rows; ++i) {
-    const int begin = outer_[static_cast<std::size_t>(i)], diagonal = diagonal_[static_cast<std::size_t>(i)];
-    const __m128 s = _mm_sub_ps(_mm_load_ps(b + 4 * i), gather_blocks<false>(values, column, begin, diagonal, x));
-    const __m128 xi = times_inverse(&inverse_columns_[12 * static_cast<std::size_t>(i)], s);
+    const std::size_t u = static_cast<std::size_t>(i);
+    const int begin = outer_[u], diagonal = diagonal_[u];
+    const int scalar_begin = identity_outer_[u], scalar_upper = identity_upper_[u];
+    const __m128 lower = _mm_add_ps(gather_blocks<false>(values, column, begin, diagonal, x),
+                                    gather_scalars<false>(scalars, scalar_column, scalar_begin, scalar_upper, x));
+    const __m128 s = _mm_sub_ps(_mm_load_ps(b + 4 * i), lower);
+    const __m128 xi = times_inverse(&inverse_columns_[12 * u], s);
     _mm_store_ps(x + 4 * i, xi);
     // row j < i's residual -sum_{k > j} A_jk x_k takes -A_ji x_i = -A_ij^T x_i
-    scatter_transposed(values, column, begin, diagonal, _mm_sub_ps(_mm_setzero_ps(), xi), r);
+    const __m128 minus_xi = _mm_sub_ps(_mm_setzero_ps(), xi);
+    scatter_transposed(values, column, begin, diagonal, minus_xi, r);
+    scatter_scalars(scalars, scalar_column, scalar_begin, scalar_upper, minus_xi, r);
   }
 }
 
 void VertexBlockMatrix::backward_sweep_with_product(const float* b, float* x, float* ax) const {
-  REPOSE_DEMAND(x != ax && b != ax && values_.size() >= source_.size() + 4);
+  REPOSE_DEMAND(x != ax && b != ax && values_.size() >= value_count() + 4);
   const FlushSubnormals flush;
   const int rows = block_rows();
   if (ax) std::copy(b, b + float_vector_size(), ax);
   const float* values = values_.data();
   const int* column = column_.data();
+  const float* scalars = values + source_.size();
+  const int* scalar_column = identity_column_.data();
   for (int i = rows - 1; i >= 0; --i) {
-    const int diagonal = diagonal_[static_cast<std::size_t>(i)];
-    const int begin = outer_[static_cast<std::size_t>(i)], end = outer_[static_cast<std::size_t>(i) + 1];
+    const std::size_t u = static_cast<std::size_t>(i);
+    const int diagonal = diagonal_[u], begin = outer_[u], end = outer_[u + 1];
+    const int scalar_begin = identity_outer_[u], scalar_upper = identity_upper_[u], scalar_end = identity_outer_[u + 1];
     const __m128 upper = gather_blocks<true>(values, column, diagonal + 1, end, x);
     const __m128 lower = gather_blocks<true>(values, column, begin, diagonal, x);
-    const __m128 s = _mm_sub_ps(_mm_load_ps(b + 4 * i), _mm_add_ps(upper, lower));
-    const __m128 xi = times_inverse(&inverse_columns_[12 * static_cast<std::size_t>(i)], s);
+    // the row's scalar blocks, both sides, in one backward run
+    const __m128 scalar = gather_scalars<true>(scalars, scalar_column, scalar_begin, scalar_end, x);
+    const __m128 s = _mm_sub_ps(_mm_load_ps(b + 4 * i), _mm_add_ps(_mm_add_ps(upper, lower), scalar));
+    const __m128 xi = times_inverse(&inverse_columns_[12 * u], s);
     const __m128 change = _mm_sub_ps(xi, _mm_load_ps(x + 4 * i));
     _mm_store_ps(x + 4 * i, xi);
     // rows k > i (not yet final in ax) take A_ki (x_i - x_i before) = A_ik^T change
-    if (ax) scatter_transposed(values, column, diagonal + 1, end, change, ax);
+    if (ax) {
+      scatter_transposed(values, column, diagonal + 1, end, change, ax);
+      scatter_scalars(scalars, scalar_column, scalar_upper, scalar_end, change, ax);
+    }
   }
 }
 

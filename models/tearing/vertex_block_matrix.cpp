@@ -8,23 +8,49 @@
 
 namespace repose {
 
+namespace {
+
+// The identity pairs as sorted (block row, block column), both orders.
+std::vector<std::pair<int, int>> identity_blocks(const std::vector<std::pair<int, int>>& identity_pairs,
+                                                 const std::vector<int>& block_of_vertex, const std::vector<int>& index) {
+  const auto all_free = [&](int v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (index[static_cast<std::size_t>(3 * v + axis)] < 0) return false;
+    }
+    return true;
+  };
+  std::vector<std::pair<int, int>> blocks;
+  for (const auto& [u, v] : identity_pairs) {
+    REPOSE_DEMAND(u != v && std::min(u, v) >= 0 && static_cast<std::size_t>(3 * std::max(u, v) + 2) < index.size());
+    REPOSE_DEMAND(all_free(u) && all_free(v));
+    const int i = block_of_vertex[static_cast<std::size_t>(u)], j = block_of_vertex[static_cast<std::size_t>(v)];
+    blocks.emplace_back(i, j);
+    blocks.emplace_back(j, i);
+  }
+  std::sort(blocks.begin(), blocks.end());
+  blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+  return blocks;
+}
+
+}  // namespace
+
 VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const std::vector<int>& index,
-                                     bool with_values) {
+                                     bool with_values, const std::vector<std::pair<int, int>>& identity_pairs) {
   REPOSE_DEMAND(a.rows() == a.cols() && a.isCompressed() && index.size() % 3 == 0);
   // block rows: the vertices with an unknown, in order
   const int vertices = static_cast<int>(index.size() / 3);
-  std::vector<int> block_of_row(static_cast<std::size_t>(a.rows()), -1), axis_of_row(block_of_row.size(), -1);
+  std::vector<int> block_of_row(static_cast<std::size_t>(a.rows()), -1);
+  std::vector<int> block_of_vertex(static_cast<std::size_t>(vertices), -1);
   for (int v = 0; v < vertices; ++v) {
     bool any = false;
     for (int axis = 0; axis < 3; ++axis) any = any || index[static_cast<std::size_t>(3 * v + axis)] >= 0;
     if (!any) continue;
     const int block = static_cast<int>(row_of_.size() / 3);
+    block_of_vertex[static_cast<std::size_t>(v)] = block;
     for (int axis = 0; axis < 3; ++axis) {
       const int row = index[static_cast<std::size_t>(3 * v + axis)];
       row_of_.push_back(row);
-      if (row < 0) continue;
-      block_of_row[static_cast<std::size_t>(row)] = block;
-      axis_of_row[static_cast<std::size_t>(row)] = axis;
+      if (row >= 0) block_of_row[static_cast<std::size_t>(row)] = block;
     }
   }
   const int rows = static_cast<int>(row_of_.size() / 3);
@@ -40,43 +66,68 @@ VertexBlockMatrix::VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const
       columns[static_cast<std::size_t>(block)].push_back(block_of_row[static_cast<std::size_t>(a.innerIndexPtr()[k])]);
     }
   }
-  outer_.assign(1, 0);
-  for (int i = 0; i < rows; ++i) {
-    std::vector<int>& cols = columns[static_cast<std::size_t>(i)];
-    std::sort(cols.begin(), cols.end());
-    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
-    const auto at = std::lower_bound(cols.begin(), cols.end(), i);
-    REPOSE_DEMAND(at != cols.end() && *at == i);
-    diagonal_.push_back(outer_.back() + static_cast<int>(at - cols.begin()));
-    column_.insert(column_.end(), cols.begin(), cols.end());
-    outer_.push_back(static_cast<int>(column_.size()));
-  }
+  split_blocks(&columns, identity_blocks(identity_pairs, block_of_vertex, index));
   find_sources(a);
-  values_.assign(source_.size() + 4, 0.0f);
+  values_.assign(value_count() + 4, 0.0f);
   if (with_values) refresh(a);
 }
 
-// Where each block entry (p, q) of block (i, j) lies in a (source_).
+// Each block row's columns (sorted here) into full blocks and the scalar
+// blocks `identity` names (sorted (row, column) pairs, each in the pattern).
+void VertexBlockMatrix::split_blocks(std::vector<std::vector<int>>* columns,
+                                     const std::vector<std::pair<int, int>>& identity) {
+  outer_.assign(1, 0);
+  identity_outer_.assign(1, 0);
+  std::size_t named = 0;  // identity blocks met in the pattern
+  for (int i = 0; i < static_cast<int>(columns->size()); ++i) {
+    std::vector<int>& cols = (*columns)[static_cast<std::size_t>(i)];
+    std::sort(cols.begin(), cols.end());
+    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+    int upper = -1;
+    for (const int j : cols) {
+      if (std::binary_search(identity.begin(), identity.end(), std::pair<int, int>(i, j))) {
+        if (j > i && upper < 0) upper = static_cast<int>(identity_column_.size());
+        identity_column_.push_back(j);
+        ++named;
+        continue;
+      }
+      if (j == i) diagonal_.push_back(static_cast<int>(column_.size()));
+      column_.push_back(j);
+    }
+    REPOSE_DEMAND(static_cast<int>(diagonal_.size()) == i + 1);
+    identity_upper_.push_back(upper < 0 ? static_cast<int>(identity_column_.size()) : upper);
+    outer_.push_back(static_cast<int>(column_.size()));
+    identity_outer_.push_back(static_cast<int>(identity_column_.size()));
+  }
+  REPOSE_DEMAND(named == identity.size());  // every pair named is coupled in the pattern
+}
+
+int VertexBlockMatrix::source_of(const Eigen::SparseMatrix<double>& a, int i, int j, int p, int q) const {
+  const int col = row_of_[static_cast<std::size_t>(3 * j + q)], row = row_of_[static_cast<std::size_t>(3 * i + p)];
+  if (col < 0 || row < 0) return -1;
+  const int* begin = a.innerIndexPtr() + a.outerIndexPtr()[col];
+  const int* end = a.innerIndexPtr() + a.outerIndexPtr()[col + 1];
+  const int* found = std::lower_bound(begin, end, row);
+  return found != end && *found == row ? static_cast<int>(found - a.innerIndexPtr()) : -1;
+}
+
+// Where each entry (p, q) of block (i, j) lies in a (source_,
+// identity_source_).
 void VertexBlockMatrix::find_sources(const Eigen::SparseMatrix<double>& a) {
   const int rows = block_rows();
-  // column of (j, q), row of (i, p)
   source_.assign(9 * column_.size(), -1);
+  identity_source_.assign(9 * identity_column_.size(), -1);
   for (int i = 0; i < rows; ++i) {
     for (int k = outer_[static_cast<std::size_t>(i)]; k < outer_[static_cast<std::size_t>(i) + 1]; ++k) {
-      const int j = column_[static_cast<std::size_t>(k)];
-      for (int q = 0; q < 3; ++q) {
-        const int col = row_of_[static_cast<std::size_t>(3 * j + q)];
-        if (col < 0) continue;
-        const int* begin = a.innerIndexPtr() + a.outerIndexPtr()[col];
-        const int* end = a.innerIndexPtr() + a.outerIndexPtr()[col + 1];
-        for (int p = 0; p < 3; ++p) {
-          const int row = row_of_[static_cast<std::size_t>(3 * i + p)];
-          if (row < 0) continue;
-          const int* found = std::lower_bound(begin, end, row);
-          if (found != end && *found == row) {
-            source_[static_cast<std::size_t>(9 * k + 3 * p + q)] = static_cast<int>(found - a.innerIndexPtr());
-          }
-        }
+      for (int e = 0; e < 9; ++e) {
+        source_[static_cast<std::size_t>(9 * k + e)] = source_of(a, i, column_[static_cast<std::size_t>(k)], e / 3, e % 3);
+      }
+    }
+    for (int k = identity_outer_[static_cast<std::size_t>(i)]; k < identity_outer_[static_cast<std::size_t>(i) + 1]; ++k) {
+      for (int e = 0; e < 9; ++e) {
+        const int at = source_of(a, i, identity_column_[static_cast<std::size_t>(k)], e / 3, e % 3);
+        REPOSE_DEMAND(at >= 0);  // free in every axis
+        identity_source_[static_cast<std::size_t>(9 * k + e)] = at;
       }
     }
   }
@@ -95,15 +146,25 @@ void VertexBlockMatrix::refresh(const Eigen::SparseMatrix<double>& a) {
   for (std::size_t k = 0; k < source_.size(); ++k) {
     values_[k] = source_[k] >= 0 ? static_cast<float>(from[source_[k]]) : 0.0f;
   }
+  float* identity = values_.data() + source_.size();
+  for (std::size_t k = 0; k < identity_column_.size(); ++k) {
+    const int* at = &identity_source_[9 * k];
+    const double value = from[at[0]];
+    // the caller's promise: k I
+    for (int e = 1; e < 9; ++e) REPOSE_DEMAND(from[at[e]] == (e % 4 == 0 ? value : 0.0));
+    identity[k] = static_cast<float>(value);
+  }
   invert_diagonal();
 }
 
 // D_i^-1 of the rounded matrix, so that both sweeps use one smoother; a
 // held axis is given a unit diagonal to invert, then zeroed (its x stays 0).
+// Every entry is written each time (no clearing pass: the fine level's runs
+// each step).
 void VertexBlockMatrix::invert_diagonal() {
   const int rows = block_rows();
-  inverse_.assign(9 * static_cast<std::size_t>(rows), 0.0);
-  inverse_columns_.assign(12 * static_cast<std::size_t>(rows), 0.0f);
+  inverse_.resize(9 * static_cast<std::size_t>(rows));
+  inverse_columns_.resize(12 * static_cast<std::size_t>(rows));
   for (int i = 0; i < rows; ++i) {
     const float* d = &values_[9 * static_cast<std::size_t>(diagonal_[static_cast<std::size_t>(i)])];
     Eigen::Matrix3d block;
@@ -121,11 +182,12 @@ void VertexBlockMatrix::invert_diagonal() {
       if (row_of_[static_cast<std::size_t>(3 * i + p)] < 0) inverse(p, p) = 0.0;
     }
     REPOSE_DEMAND(inverse.allFinite());
-    for (int p = 0; p < 3; ++p) {
-      for (int q = 0; q < 3; ++q) {
+    for (int q = 0; q < 3; ++q) {
+      for (int p = 0; p < 3; ++p) {
         inverse_[9 * static_cast<std::size_t>(i) + 3 * p + q] = inverse(p, q);
         inverse_columns_[12 * static_cast<std::size_t>(i) + 4 * q + p] = static_cast<float>(inverse(p, q));
       }
+      inverse_columns_[12 * static_cast<std::size_t>(i) + 4 * q + 3] = 0.0f;  // the padding
     }
   }
 }
@@ -198,32 +260,6 @@ inline void subtract_blocks(const float* values, const int* column, int begin, i
   for (int p = 0; p < 3; ++p) s[p] += t[p];
 }
 
-}  // namespace
-
-void VertexBlockMatrix::gauss_seidel_sweep(const Eigen::VectorXd& b, bool forward, bool from_zero,
-                                           Eigen::VectorXd* x_out) const {
-  REPOSE_DEMAND(!(from_zero && !forward));
-  double* x = x_out->data();
-  const int rows = block_rows();
-  for (int step = 0; step < rows; ++step) {
-    const int i = forward ? step : rows - 1 - step;
-    double s[3] = {b[3 * i], b[3 * i + 1], b[3 * i + 2]};
-    const int diagonal = diagonal_[static_cast<std::size_t>(i)];
-    const int begin = outer_[static_cast<std::size_t>(i)], end = outer_[static_cast<std::size_t>(i) + 1];
-    if (forward) {
-      subtract_blocks<false>(values_.data(), column_.data(), begin, diagonal, x, s);
-      if (!from_zero) subtract_blocks<false>(values_.data(), column_.data(), diagonal + 1, end, x, s);
-    } else {
-      subtract_blocks<true>(values_.data(), column_.data(), diagonal + 1, end, x, s);
-      subtract_blocks<true>(values_.data(), column_.data(), begin, diagonal, x, s);
-    }
-    const double* inv = &inverse_[9 * static_cast<std::size_t>(i)];
-    for (int p = 0; p < 3; ++p) x[3 * i + p] = inv[3 * p] * s[0] + inv[3 * p + 1] * s[1] + inv[3 * p + 2] * s[2];
-  }
-}
-
-namespace {
-
 // y_j += s A_ij^T x_i for the blocks [begin, end) of row i (x_i given)
 inline void add_transposed_blocks(const float* values, const int* column, int begin, int end, const double xi[3],
                                   double scale, double* y) {
@@ -236,7 +272,72 @@ inline void add_transposed_blocks(const float* values, const int* column, int be
   }
 }
 
+// The same two for scalar blocks k (k I): s -= k x_j, y_j += scale k x_i.
+template <bool kDescending>
+inline void subtract_scalars(const float* scalars, const int* column, int begin, int end, const double* x, double s[3]) {
+  for (int j = 0; j < end - begin; ++j) {
+    const int k = kDescending ? end - 1 - j : begin + j;
+    const double m = scalars[k];
+    const double* xj = x + 3 * static_cast<std::ptrdiff_t>(column[k]);
+    for (int p = 0; p < 3; ++p) s[p] -= m * xj[p];
+  }
+}
+
+inline void add_scalars(const float* scalars, const int* column, int begin, int end, const double xi[3], double scale,
+                        double* y) {
+  for (int k = begin; k < end; ++k) {
+    double* yj = y + 3 * static_cast<std::ptrdiff_t>(column[k]);
+    for (int p = 0; p < 3; ++p) yj[p] += scale * (scalars[k] * xi[p]);
+  }
+}
+
 }  // namespace
+
+void VertexBlockMatrix::subtract_part(int i, Part part, bool descending, const double* x, double s[3]) const {
+  const std::size_t u = static_cast<std::size_t>(i);
+  const int begin = part == Part::kUpper ? diagonal_[u] + 1 : outer_[u];
+  const int end = part == Part::kLower ? diagonal_[u] : outer_[u + 1];
+  const int scalar_begin = part == Part::kUpper ? identity_upper_[u] : identity_outer_[u];
+  const int scalar_end = part == Part::kLower ? identity_upper_[u] : identity_outer_[u + 1];
+  if (descending) {
+    subtract_blocks<true>(values_.data(), column_.data(), begin, end, x, s);
+    subtract_scalars<true>(scalars(), identity_column_.data(), scalar_begin, scalar_end, x, s);
+  } else {
+    subtract_blocks<false>(values_.data(), column_.data(), begin, end, x, s);
+    subtract_scalars<false>(scalars(), identity_column_.data(), scalar_begin, scalar_end, x, s);
+  }
+}
+
+void VertexBlockMatrix::add_transposed_part(int i, bool upper, const double v[3], double scale, double* y) const {
+  const std::size_t u = static_cast<std::size_t>(i);
+  if (upper) {
+    add_transposed_blocks(values_.data(), column_.data(), diagonal_[u] + 1, outer_[u + 1], v, scale, y);
+    add_scalars(scalars(), identity_column_.data(), identity_upper_[u], identity_outer_[u + 1], v, scale, y);
+  } else {
+    add_transposed_blocks(values_.data(), column_.data(), outer_[u], diagonal_[u], v, scale, y);
+    add_scalars(scalars(), identity_column_.data(), identity_outer_[u], identity_upper_[u], v, scale, y);
+  }
+}
+
+void VertexBlockMatrix::gauss_seidel_sweep(const Eigen::VectorXd& b, bool forward, bool from_zero,
+                                           Eigen::VectorXd* x_out) const {
+  REPOSE_DEMAND(!(from_zero && !forward));
+  double* x = x_out->data();
+  const int rows = block_rows();
+  for (int step = 0; step < rows; ++step) {
+    const int i = forward ? step : rows - 1 - step;
+    double s[3] = {b[3 * i], b[3 * i + 1], b[3 * i + 2]};
+    if (forward) {
+      subtract_part(i, Part::kLower, false, x, s);
+      if (!from_zero) subtract_part(i, Part::kUpper, false, x, s);
+    } else {
+      subtract_part(i, Part::kUpper, true, x, s);
+      subtract_part(i, Part::kLower, true, x, s);
+    }
+    const double* inv = &inverse_[9 * static_cast<std::size_t>(i)];
+    for (int p = 0; p < 3; ++p) x[3 * i + p] = inv[3 * p] * s[0] + inv[3 * p + 1] * s[1] + inv[3 * p + 2] * s[2];
+  }
+}
 
 void VertexBlockMatrix::sweep_from_zero_with_residual(const Eigen::VectorXd& b, Eigen::VectorXd* x_out,
                                                       Eigen::VectorXd* r_out) const {
@@ -248,13 +349,12 @@ void VertexBlockMatrix::sweep_from_zero_with_residual(const Eigen::VectorXd& b, 
   const int rows = block_rows();
   for (int i = 0; i < rows; ++i) {
     double s[3] = {b[3 * i], b[3 * i + 1], b[3 * i + 2]};
-    const int begin = outer_[static_cast<std::size_t>(i)], diagonal = diagonal_[static_cast<std::size_t>(i)];
-    subtract_blocks<false>(values_.data(), column_.data(), begin, diagonal, x, s);
+    subtract_part(i, Part::kLower, false, x, s);
     const double* inv = &inverse_[9 * static_cast<std::size_t>(i)];
     double* xi = x + 3 * i;
     for (int p = 0; p < 3; ++p) xi[p] = inv[3 * p] * s[0] + inv[3 * p + 1] * s[1] + inv[3 * p + 2] * s[2];
     // row j < i's residual -sum_{k > j} A_jk x_k takes A_ji x_i = A_ij^T x_i
-    add_transposed_blocks(values_.data(), column_.data(), begin, diagonal, xi, -1.0, r);
+    add_transposed_part(i, false, xi, -1.0, r);
   }
 }
 
@@ -267,10 +367,8 @@ void VertexBlockMatrix::backward_sweep_with_product(const Eigen::VectorXd& b, Ei
   const int rows = block_rows();
   for (int i = rows - 1; i >= 0; --i) {
     double s[3] = {b[3 * i], b[3 * i + 1], b[3 * i + 2]};
-    const int diagonal = diagonal_[static_cast<std::size_t>(i)];
-    const int begin = outer_[static_cast<std::size_t>(i)], end = outer_[static_cast<std::size_t>(i) + 1];
-    subtract_blocks<true>(values_.data(), column_.data(), diagonal + 1, end, x, s);
-    subtract_blocks<true>(values_.data(), column_.data(), begin, diagonal, x, s);
+    subtract_part(i, Part::kUpper, true, x, s);
+    subtract_part(i, Part::kLower, true, x, s);
     const double* inv = &inverse_[9 * static_cast<std::size_t>(i)];
     double change[3];
     for (int p = 0; p < 3; ++p) {
@@ -279,7 +377,7 @@ void VertexBlockMatrix::backward_sweep_with_product(const Eigen::VectorXd& b, Ei
       x[3 * i + p] = xp;
     }
     // rows k > i (not yet final in ax) take A_ki (x_i - x_i before) = A_ik^T change
-    add_transposed_blocks(values_.data(), column_.data(), diagonal + 1, end, change, 1.0, ax);
+    add_transposed_part(i, true, change, 1.0, ax);
   }
 }
 
@@ -301,8 +399,7 @@ void VertexBlockMatrix::residual(const Eigen::VectorXd& b, const Eigen::VectorXd
   const int rows = block_rows();
   for (int i = 0; i < rows; ++i) {
     double s[3] = {b[3 * i], b[3 * i + 1], b[3 * i + 2]};
-    subtract_blocks<false>(values_.data(), column_.data(), outer_[static_cast<std::size_t>(i)],
-                    outer_[static_cast<std::size_t>(i) + 1], x.data(), s);
+    subtract_part(i, Part::kAll, false, x.data(), s);
     for (int p = 0; p < 3; ++p) r[3 * i + p] = s[p];
   }
 }
@@ -313,8 +410,7 @@ void VertexBlockMatrix::residual_after_sweep_from_zero(const Eigen::VectorXd& x,
   const int rows = block_rows();
   for (int i = 0; i < rows; ++i) {
     double s[3] = {0.0, 0.0, 0.0};
-    subtract_blocks<false>(values_.data(), column_.data(), diagonal_[static_cast<std::size_t>(i)] + 1,
-                           outer_[static_cast<std::size_t>(i) + 1], x.data(), s);
+    subtract_part(i, Part::kUpper, false, x.data(), s);
     for (int p = 0; p < 3; ++p) r[3 * i + p] = s[p];
   }
 }
@@ -324,6 +420,13 @@ int VertexBlockMatrix::find_block(int i, int j) const {
   const auto end = column_.begin() + outer_[static_cast<std::size_t>(i) + 1];
   const auto at = std::lower_bound(begin, end, j);
   return at != end && *at == j ? static_cast<int>(at - column_.begin()) : -1;
+}
+
+int VertexBlockMatrix::find_scalar(int i, int j) const {
+  const auto begin = identity_column_.begin() + identity_outer_[static_cast<std::size_t>(i)];
+  const auto end = identity_column_.begin() + identity_outer_[static_cast<std::size_t>(i) + 1];
+  const auto at = std::lower_bound(begin, end, j);
+  return at != end && *at == j ? static_cast<int>(at - identity_column_.begin()) : -1;
 }
 
 Eigen::VectorXd VertexBlockMatrix::product(const Eigen::VectorXd& x) const {
@@ -338,8 +441,7 @@ void VertexBlockMatrix::product(const Eigen::VectorXd& x, Eigen::VectorXd* y_out
   const int rows = block_rows();
   for (int i = 0; i < rows; ++i) {
     double s[3] = {0.0, 0.0, 0.0};
-    subtract_blocks<false>(values_.data(), column_.data(), outer_[static_cast<std::size_t>(i)],
-                           outer_[static_cast<std::size_t>(i) + 1], x.data(), s);
+    subtract_part(i, Part::kAll, false, x.data(), s);
     for (int p = 0; p < 3; ++p) y[3 * i + p] = -s[p];
   }
 }

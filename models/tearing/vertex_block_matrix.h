@@ -14,9 +14,18 @@
 //
 // Vectors here ("block vectors") hold 3 entries per block row (vertex with
 // a free axis), in the order of the vertices; a held axis holds 0.
+//
+// Identity couplings: blocks the caller names as multiples of the identity
+// (the sheet's bending couplings between a vertex and the one two along a
+// mesh line, 4 of the 13 blocks of a fine row, kept as 9 floats they were
+// ~27 % of the matrix's bytes) are kept as one float each ("scalar
+// blocks"), in a list of their own per row. Only between vertices free in
+// every axis. Every pass, product and sweep treats a scalar block k as the
+// block k I.
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -34,8 +43,13 @@ class VertexBlockMatrix {
   // stored, compressed); index per (vertex, axis) 3 v + axis: its row in a,
   // or -1 when that axis is not an unknown. Every row of a must be named.
   // with_values false: the pattern only (values 0, no sweep before a
-  // refresh() or a fill).
-  VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const std::vector<int>& index, bool with_values = true);
+  // refresh() or a fill). identity_pairs: vertex pairs (either order, both
+  // blocks meant) whose blocks are multiples of the identity in every
+  // matrix this copy takes, kept as scalar blocks; each pair's vertices must
+  // be distinct, free in every axis and coupled in a's pattern
+  // (REPOSE_DEMAND), and refresh() checks each such block of a is k I.
+  VertexBlockMatrix(const Eigen::SparseMatrix<double>& a, const std::vector<int>& index, bool with_values = true,
+                    const std::vector<std::pair<int, int>>& identity_pairs = {});
 
   // The values of a later matrix of a's pattern (one gather).
   void refresh(const Eigen::SparseMatrix<double>& a);
@@ -47,12 +61,21 @@ class VertexBlockMatrix {
 
   // Filling the values in place (the pattern kept): clear_values(), then
   // add into values() (9 floats a block, row-major; held axes' entries
-  // left 0), then finish_values() before any sweep.
+  // left 0; then one float per scalar block, from scalar_offset()), then
+  // finish_values() before any sweep.
   void clear_values() { std::fill(values_.begin(), values_.end(), 0.0f); }
   float* values() { return values_.data(); }
-  std::size_t value_count() const { return source_.size(); }
-  // Block (i, j)'s index (values() + 9 index), -1 when not in the pattern.
+  std::size_t value_count() const { return source_.size() + identity_column_.size(); }
+  // Block (i, j)'s index (values() + 9 index), -1 when not in the pattern
+  // as a full block.
   int find_block(int i, int j) const;
+  // Scalar block (i, j)'s index (values() + scalar_offset() + index), -1
+  // when it is not one.
+  int find_scalar(int i, int j) const;
+  std::size_t scalar_offset() const { return source_.size(); }
+  // Full blocks and scalar blocks.
+  std::size_t block_count() const { return column_.size(); }
+  std::size_t scalar_count() const { return identity_column_.size(); }
   float* diagonal_block(int i) { return values_.data() + 9 * static_cast<std::ptrdiff_t>(diagonal_[static_cast<std::size_t>(i)]); }
   void finish_values() { invert_diagonal(); }
   // x (a's rows) as a block vector, and back (held axes dropped); the
@@ -114,7 +137,17 @@ class VertexBlockMatrix {
 
  private:
   void invert_diagonal();
+  // s -= row i's blocks (full and scalar) left of the diagonal, right of
+  // it, or all, times x, in memory order or against it; y_j += scale
+  // A_ij^T v over row i's blocks right of the diagonal (upper) or left
+  enum class Part { kLower, kUpper, kAll };
+  void subtract_part(int i, Part part, bool descending, const double* x, double s[3]) const;
+  void add_transposed_part(int i, bool upper, const double v[3], double scale, double* y) const;
+  void split_blocks(std::vector<std::vector<int>>* columns, const std::vector<std::pair<int, int>>& identity);
   void find_sources(const Eigen::SparseMatrix<double>& a);
+  // where entry (p, q) of block (i, j) lies in a's values, or -1
+  int source_of(const Eigen::SparseMatrix<double>& a, int i, int j, int p, int q) const;
+  const float* scalars() const { return values_.data() + source_.size(); }
 
   int scalar_rows_ = 0;          // a's rows
   std::vector<int> scalar_outer_, scalar_inner_;  // a's pattern
@@ -122,8 +155,14 @@ class VertexBlockMatrix {
   std::vector<int> outer_;        // per block row its first block, block_rows + 1 entries
   std::vector<int> column_;       // per block: its block column
   std::vector<int> diagonal_;     // per block row: its diagonal block
-  std::vector<float> values_;     // 9 per block, row-major, then 4 of padding (0) for 4-wide loads
-  std::vector<int> source_;       // 9 per block: where in a's values, or -1
+  // 9 per full block, row-major, then 1 per scalar block, then 4 of padding
+  // (0) for 4-wide loads
+  std::vector<float> values_;
+  std::vector<int> source_;       // 9 per full block: where in a's values, or -1
+  // the scalar blocks: per block row its first (block_rows + 1 entries) and
+  // its first right of the diagonal; per scalar block its block column and
+  // where in a's values its 9 entries lie
+  std::vector<int> identity_outer_, identity_upper_, identity_column_, identity_source_;
   std::vector<double> inverse_;   // 9 per block row: D_i^-1, zero on held axes
   std::vector<float> inverse_columns_;  // 12 per block row: D_i^-1's columns in float, each padded by a 0
 };

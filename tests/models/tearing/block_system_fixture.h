@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -13,13 +14,17 @@ namespace repose::testing {
 
 // A chain of `vertices` vertices coupled to the next two by random positive
 // semidefinite blocks, unit mass; vertex 0 held in all axes, vertex 2 in x
-// only (index -1), so some blocks are partly held.
+// only (index -1), so some blocks are partly held. With identity_second,
+// a vertex and the one two along are coupled by a random multiple of the
+// identity instead (as the sheet's bending ends are), and
+// identity_pairs names those pairs whose vertices are free in every axis.
 struct BlockSystem {
   std::vector<int> index;
   Eigen::SparseMatrix<double> matrix;
+  std::vector<std::pair<int, int>> identity_pairs;
 };
 
-inline BlockSystem block_system(int vertices, double stiffness, std::uint64_t seed) {
+inline BlockSystem block_system(int vertices, double stiffness, std::uint64_t seed, bool identity_second = false) {
   BlockSystem s;
   s.index.assign(static_cast<std::size_t>(3 * vertices), -1);
   int count = 0;
@@ -43,7 +48,11 @@ inline BlockSystem block_system(int vertices, double stiffness, std::uint64_t se
   for (int v = 0; v < vertices; ++v) {
     for (int step = 1; step <= 2 && v + step < vertices; ++step) {
       const Eigen::Vector3d n = Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng)).normalized();
-      const Eigen::Matrix3d h = stiffness * (n * n.transpose() + 0.1 * Eigen::Matrix3d::Identity());
+      Eigen::Matrix3d h = stiffness * (n * n.transpose() + 0.1 * Eigen::Matrix3d::Identity());
+      if (identity_second && step == 2) {
+        h = stiffness * (0.6 + 0.5 * uniform(rng)) * Eigen::Matrix3d::Identity();
+        if (v != 0 && v != 2 && v + step != 2) s.identity_pairs.emplace_back(v, v + step);
+      }
       add(v, v, h);
       add(v + step, v + step, h);
       add(v, v + step, -h);

@@ -22,7 +22,8 @@ namespace {
 // A system over `vertices` vertices with the axes `held` (per degree of
 // freedom 3 v + a) held, stored both ways: a dense column-major matrix of
 // the free rows (CscTarget's places) and one float block per vertex pair
-// (BlockTarget's), for blocks named in index order by `pairs`.
+// (BlockTarget's), for blocks named in index order by `pairs`; the pairs
+// in `scalar` stored as one float each (BlockTarget's scalar blocks, k I).
 struct TwoStores {
   std::vector<int> free_index, first_row;
   std::vector<char> all_free;
@@ -32,8 +33,11 @@ struct TwoStores {
   std::vector<int> block_index;                 // per block index: its slot
   std::vector<float> blocks;                    // 9 per slot, row-major
   std::vector<std::pair<int, int>> slot_pair;
+  std::vector<float> scalars;  // per scalar slot
+  std::vector<std::pair<int, int>> scalar_pair;
 
-  TwoStores(int vertices, const std::vector<bool>& held, const std::vector<std::pair<int, int>>& pairs) {
+  TwoStores(int vertices, const std::vector<bool>& held, const std::vector<std::pair<int, int>>& pairs,
+            const std::vector<std::pair<int, int>>& scalar = {}) {
     free_index.assign(static_cast<std::size_t>(3 * vertices), -1);
     first_row.assign(static_cast<std::size_t>(vertices), -1);
     all_free.assign(static_cast<std::size_t>(vertices), 1);
@@ -58,11 +62,17 @@ struct TwoStores {
         }
       }
       block_place.push_back(place);
+      if (std::find(scalar.begin(), scalar.end(), std::make_pair(a, b)) != scalar.end()) {
+        block_index.push_back(-2 - static_cast<int>(scalar_pair.size()));
+        scalar_pair.emplace_back(a, b);
+        continue;
+      }
       const auto [at, inserted] = slot_of.emplace(std::make_pair(a, b), static_cast<int>(slot_pair.size()));
       if (inserted) slot_pair.emplace_back(a, b);
       block_index.push_back(at->second);
     }
     blocks.assign(9 * slot_pair.size(), 0.0f);
+    scalars.assign(scalar_pair.size(), 0.0f);
   }
 
   Eigen::MatrixXd csc_matrix() const { return Eigen::Map<const Eigen::MatrixXd>(dense.data(), free_count, free_count); }
@@ -76,6 +86,13 @@ struct TwoStores {
           const int col = free_index[static_cast<std::size_t>(3 * slot_pair[s].second + q)];
           if (row >= 0 && col >= 0) m(row, col) += blocks[9 * s + static_cast<std::size_t>(3 * p + q)];
         }
+      }
+    }
+    for (std::size_t s = 0; s < scalar_pair.size(); ++s) {
+      for (int p = 0; p < 3; ++p) {
+        const int row = free_index[static_cast<std::size_t>(3 * scalar_pair[s].first + p)];
+        const int col = free_index[static_cast<std::size_t>(3 * scalar_pair[s].second + p)];
+        if (row >= 0 && col >= 0) m(row, col) += scalars[s];
       }
     }
     return m;
@@ -97,7 +114,10 @@ Assembled assemble_both(TwoStores* s, const Eigen::VectorXd& v0, const Eigen::Ve
   StiffnessAssembly<CscTarget> csc{s->free_index, s->first_row, s->all_free, {s->block_place, s->dense.data()},
                                    &out.rhs_csc,  v0_map,       dv_all,      dt2, dt_beta};
   add(&csc);
-  StiffnessAssembly<BlockTarget> block{s->free_index, s->first_row, s->all_free, {s->block_index, s->blocks.data()},
+  StiffnessAssembly<BlockTarget> block{s->free_index,
+                                       s->first_row,
+                                       s->all_free,
+                                       {s->block_index, s->blocks.data(), s->scalars.data()},
                                        &out.rhs_block, v0_map,      dv_all,      dt2, dt_beta};
   add(&block);
   out.csc = s->csc_matrix();
@@ -200,6 +220,29 @@ TEST(StiffnessAssembly, ABendingTermGivesItsStencilInBothStores) {
   EXPECT_LT((a.block - expected).norm(), 1e-6 * expected.norm());
   EXPECT_LT((a.rhs_csc - rhs).norm(), 1e-15 * rhs.norm());
   EXPECT_LT((a.rhs_block - rhs).norm(), 1e-15 * rhs.norm());
+}
+
+// The bending term's end blocks (0, 2) and (2, 0) kept as scalar blocks
+// (the fine blocks' identity couplings): the same matrix, whether its
+// vertices are all free or the middle one is held (the ends' blocks then
+// come entry by entry).
+TEST(StiffnessAssembly, ABendingTermsEndBlocksGoIntoScalarBlocks) {
+  std::mt19937_64 rng(5);
+  const double kb = 4.0, dt2 = 1e-4, dt_beta = 2e-5;
+  const Eigen::VectorXd v0 = random_vector(9, rng), dv = random_vector(9, rng);
+  for (const bool middle_held : {false, true}) {
+    std::vector<bool> held(9, false);
+    if (middle_held) held[4] = true;  // the middle vertex's y
+    TwoStores full(3, held, bending_pairs()), scalar(3, held, bending_pairs(), {{0, 2}, {2, 0}});
+    ASSERT_EQ(scalar.scalar_pair.size(), 2u);
+    const auto add = [&](auto* assembly) { assembly->add_bending(0, {0, 1, 2}, kb); };
+    const Assembled a = assemble_both(&full, v0, dv, dt2, dt_beta, add);
+    const Assembled b = assemble_both(&scalar, v0, dv, dt2, dt_beta, add);
+    EXPECT_EQ(b.block, a.block) << middle_held;
+    EXPECT_EQ(b.rhs_block, a.rhs_block) << middle_held;
+    EXPECT_FLOAT_EQ(scalar.scalars[0], static_cast<float>((dt2 + dt_beta) * kb)) << middle_held;
+    EXPECT_FLOAT_EQ(scalar.scalars[1], static_cast<float>((dt2 + dt_beta) * kb)) << middle_held;
+  }
 }
 
 // Holding axes (each mask of a spring's and a bending term's vertices in

@@ -94,5 +94,28 @@ TEST(VertexBlockFloatSweeps, SubnormalValuesAreFlushedInsideThePassesOnly) {
   EXPECT_NE(tiny * 1.0f, 0.0f);
 }
 
+// With scalar blocks (identity couplings) the float passes are those of
+// the copy with full blocks, to float rounding.
+TEST(VertexBlockFloatSweeps, ThePassesWithScalarBlocksAreThoseWithFullBlocks) {
+  const BlockSystem s = block_system(40, 30.0, 28, true);
+  ASSERT_GT(s.identity_pairs.size(), 30u);
+  const VertexBlockMatrix full(s.matrix, s.index), scalar(s.matrix, s.index, true, s.identity_pairs);
+  const AlignedFloats fb = padded(full, full.to_blocks(random_vector(s.matrix.rows(), 29)));
+  AlignedFloats x(fb.size()), r(fb.size()), fx(fb.size()), fr(fb.size());
+  scalar.sweep_from_zero_with_residual(fb.data(), x.data(), r.data());
+  full.sweep_from_zero_with_residual(fb.data(), fx.data(), fr.data());
+  EXPECT_LT((unpadded(x) - unpadded(fx)).norm(), 1e-5 * unpadded(fx).norm());
+  EXPECT_LT((unpadded(r) - unpadded(fr)).norm(), 1e-5 * unpadded(fr).norm());
+  AlignedFloats ax(fb.size()), fax(fb.size());
+  scalar.backward_sweep_with_product(fb.data(), x.data(), ax.data());
+  full.backward_sweep_with_product(fb.data(), fx.data(), fax.data());
+  EXPECT_LT((unpadded(x) - unpadded(fx)).norm(), 1e-5 * unpadded(fx).norm());
+  EXPECT_LT((unpadded(ax) - unpadded(fax)).norm(), 1e-5 * unpadded(fax).norm());
+  EXPECT_EQ(ax[4 + 0], 0.0f);  // the held axis
+  expect_padding_zero(x);
+  expect_padding_zero(ax);
+  expect_padding_zero(r);
+}
+
 }  // namespace
 }  // namespace repose

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -158,6 +159,89 @@ TEST(VertexBlockMatrix, FillingItInPlaceEqualsARefreshOfTheMatrix) {
   filled.gauss_seidel_sweep(x, true, true, &a);
   refreshed.gauss_seidel_sweep(x, true, true, &b);
   EXPECT_EQ(a, b);
+}
+
+// Blocks named as identity couplings (the sheet's bending ends) are kept as
+// one float each, and every pass treats them as the full blocks they stand
+// for: the same results as the copy with full blocks, to round-off.
+TEST(VertexBlockMatrix, ScalarBlocksActAsTheFullBlocksTheyStandFor) {
+  const BlockSystem s = block_system(14, 30.0, 31, true);
+  ASSERT_EQ(s.identity_pairs.size(), 10u);  // vertex v and v + 2, both free in every axis
+  const VertexBlockMatrix full(s.matrix, s.index), scalar(s.matrix, s.index, true, s.identity_pairs);
+  EXPECT_EQ(scalar.scalar_count(), 20u);
+  EXPECT_EQ(scalar.block_count() + scalar.scalar_count(), full.block_count());
+  EXPECT_EQ(scalar.value_count() + 8 * scalar.scalar_count(), full.value_count());
+  EXPECT_EQ(scalar.find_block(0, 2), -1);  // vertices 1 and 3
+  EXPECT_GE(scalar.find_scalar(0, 2), 0);
+  EXPECT_EQ(scalar.find_scalar(0, 1), -1);
+  const Eigen::VectorXd b = full.to_blocks(random_vector(s.matrix.rows(), 32));
+  const Eigen::VectorXd x0 = full.to_blocks(random_vector(s.matrix.rows(), 33));
+  const auto expect_same = [](const Eigen::VectorXd& got, const Eigen::VectorXd& want, const char* what) {
+    EXPECT_LT((got - want).norm(), 1e-12 * want.norm()) << what;
+    EXPECT_EQ(got[3], 0.0) << what;  // the held axis
+  };
+  expect_same(scalar.product(x0), full.product(x0), "product");
+  expect_same(scalar.residual(b, x0), full.residual(b, x0), "residual");
+  for (const bool forward : {true, false}) {
+    Eigen::VectorXd a = x0, c = x0;
+    scalar.gauss_seidel_sweep(b, forward, false, &a);
+    full.gauss_seidel_sweep(b, forward, false, &c);
+    expect_same(a, c, forward ? "forward sweep" : "backward sweep");
+  }
+  Eigen::VectorXd x, r, fx, fr;
+  scalar.sweep_from_zero_with_residual(b, &x, &r);
+  full.sweep_from_zero_with_residual(b, &fx, &fr);
+  expect_same(x, fx, "sweep from zero");
+  expect_same(r, fr, "its residual");
+  expect_same(scalar.residual_after_sweep_from_zero(x), full.residual_after_sweep_from_zero(fx), "upper residual");
+  Eigen::VectorXd ax, fax;
+  scalar.backward_sweep_with_product(b, &x, &ax);
+  full.backward_sweep_with_product(b, &fx, &fax);
+  expect_same(x, fx, "backward sweep with product");
+  expect_same(ax, fax, "its product");
+}
+
+// A pair named that is not a multiple of the identity in the matrix, has
+// a held axis, or is not coupled is refused.
+TEST(VertexBlockMatrix, APairThatCannotBeAScalarBlockIsRefused) {
+  const BlockSystem s = block_system(8, 30.0, 34);  // general blocks between v and v + 2
+  const std::vector<std::pair<int, int>> general = {{3, 5}}, held = {{2, 4}}, apart = {{1, 5}};
+  EXPECT_NO_THROW(VertexBlockMatrix(s.matrix, s.index, false, general));  // the pattern alone
+  EXPECT_THROW(VertexBlockMatrix(s.matrix, s.index, true, general), std::logic_error);
+  EXPECT_THROW(VertexBlockMatrix(s.matrix, s.index, false, held), std::logic_error);
+  EXPECT_THROW(VertexBlockMatrix(s.matrix, s.index, false, apart), std::logic_error);
+}
+
+// Filled in place, scalar blocks at the index find_scalar names, it is the
+// copy a refresh makes of the same matrix.
+TEST(VertexBlockMatrix, FillingScalarBlocksInPlaceEqualsARefresh) {
+  const BlockSystem s = block_system(10, 20.0, 35, true);
+  const VertexBlockMatrix refreshed(s.matrix, s.index, true, s.identity_pairs);
+  VertexBlockMatrix filled(s.matrix, s.index, false, s.identity_pairs);
+  for (int v = 1; v < 10; ++v) {
+    for (int w = 1; w < 10; ++w) {
+      const int k = filled.find_block(v - 1, w - 1), scalar = filled.find_scalar(v - 1, w - 1);
+      if (scalar >= 0) {
+        EXPECT_EQ(k, -1);
+        const int row = s.index[static_cast<std::size_t>(3 * v)], col = s.index[static_cast<std::size_t>(3 * w)];
+        filled.values()[filled.scalar_offset() + static_cast<std::size_t>(scalar)] =
+            static_cast<float>(s.matrix.coeff(row, col));
+        continue;
+      }
+      if (k < 0) continue;
+      for (int p = 0; p < 3; ++p) {
+        for (int q = 0; q < 3; ++q) {
+          const int row = s.index[static_cast<std::size_t>(3 * v + p)], col = s.index[static_cast<std::size_t>(3 * w + q)];
+          if (row >= 0 && col >= 0) filled.values()[9 * k + 3 * p + q] = static_cast<float>(s.matrix.coeff(row, col));
+        }
+      }
+    }
+  }
+  filled.finish_values();
+  const Eigen::VectorXd x = filled.to_blocks(random_vector(s.matrix.rows(), 36));
+  EXPECT_EQ(filled.product(x), refreshed.product(x));
+  const Eigen::VectorXd exact = s.matrix * filled.from_blocks(x);
+  EXPECT_LT((filled.from_blocks(filled.product(x)) - exact).norm(), 1e-6 * exact.norm());
 }
 
 }  // namespace
