@@ -15,6 +15,9 @@
 //                                   # cell it advances into while the object moves sideways; the ground above
 //                                   # it is pushed ahead of the object (the wedge ahead of a bucket's lip);
 //                                   # 1e6: no limit (every bit met goes in). Fitted as heightspan.intake_layer_m
+//     wedge_fraction: 0             # the fraction of what a held object's drag compresses that it keeps as a
+//                                   # wedge ahead of it instead, laid in front of it when it stops dragging
+//                                   # (drag_wedge.h); 0: compressed, as the ground model does
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
 //     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}
@@ -38,6 +41,7 @@ struct HeightSpanSpec {
   double bulk_density_kg_m3 = 1600.0;  // (0, 1e5]
   double particle_spread_m_s = 0.02;   // [0, 100]
   double intake_layer_m = 1e6;         // (0, 1e6]; 1e6: no limit (ground_contact.h)
+  double wedge_fraction = 0.0;         // [0, 1]; 0: none (drag_wedge.h)
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
   enum class SpanMaps { kCpu, kOsmesa };
   SpanMaps span_maps = SpanMaps::kCpu;
@@ -55,6 +59,7 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
   v.number("bulk_density_kg_m3", s.bulk_density_kg_m3, Range::any());
   v.number("particle_spread_m_s", s.particle_spread_m_s, Range::any());
   v.number("intake_layer_m", s.intake_layer_m, Range::any());
+  v.number("wedge_fraction", s.wedge_fraction, Range::any());
   v.number("frame_interval_s", s.frame_interval_s, Range::any());
   using M = HeightSpanSpec::SpanMaps;
   v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});

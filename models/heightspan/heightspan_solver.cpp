@@ -87,6 +87,9 @@ void add_measures(const HeightSpanModel& model, const HeightSpanRun& r, Run* run
   run->set("ledger.max_abs_imbalance_m3", r.max_abs_imbalance_m3, "m^3");
   run->set("ledger.max_relative_imbalance", r.initial_m3 > 0.0 ? r.max_abs_imbalance_m3 / r.initial_m3 : 0.0, "1");
   run->set("flows.taken_up_m3", r.taken_up_m3, "m^3");
+  run->set("flows.wedge_kept_m3", r.wedge_kept_m3, "m^3");
+  run->set("flows.wedge_laid_m3", r.wedge_laid_m3, "m^3");
+  run->set("volume.wedge_final_m3", r.wedge_final_m3, "m^3");
   run->set("flows.span_to_ground_m3", r.span_to_ground_m3, "m^3");
   run->set("flows.ground_to_span_m3", r.ground_to_span_m3, "m^3");
   run->set("flows.span_to_particles_m3", r.span_to_particles_m3, "m^3");

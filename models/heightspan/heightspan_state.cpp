@@ -26,10 +26,16 @@ double held_m3(const HeightSpanState& state) {
   return sum;
 }
 
+double wedge_m3(const HeightSpanState& state) {
+  double sum = 0.0;
+  for (const ObjectSpans& h : state.held) sum += h.wedge.volume_m3;
+  return sum;
+}
+
 double accounted_m3(const HeightSpanState& state) {
   const VolumeLedger& l = state.ground.ledger;
-  return state.ground.height.volume_m3() + held_m3(state) + state.particles.in_flight_m3() + l.compressed_m3 +
-         l.left_grid_m3;
+  return state.ground.height.volume_m3() + held_m3(state) + state.particles.in_flight_m3() + wedge_m3(state) +
+         l.compressed_m3 + l.left_grid_m3;
 }
 
 }  // namespace repose

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/ground/ground_state.h"
+#include "models/heightspan/drag_wedge.h"
 #include "models/heightspan/particles.h"
 #include "models/heightspan/span_erosion.h"
 #include "models/heightspan/span_map.h"
@@ -21,6 +22,7 @@ struct ObjectSpans {
   SpanMap map;
   Pose pose;  // the object's pose the map was built for
   SpanErosionScratch erosion_scratch;  // reused by erode_spans
+  DragWedge wedge;  // driven ahead of the object while it drags (heightspan.wedge_fraction)
 };
 
 struct HeightSpanState {
@@ -40,8 +42,10 @@ HeightSpanState make_heightspan_state(const HeightSpanModel& model, HeightField 
 
 // Material on every held object's spans (m^3).
 double held_m3(const HeightSpanState& state);
+// Material in the held objects' wedges (m^3; drag_wedge.h).
+double wedge_m3(const HeightSpanState& state);
 // Everything the model accounts for (m^3): ground + spans + particles in the
-// air + compressed + left the grid. Constant to round-off (the ledger).
+// air + wedges + compressed + left the grid. Constant to round-off (the ledger).
 double accounted_m3(const HeightSpanState& state);
 
 }  // namespace repose

@@ -9,6 +9,7 @@
 #include "models/ground/displacement.h"
 #include "models/ground/ground_params.h"
 #include "models/ground/substep_count.h"
+#include "models/heightspan/drag_wedge.h"
 #include "models/heightspan/ground_contact.h"
 #include "models/heightspan/heightspan_model.h"
 #include "models/heightspan/heightspan_state.h"
@@ -62,8 +63,15 @@ void substep(const HeightSpanModel& model, const GroundParams& params, Underside
     motions.push_back(to[o].position_m - from[o].position_m);
   }
   for (std::size_t k = 0; k < ceiling.undersides.size(); ++k) {
+    const double compressed_before_m3 = state->ground.ledger.compressed_m3;
     report->contact_cells +=
         displace(ground, params, ceiling.undersides[k], ceiling, motions[k], &state->ground).contact_cells;
+    if (k < model.held.size()) {
+      const double compressed_m3 = state->ground.ledger.compressed_m3 - compressed_before_m3;
+      report->wedge_kept_m3 += keep_in_wedge(ground, compressed_m3, model.options.wedge_fraction, motions[k],
+                                             &state->held[k].wedge, &state->ground);
+      report->wedge_laid_m3 += lay_wedge(ground, state->held[k].map, motions[k], &state->held[k].wedge, &state->ground);
+    }
   }
   accumulate(erode(ground, params, ceiling, &state->ground), &report->ground_erosion);
   for (std::size_t k = 0; k < model.held.size(); ++k) {

@@ -34,6 +34,7 @@ struct HeightSpanStepReport {
   int substeps = 0;
   int contact_cells = 0;
   double taken_up_m3 = 0.0;  // ground scooped onto spans
+  double wedge_kept_m3 = 0.0, wedge_laid_m3 = 0.0;  // into and out of the objects' wedges (drag_wedge.h)
   int resampled = 0;         // object-substeps that turned (maps peeled again)
   ErosionResult ground_erosion;
   SpanErosionResult span_erosion;

@@ -22,6 +22,8 @@ std::unique_ptr<UndersideRenderer> make_renderer(const HeightSpanModel& model) {
 void record(const HeightSpanStepReport& r, HeightSpanRun* run) {
   run->contact_cells += r.contact_cells;
   run->taken_up_m3 += r.taken_up_m3;
+  run->wedge_kept_m3 += r.wedge_kept_m3;
+  run->wedge_laid_m3 += r.wedge_laid_m3;
   run->span_to_ground_m3 += r.span_erosion.to_ground_m3;
   run->ground_to_span_m3 += r.span_erosion.from_ground_m3;
   run->span_to_particles_m3 += r.span_erosion.to_particles_m3;
@@ -78,6 +80,7 @@ HeightSpanRun simulate_heightspan(const HeightSpanModel& model, const GroundPara
   run.steps = steps;
   run.ledger = state.ground.ledger;
   run.final_height = state.ground.height;
+  run.wedge_final_m3 = wedge_m3(state);
   const ParticleSystem& p = state.particles;
   run.particles_built = p.built;
   run.particles_released = p.released;

@@ -69,6 +69,17 @@ TEST(HeightSpanSection, ValidateNamesTheField) {
     EXPECT_EQ(e.field(), "intake_layer_m");
   }
   EXPECT_EQ(HeightSpanSpec{}.intake_layer_m, 1e6);  // the default: no limit
+  for (const double fraction : {-0.1, 1.1, std::nan("")}) {
+    spec = {};
+    spec.wedge_fraction = fraction;
+    try {
+      validate(spec);
+      FAIL() << fraction;
+    } catch (const FieldError& e) {
+      EXPECT_EQ(e.field(), "wedge_fraction");
+    }
+  }
+  EXPECT_EQ(HeightSpanSpec{}.wedge_fraction, 0.0);  // the default: compressed, as the ground model does
 }
 
 TEST(HeightSpanSection, WritesWhatItReads) {

@@ -109,6 +109,68 @@ TEST(HeightSpanStep, AThinnerIntakeLayerHoldsLessAndLeavesMoreAheadOfTheBucket) 
   EXPECT_GT(ahead_m3(thin.state), ahead_m3(all.state));
 }
 
+// With the wedge option, on sand that compresses 70 % of what an object meets (the scoop fit's alpha 0.3).
+Scene with_wedge(Scene s, double fraction) {
+  Material m = ground_model_section(s).material("sand");
+  m.alpha = 0.3;
+  s = with_material(std::move(s), m);
+  HeightSpanSection section = heightspan_section(s);
+  section.options.wedge_fraction = fraction;
+  section.options.particle_spread_m_s = 0.0;  // no random spread: mirror images stay mirror images
+  return with_heightspan(std::move(s), section);
+}
+
+TEST(HeightSpanStep, RandomScoopsWithAWedgeConserveMaterialEveryStep) {
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> depth(0.0, 0.025), drag(0.0, 0.08), tilt(0.0, 95.0), speed(0.05, 0.6),
+      layer(0.0002, 0.01), fraction(0.0, 1.0);
+  for (int trial = 0; trial < 8; ++trial) {
+    const double d = depth(rng), l = drag(rng), t = tilt(rng), v = speed(rng), m = layer(rng), f = fraction(rng);
+    const std::string where = fmt::format("trial {} (depth {} m, drag {} m, tilt {} deg, speed {} m/s, layer {} m, "
+                                          "wedge {})", trial, d, l, t, v, m, f);
+    run_checked(with_wedge(with_intake_layer(scoop(d, l, t, v, static_cast<std::uint64_t>(trial)), m), f), where);
+    if (HasFailure()) break;
+  }
+}
+
+TEST(HeightSpanStep, TheWedgeKeepsWhatTheDragCompressedInFrontOfTheBucketWithoutChangingTheFill) {
+  // the scoop of the intake-layer test up to the drag's end (21 of its 22 drag steps),
+  // with and without the wedge: the same load, the drag's compression carried in front
+  Scene base = with_intake_layer(scoop(0.015, 0.08, 80.0, 0.15, 1), 0.004);
+  base.time.duration_s = 21.0 / 30.0;
+  const Checked off = run_checked(with_wedge(base, 0.0), "no wedge");
+  const Checked on = run_checked(with_wedge(base, 1.0), "wedge");
+  EXPECT_EQ(held_m3(on.state), held_m3(off.state));
+  EXPECT_EQ(on.state.ground.height.heights().matrix(), off.state.ground.height.heights().matrix());
+  const double kept_m3 = off.state.ground.ledger.compressed_m3 - on.state.ground.ledger.compressed_m3;
+  EXPECT_GT(kept_m3, 1e-6);
+  EXPECT_NEAR(wedge_m3(on.state), kept_m3, 1e-12 * kept_m3);
+}
+
+TEST(HeightSpanStep, TheWedgeIsLaidAheadOfTheLipWhenTheDragEnds) {
+  const Scene base = with_intake_layer(scoop(0.015, 0.08, 80.0, 0.15, 1), 0.004);
+  const Checked off = run_checked(with_wedge(base, 0.0), "no wedge");
+  const Checked on = run_checked(with_wedge(base, 1.0), "wedge");
+  EXPECT_EQ(wedge_m3(on.state), 0.0);  // laid when the lift began
+  const double kept_m3 = off.state.ground.ledger.compressed_m3 - on.state.ground.ledger.compressed_m3;
+  EXPECT_GT(kept_m3, 1e-6);
+  auto ahead_m3 = [](const HeightSpanState& st) {  // beyond the lip at the drag's end (x > 0.17)
+    return st.ground.height.heights().rightCols(st.ground.height.nx() - 34).sum() * 0.005 * 0.005;
+  };
+  EXPECT_GT(ahead_m3(on.state) - ahead_m3(off.state), 0.5 * kept_m3);
+}
+
+TEST(HeightSpanStep, AScoopWithAWedgeIsMirrorSymmetricAboutItsLine) {
+  const Checked c = run_checked(with_wedge(with_intake_layer(scoop(0.015, 0.06, 80.0, 0.15, 2), 0.004), 1.0),
+                                "mirror, wedge");
+  const ArrayXXdR& h = c.state.ground.height.heights();
+  ASSERT_EQ(h.rows(), 24);
+  double worst = 0.0;
+  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(h.rightCols(40 - 30).maxCoeff(), 0.03 + 2e-3);  // a heap in front of the drag's end
+}
+
 TEST(HeightSpanStep, TiltedBucketDraggedThroughSandFills) {
   const Checked c = run_checked(scoop(0.015, 0.08, 80.0, 0.15, 1), "scoop");
   const double bucket_inside_m3 = 0.07 * 0.07 * 0.045;

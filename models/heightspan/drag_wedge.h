@@ -1,0 +1,56 @@
+#pragma once
+// The wedge a held object drives ahead of it while it drags (issue 12;
+// departure from the paper, an option: heightspan.wedge_fraction, default 0).
+//
+// The ground model compresses away (1 - alpha) of what an object's underside
+// intersects (models/ground/displacement.h). For a bucket dragged through
+// loose sand that loses most of what its lip displaces: at the scoop fit's
+// alpha 0.30 the held-out shallow scoop compresses 53 cm^3 of the 82 cm^3 it
+// digs, where the LIGGGHTS beds lose 18 cm^3 net and drive the rest ahead
+// of the lip as a wedge (experiments/heightspan/scoop_profiles.py). A lower
+// compression cannot replace it: what the displacement leaves in front of
+// the lip is met again in the next cell and taken in (at alpha 1 the fitted
+// bucket holds 15 % (deep) / 45 % (shallow) too much).
+//
+// With wedge_fraction f > 0, that fraction of what a held object's drag
+// compresses is kept instead, as the object's wedge: a volume that travels in
+// front of the object, out of the lip's reach (the DEM's wedge spills around
+// the bucket rather than into it), so the fill is the same as without it.
+// When the object stops dragging (it lifts, presses or stands), the wedge is
+// laid on the ground in front of it along the last drag's main axis (x or
+// y), in equal shares on the first ground cell ahead of the object's
+// frontmost span in every lane (row or column of its span map) that has a
+// span; erosion settles it from there. What finds no cell ahead on the grid
+// leaves the grid (the ledger's left_grid_m3). The wedge is counted in the
+// ledger while carried (heightspan_state.h: accounted_m3).
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "models/heightspan/span_map.h"
+
+namespace repose {
+
+struct GroundModel;
+struct GroundState;
+
+struct DragWedge {
+  double volume_m3 = 0.0;         // carried in front of the object
+  std::array<int, 2> back{0, 0};  // the cell step against the last drag, along its main axis
+};
+
+// After a held object's displacement this substep compressed `compressed_m3`:
+// when `motion_m` is a drag (displacement.h: is_drag), moves `fraction` of
+// it from the ledger's compressed volume into the wedge and remembers the
+// drag's direction. Returns the volume kept.
+double keep_in_wedge(const GroundModel& model, double compressed_m3, double fraction, const Eigen::Vector3d& motion_m,
+                     DragWedge* wedge, GroundState* state);
+
+// When `motion_m` is not a drag and the wedge holds material, lays it in
+// front of the object (above) and empties it; the cells join the erosion
+// memory. Returns the volume laid on the ground.
+double lay_wedge(const GroundModel& model, const SpanMap& map, const Eigen::Vector3d& motion_m, DragWedge* wedge,
+                 GroundState* state);
+
+}  // namespace repose

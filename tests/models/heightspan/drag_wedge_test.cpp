@@ -1,0 +1,92 @@
+#include "models/heightspan/drag_wedge.h"
+
+#include <gtest/gtest.h>
+
+#include "heightspan_fixtures.h"
+#include "models/core/config/initial_height.h"
+
+namespace repose {
+namespace {
+
+using testing::bed_scene;
+using testing::bucket_mesh;
+using testing::key;
+using testing::mesh_object;
+
+// An upright bucket (8 cm: 16 cells of 5 mm) standing at x_m on a 40 x 40 grid.
+struct Standing {
+  HeightSpanModel model;
+  HeightSpanState state;
+};
+Standing standing_bucket(double x_m) {
+  Scene s = bed_scene(40, 40, 0.005, 0.01, {mesh_object("bucket", bucket_mesh(), {key(0.0, x_m, 0.1, 0.08)})}, 1);
+  Standing b{build_heightspan_model(s), {}};
+  b.state = make_heightspan_state(b.model, make_initial_height(s));
+  return b;
+}
+
+TEST(DragWedge, KeepsItsFractionOfWhatADragCompressesAndTheLedgerStillBalances) {
+  Standing b = standing_bucket(0.1);
+  GroundState& g = b.state.ground;
+  g.ledger.compressed_m3 = 1e-6;
+  const double before = accounted_m3(b.state);
+  DragWedge& w = b.state.held[0].wedge;
+  EXPECT_DOUBLE_EQ(keep_in_wedge(b.model.ground, 1e-6, 0.4, {0.001, 0.0, 0.0}, &w, &g), 4e-7);
+  EXPECT_DOUBLE_EQ(w.volume_m3, 4e-7);
+  EXPECT_DOUBLE_EQ(g.ledger.compressed_m3, 6e-7);
+  EXPECT_EQ(w.back, (std::array<int, 2>{-1, 0}));
+  EXPECT_NEAR(accounted_m3(b.state), before, 1e-18);
+  // pressing (moving down) is not a drag: its compression stays compressed
+  EXPECT_EQ(keep_in_wedge(b.model.ground, 1e-6, 0.4, {0.001, 0.0, -0.001}, &w, &g), 0.0);
+  // nor with the option off
+  EXPECT_EQ(keep_in_wedge(b.model.ground, 1e-6, 0.0, {0.001, 0.0, 0.0}, &w, &g), 0.0);
+  // a drag along -y remembers its direction
+  keep_in_wedge(b.model.ground, 1e-6, 1.0, {0.0002, -0.001, 0.0}, &w, &g);
+  EXPECT_EQ(w.back, (std::array<int, 2>{0, 1}));
+  EXPECT_DOUBLE_EQ(w.volume_m3, 1.4e-6);
+}
+
+TEST(DragWedge, LaysItInEqualSharesJustAheadOfEveryLaneOfTheObjectOnceItStopsDragging) {
+  Standing b = standing_bucket(0.1);  // spans over ground cells 12 .. 27 in x and y
+  GroundState& g = b.state.ground;
+  DragWedge& w = b.state.held[0].wedge;
+  w = DragWedge{1.6e-5, {-1, 0}};  // driven towards +x
+  const SpanMap& map = b.state.held[0].map;
+  const double before = accounted_m3(b.state), ground_before = g.height.volume_m3();
+  // still dragging: it stays in front of the object
+  EXPECT_EQ(lay_wedge(b.model.ground, map, {0.001, 0.0, 0.0}, &w, &g), 0.0);
+  EXPECT_EQ(w.volume_m3, 1.6e-5);
+  // lifted: laid on ground column 28, rows 12 .. 27, 1e-6 m^3 each
+  EXPECT_DOUBLE_EQ(lay_wedge(b.model.ground, map, {0.0, 0.0, 0.001}, &w, &g), 1.6e-5);
+  EXPECT_EQ(w.volume_m3, 0.0);
+  EXPECT_NEAR(g.height.volume_m3() - ground_before, 1.6e-5, 1e-18);
+  EXPECT_NEAR(accounted_m3(b.state), before, 1e-18);
+  const double share_m = 1e-6 / (0.005 * 0.005);
+  for (int j = 0; j < 40; ++j) {
+    for (int i = 0; i < 40; ++i) {
+      const bool laid = i == 28 && j >= 12 && j <= 27;
+      EXPECT_NEAR(g.height.at(i, j), 0.01 + (laid ? share_m : 0.0), 1e-15) << i << ", " << j;
+    }
+  }
+  EXPECT_TRUE(g.erosion.contains(b.model.ground.cell(28, 12)));
+}
+
+TEST(DragWedge, WhatFindsNoCellAheadOnTheGridLeavesIt) {
+  Standing b = standing_bucket(0.1);
+  GroundState& g = b.state.ground;
+  DragWedge& w = b.state.held[0].wedge;
+  w = DragWedge{1.6e-5, {0, 1}};  // driven towards -y: the cells ahead are row 11
+  EXPECT_DOUBLE_EQ(lay_wedge(b.model.ground, b.state.held[0].map, Eigen::Vector3d::Zero(), &w, &g), 1.6e-5);
+  EXPECT_GT(g.height.at(20, 11), 0.01);
+  Standing edge = standing_bucket(0.18);  // reaches past the grid's +x edge (0.2 m)
+  GroundState& e = edge.state.ground;
+  DragWedge& we = edge.state.held[0].wedge;
+  we = DragWedge{1.6e-5, {-1, 0}};
+  const double before = accounted_m3(edge.state);
+  EXPECT_EQ(lay_wedge(edge.model.ground, edge.state.held[0].map, Eigen::Vector3d::Zero(), &we, &e), 0.0);
+  EXPECT_DOUBLE_EQ(e.ledger.left_grid_m3, 1.6e-5);
+  EXPECT_NEAR(accounted_m3(edge.state), before, 1e-18);
+}
+
+}  // namespace
+}  // namespace repose
