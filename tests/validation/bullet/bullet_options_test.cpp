@@ -7,21 +7,12 @@
 #include "models/core/base/error.h"
 #include "models/core/config/scene.h"
 #include "models/core/config/scene_loader.h"
+#include "tests/support/engine_section_checks.h"
 #include "validation/particles/dem_section.h"
 #include "validation/bullet/bullet_section.h"
 
 namespace repose {
 namespace {
-
-// The one-line error of reading `section` as a bullet: section.
-std::string error_of(const std::string& section) {
-  try {
-    bullet_section_type().read(parse_yaml(section, "scene.yaml"), Scene{});
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(BulletOptions, AbsentKeysKeepTheDocumentedDefaults) {
   const auto section = bullet_section_type().read(parse_yaml("{solver_iterations: 15}", "scene.yaml"), Scene{});
@@ -39,29 +30,15 @@ TEST(BulletOptions, MalformedSectionsGiveOneLineErrorsNamingTheKey) {
       {"{contact_breaking_fraction: abc}", "contact_breaking_fraction"},
       {"{substeps: 3}", "substeps"},  // unknown key
       {"{time_step_s: 0.01, settle_check_interval_s: 0.001}", "settle_check_interval_s"},
-      {"[1, 2]", "time_step_s"},      // not a map: the allowed keys are listed
+      {"[1, 2]", "time_step_s"},  // not a map: the allowed keys are listed
   };
-  for (const auto& [section, key] : cases) {
-    const std::string message = error_of(section);
-    EXPECT_NE(message.find(key), std::string::npos) << section << " -> " << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-  }
+  test_support::expect_one_line_errors_naming_the_key(bullet_section_type(), cases);
 }
 
 TEST(BulletOptions, InASceneTheErrorNamesTheFileLineAndKeyPath) {
-  const std::string scene =
-      "time: {step_s: 0.01, duration_s: 0.1}\n"
-      "ground: {extent_m: [0.04, 0.04], cell_size_m: 0.004, initial_height: {kind: flat, height_m: 0.01}}\n"
-      "dem: {bed_depth_m: 0.01}\n"
-      "bullet: {time_step_s: 0.5}\n";
-  try {
-    load_scene_from_string(scene, "/tmp/scene.yaml", {dem_section_type(), bullet_section_type()});
-    FAIL() << "accepted a step of 0.5 s";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/tmp/scene.yaml:4:"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("bullet.time_step_s"), std::string::npos) << e.what();
-  }
-  const Scene without = load_scene_from_string(scene.substr(0, scene.rfind("bullet:")), "/tmp/scene.yaml",
+  test_support::expect_scene_error_names_file_line_and_key(bullet_section_type(), "bullet: {time_step_s: 0.5}",
+                                                           "bullet.time_step_s");
+  const Scene without = load_scene_from_string(test_support::dem_scene_with(""), "/tmp/scene.yaml",
                                                {dem_section_type(), bullet_section_type()});
   EXPECT_EQ(bullet_options_text(bullet_options_of(without)), bullet_options_text(BulletOptions{}));
 }

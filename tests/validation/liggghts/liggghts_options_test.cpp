@@ -7,6 +7,7 @@
 #include "models/core/base/error.h"
 #include "models/core/config/scene.h"
 #include "models/core/config/scene_loader.h"
+#include "tests/support/engine_section_checks.h"
 #include "tests/validation/liggghts/dem_test_scene.h"
 #include "validation/liggghts/liggghts_script.h"
 #include "validation/liggghts/liggghts_section.h"
@@ -14,15 +15,6 @@
 
 namespace repose {
 namespace {
-
-std::string error_of(const std::string& section) {
-  try {
-    liggghts_section_type().read(parse_yaml(section, "scene.yaml"), Scene{});
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 Scene with_options(Scene scene, const LiggghtsOptions& options) {
   auto section = std::make_shared<LiggghtsSection>();
@@ -48,26 +40,12 @@ TEST(LiggghtsOptions, MalformedSectionsGiveOneLineErrorsNamingTheKey) {
       {"{sort_every_steps: 1.5}", "sort_every_steps"},
       {"{skin: 2}", "skin"},  // unknown key
   };
-  for (const auto& [section, key] : cases) {
-    const std::string message = error_of(section);
-    EXPECT_NE(message.find(key), std::string::npos) << section << " -> " << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-  }
+  test_support::expect_one_line_errors_naming_the_key(liggghts_section_type(), cases);
 }
 
 TEST(LiggghtsOptions, InASceneTheErrorNamesTheFileLineAndKeyPath) {
-  const std::string scene =
-      "time: {step_s: 0.01, duration_s: 0.1}\n"
-      "ground: {extent_m: [0.04, 0.04], cell_size_m: 0.004, initial_height: {kind: flat, height_m: 0.01}}\n"
-      "dem: {bed_depth_m: 0.01}\n"
-      "liggghts: {neighbor_check_every_steps: 5000}\n";
-  try {
-    load_scene_from_string(scene, "/tmp/scene.yaml", {dem_section_type(), liggghts_section_type()});
-    FAIL() << "accepted a check every 5000 steps";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/tmp/scene.yaml:4:"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("liggghts.neighbor_check_every_steps"), std::string::npos) << e.what();
-  }
+  test_support::expect_scene_error_names_file_line_and_key(
+      liggghts_section_type(), "liggghts: {neighbor_check_every_steps: 5000}", "liggghts.neighbor_check_every_steps");
 }
 
 // The defaults write the lines every cached bed was made with; tuning

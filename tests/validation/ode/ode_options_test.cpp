@@ -7,21 +7,12 @@
 #include "models/core/base/error.h"
 #include "models/core/config/scene.h"
 #include "models/core/config/scene_loader.h"
+#include "tests/support/engine_section_checks.h"
 #include "validation/particles/dem_section.h"
 #include "validation/ode/ode_section.h"
 
 namespace repose {
 namespace {
-
-// The one-line error of reading `section` as a bullet: section.
-std::string error_of(const std::string& section) {
-  try {
-    ode_section_type().read(parse_yaml(section, "scene.yaml"), Scene{});
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(OdeOptions, AbsentKeysKeepTheDocumentedDefaults) {
   const auto section = ode_section_type().read(parse_yaml("{solver_iterations: 15}", "scene.yaml"), Scene{});
@@ -40,29 +31,15 @@ TEST(OdeOptions, MalformedSectionsGiveOneLineErrorsNamingTheKey) {
       {"{cfm: 0}", "cfm"},
       {"{substeps: 3}", "substeps"},  // unknown key
       {"{time_step_s: 0.01, settle_check_interval_s: 0.001}", "settle_check_interval_s"},
-      {"[1, 2]", "time_step_s"},      // not a map: the allowed keys are listed
+      {"[1, 2]", "time_step_s"},  // not a map: the allowed keys are listed
   };
-  for (const auto& [section, key] : cases) {
-    const std::string message = error_of(section);
-    EXPECT_NE(message.find(key), std::string::npos) << section << " -> " << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-  }
+  test_support::expect_one_line_errors_naming_the_key(ode_section_type(), cases);
 }
 
 TEST(OdeOptions, InASceneTheErrorNamesTheFileLineAndKeyPath) {
-  const std::string scene =
-      "time: {step_s: 0.01, duration_s: 0.1}\n"
-      "ground: {extent_m: [0.04, 0.04], cell_size_m: 0.004, initial_height: {kind: flat, height_m: 0.01}}\n"
-      "dem: {bed_depth_m: 0.01}\n"
-      "ode: {time_step_s: 0.5}\n";
-  try {
-    load_scene_from_string(scene, "/tmp/scene.yaml", {dem_section_type(), ode_section_type()});
-    FAIL() << "accepted a step of 0.5 s";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("/tmp/scene.yaml:4:"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("ode.time_step_s"), std::string::npos) << e.what();
-  }
-  const Scene without = load_scene_from_string(scene.substr(0, scene.rfind("ode:")), "/tmp/scene.yaml",
+  test_support::expect_scene_error_names_file_line_and_key(ode_section_type(), "ode: {time_step_s: 0.5}",
+                                                           "ode.time_step_s");
+  const Scene without = load_scene_from_string(test_support::dem_scene_with(""), "/tmp/scene.yaml",
                                                {dem_section_type(), ode_section_type()});
   EXPECT_EQ(ode_options_text(ode_options_of(without)), ode_options_text(OdeOptions{}));
 }
