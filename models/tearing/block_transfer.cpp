@@ -31,22 +31,41 @@ BlockTransfer::BlockTransfer(const Eigen::SparseMatrix<double>& p)
     }
     outer_.push_back(static_cast<int>(coarse_.size()));
   }
+  // per coarse vertex its links, fine vertices ascending (counting sort)
+  reverse_outer_.assign(static_cast<std::size_t>(coarse_rows_) + 1, 0);
+  for (const int c : coarse_) ++reverse_outer_[static_cast<std::size_t>(c) + 1];
+  for (int c = 0; c < coarse_rows_; ++c) reverse_outer_[static_cast<std::size_t>(c) + 1] += reverse_outer_[static_cast<std::size_t>(c)];
+  std::vector<int> at(reverse_outer_.begin(), reverse_outer_.end() - 1);
+  fine_.resize(coarse_.size());
+  reverse_weight_.resize(weight_.size());
+  for (int i = 0; i < fine_rows; ++i) {
+    for (int k = outer_[static_cast<std::size_t>(i)]; k < outer_[static_cast<std::size_t>(i) + 1]; ++k) {
+      const int slot = at[static_cast<std::size_t>(coarse_[static_cast<std::size_t>(k)])]++;
+      fine_[static_cast<std::size_t>(slot)] = i;
+      std::copy_n(weight_.begin() + 3 * k, 3, reverse_weight_.begin() + 3 * slot);
+    }
+  }
 }
 
+// Per coarse vertex, its fine vertices' entries times their weights summed
+// from 0 in ascending fine order: the order in which Eigen's product with
+// P^T (column-major: fine entries in turn, scattered) adds them.
 template <int kStride, typename Scalar>
 void BlockTransfer::restrict_strided(const Scalar* fine, Eigen::VectorXd* coarse) const {
-  coarse->setZero(3 * static_cast<Eigen::Index>(coarse_rows_));
+  coarse->resize(3 * static_cast<Eigen::Index>(coarse_rows_));
   double* out = coarse->data();
-  const int rows = fine_rows();
-  for (int i = 0; i < rows; ++i, fine += kStride) {
-    const double f0 = fine[0], f1 = fine[1], f2 = fine[2];
-    for (int k = outer_[static_cast<std::size_t>(i)]; k < outer_[static_cast<std::size_t>(i) + 1]; ++k) {
-      const double* w = weight_.data() + 3 * static_cast<std::ptrdiff_t>(k);
-      double* c = out + 3 * static_cast<std::ptrdiff_t>(coarse_[static_cast<std::size_t>(k)]);
-      c[0] += w[0] * f0;
-      c[1] += w[1] * f1;
-      c[2] += w[2] * f2;
+  for (int c = 0; c < coarse_rows_; ++c, out += 3) {
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0;
+    for (int k = reverse_outer_[static_cast<std::size_t>(c)]; k < reverse_outer_[static_cast<std::size_t>(c) + 1]; ++k) {
+      const double* w = reverse_weight_.data() + 3 * static_cast<std::ptrdiff_t>(k);
+      const Scalar* f = fine + kStride * static_cast<std::ptrdiff_t>(fine_[static_cast<std::size_t>(k)]);
+      s0 += w[0] * f[0];
+      s1 += w[1] * f[1];
+      s2 += w[2] * f[2];
     }
+    out[0] = s0;
+    out[1] = s1;
+    out[2] = s2;
   }
 }
 

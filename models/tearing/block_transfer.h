@@ -53,6 +53,10 @@ class BlockTransfer {
   std::vector<int> outer_ = {0};  // per fine vertex its first link, fine_rows + 1 entries
   std::vector<int> coarse_;       // per link its coarse vertex, ascending within a fine vertex
   std::vector<double> weight_;    // 3 per link: per axis, 0 where P has no entry
+  // the same links per coarse vertex (the restriction gathers: one store a
+  // coarse vertex): its first, per link the fine vertex (ascending) and weights
+  std::vector<int> reverse_outer_, fine_;
+  std::vector<double> reverse_weight_;
 };
 
 }  // namespace repose
