@@ -60,7 +60,7 @@ Eigen::VectorXd inverse_l1_rows(const Eigen::SparseMatrix<double>& a) {
 
 struct SheetMultigrid::Level {
   Eigen::SparseMatrix<double> interpolation;  // finer x this level's unknowns
-  Eigen::SparseMatrix<double> restriction;    // its transpose
+  Eigen::SparseMatrix<double> restriction;    // its transpose (l1-Jacobi only)
   // the same between the finer level's block vectors and this one's
   BlockTransfer transfer;
   Eigen::SparseMatrix<double> matrix;         // P^T A_finer P
@@ -254,7 +254,7 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
   while (grid.count > options_.coarsest_unknowns && (grid.vertices_x > 2 || grid.vertices_y > 2)) {
     auto level = std::make_unique<Level>();
     std::tie(level->interpolation, level->grid) = interpolation_from_coarse(grid, *matrix);
-    level->restriction = level->interpolation.transpose();
+    if (l1_jacobi) level->restriction = level->interpolation.transpose();
     level->matrix = galerkin_product(*matrix, level->interpolation, grid.index, level->grid.index);
     level->blocks = VertexBlockMatrix(level->matrix, level->grid.index);
     if (l1_jacobi) level->inverse_l1 = inverse_l1_rows(level->matrix);
