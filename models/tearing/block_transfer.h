@@ -30,6 +30,11 @@ class BlockTransfer {
   // 3 J + b) is the weight of coarse vertex J's axis b in fine vertex i's
   // axis a, and must have a == b (REPOSE_DEMAND).
   explicit BlockTransfer(const Eigen::SparseMatrix<double>& p);
+  // The same from P between unknowns, entry (r, c) standing at (fine_place[r],
+  // coarse_place[c]) of the block-vector P (VertexBlockMatrix::
+  // block_place_of_rows of the two levels): no block-vector matrix built.
+  BlockTransfer(const Eigen::SparseMatrix<double>& p, const std::vector<int>& fine_place,
+                const std::vector<int>& coarse_place, int fine_rows, int coarse_rows);
 
   int fine_rows() const { return static_cast<int>(outer_.size()) - 1; }
   int coarse_rows() const { return coarse_rows_; }
@@ -46,8 +51,7 @@ class BlockTransfer {
   void add_interpolated(const Eigen::VectorXd& coarse, float* fine) const;
 
  private:
-  template <int kStride, typename Scalar>
-  void restrict_strided(const Scalar* fine, Eigen::VectorXd* coarse) const;
+  void restrict_doubles(const double* fine, Eigen::VectorXd* coarse) const;
 
   int coarse_rows_ = 0;
   std::vector<int> outer_ = {0};  // per fine vertex its first link, fine_rows + 1 entries

@@ -217,24 +217,6 @@ std::pair<Eigen::SparseMatrix<double>, Grid> interpolation_from_coarse(const Gri
   return {std::move(p), std::move(coarse)};
 }
 
-// p (finer rows x coarse rows) between the two levels' block vectors.
-Eigen::SparseMatrix<double> between_blocks(const Eigen::SparseMatrix<double>& p, const VertexBlockMatrix& finer,
-                                           const VertexBlockMatrix& coarse) {
-  const std::vector<int> row_place = finer.block_place_of_rows(), col_place = coarse.block_place_of_rows();
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(static_cast<std::size_t>(p.nonZeros()));
-  for (int c = 0; c < p.outerSize(); ++c) {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(p, c); it; ++it) {
-      triplets.emplace_back(row_place[static_cast<std::size_t>(it.row())], col_place[static_cast<std::size_t>(c)],
-                            it.value());
-    }
-  }
-  Eigen::SparseMatrix<double> blocks(3 * finer.block_rows(), 3 * coarse.block_rows());
-  blocks.setFromTriplets(triplets.begin(), triplets.end());
-  blocks.makeCompressed();
-  return blocks;
-}
-
 }  // namespace
 
 void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
@@ -259,7 +241,8 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
     level->blocks = VertexBlockMatrix(level->matrix, level->grid.index);
     if (l1_jacobi) level->inverse_l1 = inverse_l1_rows(level->matrix);
     const VertexBlockMatrix& finer = levels_.empty() ? fine_blocks_ : levels_.back()->blocks;
-    level->transfer = BlockTransfer(between_blocks(level->interpolation, finer, level->blocks));
+    level->transfer = BlockTransfer(level->interpolation, finer.block_place_of_rows(), level->blocks.block_place_of_rows(),
+                                    finer.block_rows(), level->blocks.block_rows());
     grid = level->grid;
     levels_.push_back(std::move(level));
     matrix = &levels_.back()->matrix;

@@ -100,6 +100,44 @@ TEST(BlockTransfer, TheInterpolationIsTheProductBitForBit) {
   }
 }
 
+// Made from P between unknowns (held axes dropped) and the places of the
+// unknowns in the block vectors, it transfers what the block-vector P does.
+TEST(BlockTransfer, MadeFromThePlacesOfTheUnknownsItIsTheBlockVectorOne) {
+  const int fine = 29, coarse = 15;
+  Eigen::SparseMatrix<double> blocks = random_interpolation(fine, coarse, 6);
+  // fine axes with (v + axis) % 5 == 0 and coarse ones with (V + axis) % 4 == 1 held
+  const auto held_fine = [](int k) { return (k / 3 + k % 3) % 5 == 0; };
+  const auto held_coarse = [](int k) { return (k / 3 + k % 3) % 4 == 1; };
+  blocks.prune([&](Eigen::Index r, Eigen::Index c, double) { return !held_fine(static_cast<int>(r)) && !held_coarse(static_cast<int>(c)); });
+  std::vector<int> fine_place, coarse_place, fine_unknown(3 * fine, -1), coarse_unknown(3 * coarse, -1);
+  for (int k = 0; k < 3 * fine; ++k) {
+    if (!held_fine(k)) fine_unknown[static_cast<std::size_t>(k)] = static_cast<int>(fine_place.size()), fine_place.push_back(k);
+  }
+  for (int k = 0; k < 3 * coarse; ++k) {
+    if (!held_coarse(k)) coarse_unknown[static_cast<std::size_t>(k)] = static_cast<int>(coarse_place.size()), coarse_place.push_back(k);
+  }
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (int c = 0; c < blocks.outerSize(); ++c) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(blocks, c); it; ++it) {
+      triplets.emplace_back(fine_unknown[static_cast<std::size_t>(it.row())], coarse_unknown[static_cast<std::size_t>(c)], it.value());
+    }
+  }
+  Eigen::SparseMatrix<double> p(static_cast<Eigen::Index>(fine_place.size()), static_cast<Eigen::Index>(coarse_place.size()));
+  p.setFromTriplets(triplets.begin(), triplets.end());
+  const BlockTransfer from_blocks(blocks), from_places(p, fine_place, coarse_place, fine, coarse);
+  EXPECT_EQ(from_places.fine_rows(), fine);
+  EXPECT_EQ(from_places.coarse_rows(), coarse);
+  const Eigen::VectorXd r = random_vector(3 * fine, 7), c = random_vector(3 * coarse, 8);
+  Eigen::VectorXd a, b, x = random_vector(3 * fine, 9), y = x;
+  from_blocks.restrict_to(r, &a);
+  from_places.restrict_to(r, &b);
+  EXPECT_EQ(a, b);
+  from_blocks.add_interpolated(c, &x);
+  from_places.add_interpolated(c, &y);
+  EXPECT_EQ(x, y);
+  EXPECT_GT((x - random_vector(3 * fine, 9)).norm(), 0.1);
+}
+
 TEST(BlockTransfer, AnInterpolationMixingAxesIsRefused) {
   Eigen::SparseMatrix<double> p(6, 3);
   p.insert(4, 1) = 0.5;  // fine vertex 1's y from coarse vertex 0's y: kept
