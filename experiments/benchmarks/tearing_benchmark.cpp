@@ -125,6 +125,22 @@
 // cells 23.9 -> 21.2 CPU s, the same 2,128 steps and 50 cells, its work,
 // fracture energy and peak force within 2e-8 (implicit_integrator.h: by
 // what). Target 20 steps/s (50 ms): missed by ~5-10 % at this load.
+// Measured 2026-11-27 14:40-15:02 (load 6.6-8.5; CPU time; main at
+// e3ee8bd and the branch tear-speed2 in turn, order alternating):
+// /200/iterations:40 medians 53.2 -> 51.8 ms (10 rounds, at f75fc44;
+// per-round ratio median 0.96) and 72.3 -> 66.9 ms (8 rounds, at cdafbc2,
+// a callgrind run beside them; ratio median 0.95). Callgrind over the 40
+// steps (ImplicitIntegrator::step inclusive) 15,814 -> 14,278 M
+// instructions (-9.7 %): Eigen's transfer products replaced by
+// block_transfer.h (1,445 -> 685 M with the float/double conversion
+// passes), the hierarchy build 1,889 -> 1,588 M (the block copy's sources
+// by one walk per column, couplings once per vertex), a spring's float
+// blocks four entries at a time. Whole tear at 100 cells: the same 2,128
+// steps and 50 cells, work, fracture and peak force equal bit for bit.
+// perf: the one hierarchy build is ~30 % of the timed 40 steps' CPU
+// samples (the Galerkin product ~22 %, much of it page faults of its
+// fresh buffers), so a build kept in reused memory is the next lever.
+// Target 20 steps/s (50 ms): missed by ~4 % at load ~7.
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter='ToleranceError|WholeTearTolerance/50/(12/0|3/1)/'   (minutes)

@@ -108,6 +108,10 @@ CoarseRows coarse_block_rows(const BlockRows& fine, const Links& forward, const 
     for (const auto& [i, wi] : reverse[big_i]) {
       for (int k = fine.begin[static_cast<std::size_t>(i)]; k < fine.begin[static_cast<std::size_t>(i) + 1]; ++k) {
         const std::array<double, 9>& block = fine.value[static_cast<std::size_t>(k)];
+        std::array<double, 9> left;  // diag(w_iI) A_ij, the same for every J
+        for (int r = 0; r < 3; ++r) {
+          for (int s = 0; s < 3; ++s) left[static_cast<std::size_t>(3 * r + s)] = wi[r] * block[3 * r + s];
+        }
         for (const auto& [big_j, wj] : forward[static_cast<std::size_t>(fine.partner[static_cast<std::size_t>(k)])]) {
           int& slot = slot_of[static_cast<std::size_t>(big_j)];
           if (slot < 0) {
@@ -117,7 +121,9 @@ CoarseRows coarse_block_rows(const BlockRows& fine, const Links& forward, const 
           }
           std::array<double, 9>& out = vals[static_cast<std::size_t>(slot)];
           for (int r = 0; r < 3; ++r) {
-            for (int s = 0; s < 3; ++s) out[static_cast<std::size_t>(3 * r + s)] += wi[r] * block[3 * r + s] * wj[s];
+            for (int s = 0; s < 3; ++s) {
+              out[static_cast<std::size_t>(3 * r + s)] += left[static_cast<std::size_t>(3 * r + s)] * wj[s];
+            }
           }
         }
       }

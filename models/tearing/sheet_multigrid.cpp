@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "models/core/base/error.h"
 #include "models/core/config/fields.h"
+#include "models/tearing/block_transfer.h"
 #include "models/tearing/galerkin_product.h"
 
 namespace repose {
@@ -58,9 +60,9 @@ Eigen::VectorXd inverse_l1_rows(const Eigen::SparseMatrix<double>& a) {
 
 struct SheetMultigrid::Level {
   Eigen::SparseMatrix<double> interpolation;  // finer x this level's unknowns
-  Eigen::SparseMatrix<double> restriction;    // its transpose
-  // the same two between the finer level's block vectors and this one's
-  Eigen::SparseMatrix<double> block_interpolation, block_restriction;
+  Eigen::SparseMatrix<double> restriction;    // its transpose (l1-Jacobi only)
+  // the same between the finer level's block vectors and this one's
+  BlockTransfer transfer;
   Eigen::SparseMatrix<double> matrix;         // P^T A_finer P
   VertexBlockMatrix blocks;                   // matrix in float 3 x 3 blocks (Gauss-Seidel)
   Eigen::VectorXd inverse_l1;                 // inverse_l1_rows(matrix) (l1-Jacobi only)
@@ -109,25 +111,23 @@ double coupling(const Eigen::SparseMatrix<double>& a, const Grid& grid, int u, i
   return any ? std::max(0.0, sum) : -1.0;
 }
 
-// The neighbours' stencils (neighbour vertex, its stencil) mixed by the
-// coupling of `vertex` to each; a held neighbour pulls as hard as the
-// others on average; empty when nothing couples (a vertex left alone by
-// tears: its mass only, which the smoother handles).
-Stencil mixed_stencil(const Eigen::SparseMatrix<double>& a, const Grid& fine, int vertex,
-                      const std::vector<std::pair<int, Stencil>>& neighbours) {
+// The neighbours' stencils (coupling of `vertex` to the neighbour, its
+// stencil) mixed by those couplings; a held neighbour (coupling -1) pulls
+// as hard as the others on average; empty when nothing couples (a vertex
+// left alone by tears: its mass only, which the smoother handles).
+Stencil mixed_stencil(std::initializer_list<std::pair<double, const Stencil*>> neighbours) {
   double known = 0.0;
   int known_count = 0;
-  std::vector<double> strength;
   for (const auto& neighbour : neighbours) {
-    strength.push_back(coupling(a, fine, vertex, neighbour.first));
-    if (strength.back() >= 0.0) known += strength.back(), ++known_count;
+    if (neighbour.first >= 0.0) known += neighbour.first, ++known_count;
   }
   double total = 0.0;
   Stencil mixed;
-  for (std::size_t n = 0; n < neighbours.size(); ++n) {
-    const double w = strength[n] >= 0.0 ? strength[n] : (known_count > 0 ? known / known_count : 1.0);
+  mixed.reserve(8);  // at most four neighbours of two entries
+  for (const auto& [strength, stencil] : neighbours) {
+    const double w = strength >= 0.0 ? strength : (known_count > 0 ? known / known_count : 1.0);
     total += w;
-    for (const auto& [col, weight] : neighbours[n].second) mixed.emplace_back(col, w * weight);
+    for (const auto& [col, weight] : *stencil) mixed.emplace_back(col, w * weight);
   }
   if (!(total > 0.0)) return {};
   for (auto& entry : mixed) entry.second /= total;
@@ -153,9 +153,15 @@ std::vector<Stencil> coarse_stencils(const Grid& fine, const Eigen::SparseMatrix
         const LineWeights wx = line_weights(nx, i);
         const bool between_x = wx.second >= 0, between_y = wy.second >= 0;
         if ((between_x && between_y) != (pass == 1)) continue;
+        const int v = j * nx + i;
+        if (row_of(i, j, 0) < 0 && row_of(i, j, 1) < 0 && row_of(i, j, 2) < 0) continue;
+        // the vertex's couplings to its neighbours, once for its three axes
+        const double left = between_x ? coupling(a, fine, v, v - 1) : 0.0;
+        const double right = between_x ? coupling(a, fine, v, v + 1) : 0.0;
+        const double down = between_y ? coupling(a, fine, v, v - nx) : 0.0;
+        const double up = between_y ? coupling(a, fine, v, v + nx) : 0.0;
         for (int axis = 0; axis < 3; ++axis) {
           if (row_of(i, j, axis) < 0) continue;
-          const int v = j * nx + i;
           Stencil& stencil = stencils[static_cast<std::size_t>(3 * v + axis)];
           const auto coarse_node = [&](int ci, int cj) {
             return Stencil{{3 * (cj * coarse_vertices_x + ci) + axis, 1.0}};
@@ -163,15 +169,14 @@ std::vector<Stencil> coarse_stencils(const Grid& fine, const Eigen::SparseMatrix
           if (!between_x && !between_y) {
             stencil = coarse_node(wx.first, wy.first);
           } else if (between_x && !between_y) {
-            stencil = mixed_stencil(a, fine, v, {{v - 1, coarse_node(wx.first, wy.first)},
-                                                 {v + 1, coarse_node(wx.second, wy.first)}});
+            const Stencil first = coarse_node(wx.first, wy.first), second = coarse_node(wx.second, wy.first);
+            stencil = mixed_stencil({{left, &first}, {right, &second}});
           } else if (!between_x) {
-            stencil = mixed_stencil(a, fine, v, {{v - nx, coarse_node(wx.first, wy.first)},
-                                                 {v + nx, coarse_node(wx.first, wy.second)}});
+            const Stencil first = coarse_node(wx.first, wy.first), second = coarse_node(wx.first, wy.second);
+            stencil = mixed_stencil({{down, &first}, {up, &second}});
           } else {
-            const auto edge = [&](int u) { return stencils[static_cast<std::size_t>(3 * u + axis)]; };
-            stencil = mixed_stencil(a, fine, v, {{v - 1, edge(v - 1)}, {v + 1, edge(v + 1)},
-                                                 {v - nx, edge(v - nx)}, {v + nx, edge(v + nx)}});
+            const auto edge = [&](int u) { return &stencils[static_cast<std::size_t>(3 * u + axis)]; };
+            stencil = mixed_stencil({{left, edge(v - 1)}, {right, edge(v + 1)}, {down, edge(v - nx)}, {up, edge(v + nx)}});
           }
         }
       }
@@ -212,24 +217,6 @@ std::pair<Eigen::SparseMatrix<double>, Grid> interpolation_from_coarse(const Gri
   return {std::move(p), std::move(coarse)};
 }
 
-// p (finer rows x coarse rows) between the two levels' block vectors.
-Eigen::SparseMatrix<double> between_blocks(const Eigen::SparseMatrix<double>& p, const VertexBlockMatrix& finer,
-                                           const VertexBlockMatrix& coarse) {
-  const std::vector<int> row_place = finer.block_place_of_rows(), col_place = coarse.block_place_of_rows();
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(static_cast<std::size_t>(p.nonZeros()));
-  for (int c = 0; c < p.outerSize(); ++c) {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(p, c); it; ++it) {
-      triplets.emplace_back(row_place[static_cast<std::size_t>(it.row())], col_place[static_cast<std::size_t>(c)],
-                            it.value());
-    }
-  }
-  Eigen::SparseMatrix<double> blocks(3 * finer.block_rows(), 3 * coarse.block_rows());
-  blocks.setFromTriplets(triplets.begin(), triplets.end());
-  blocks.makeCompressed();
-  return blocks;
-}
-
 }  // namespace
 
 void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
@@ -249,13 +236,13 @@ void SheetMultigrid::rebuild(const Eigen::SparseMatrix<double>& system) {
   while (grid.count > options_.coarsest_unknowns && (grid.vertices_x > 2 || grid.vertices_y > 2)) {
     auto level = std::make_unique<Level>();
     std::tie(level->interpolation, level->grid) = interpolation_from_coarse(grid, *matrix);
-    level->restriction = level->interpolation.transpose();
+    if (l1_jacobi) level->restriction = level->interpolation.transpose();
     level->matrix = galerkin_product(*matrix, level->interpolation, grid.index, level->grid.index);
     level->blocks = VertexBlockMatrix(level->matrix, level->grid.index);
     if (l1_jacobi) level->inverse_l1 = inverse_l1_rows(level->matrix);
     const VertexBlockMatrix& finer = levels_.empty() ? fine_blocks_ : levels_.back()->blocks;
-    level->block_interpolation = between_blocks(level->interpolation, finer, level->blocks);
-    level->block_restriction = level->block_interpolation.transpose();
+    level->transfer = BlockTransfer(level->interpolation, finer.block_place_of_rows(), level->blocks.block_place_of_rows(),
+                                    finer.block_rows(), level->blocks.block_rows());
     grid = level->grid;
     levels_.push_back(std::move(level));
     matrix = &levels_.back()->matrix;
@@ -312,9 +299,9 @@ void SheetMultigrid::cycle_blocks(std::size_t level, const Eigen::VectorXd& b, E
     for (int s = 0; s < sweeps; ++s) blocks.gauss_seidel_sweep(b, true, s == 0, x);
     blocks.residual(b, *x, &work.residual);
   }
-  work.coarse_b.noalias() = coarse.block_restriction * work.residual;
+  coarse.transfer.restrict_to(work.residual, &work.coarse_b);
   cycle_blocks(level + 1, work.coarse_b, &work.coarse_x, nullptr);
-  x->noalias() += coarse.block_interpolation * work.coarse_x;
+  coarse.transfer.add_interpolated(work.coarse_x, x);
   for (int s = 0; s + 1 < sweeps; ++s) blocks.gauss_seidel_sweep(b, false, false, x);
   if (ax) {
     blocks.backward_sweep_with_product(b, x, ax);
@@ -362,15 +349,9 @@ void SheetMultigrid::cycle_in_float(std::size_t level, const Eigen::VectorXd& b,
   w.x.resize(size);
   w.float_residual.resize(size);
   blocks.sweep_from_zero_with_residual(w.b.data(), w.x.data(), w.float_residual.data());
-  to_double(w.float_residual, b.size(), &w.residual);
-  w.coarse_b.noalias() = coarse.block_restriction * w.residual;
+  coarse.transfer.restrict_to(w.float_residual.data(), &w.coarse_b);
   cycle_blocks(level + 1, w.coarse_b, &w.coarse_x, nullptr);
-  w.residual.noalias() = coarse.block_interpolation * w.coarse_x;  // the correction
-  float* xf = w.x.data();
-  const double* correction = w.residual.data();
-  for (Eigen::Index v = 0; v < b.size() / 3; ++v, xf += 4, correction += 3) {
-    for (int p = 0; p < 3; ++p) xf[p] += static_cast<float>(correction[p]);
-  }
+  coarse.transfer.add_interpolated(w.coarse_x, w.x.data());
   if (ax) w.ax.resize(size);
   blocks.backward_sweep_with_product(w.b.data(), w.x.data(), ax ? w.ax.data() : nullptr);
   to_double(w.x, b.size(), x);

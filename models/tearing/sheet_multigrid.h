@@ -34,7 +34,8 @@
 // so that memory is read in one direction (tearing_benchmark: 24 ms a
 // fine-level backward sweep otherwise, 3.6 ms so). apply_blocks runs the
 // cycle in block vectors throughout (interpolation between the levels'
-// block vectors, workspaces kept), and its passes are fused: the sweep
+// block vectors by block_transfer.h, which reads and writes the float
+// sweeps' vectors directly; workspaces kept), and its passes are fused: the sweep
 // from zero scatters its residual from the lower blocks it reads (A_ji =
 // A_ij^T), and the fine level's last backward sweep scatters A z from its
 // upper blocks, the product conjugate gradients need (1.5 reads of the

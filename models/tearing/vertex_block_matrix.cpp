@@ -102,35 +102,48 @@ void VertexBlockMatrix::split_blocks(std::vector<std::vector<int>>* columns,
   REPOSE_DEMAND(named == identity.size());  // every pair named is coupled in the pattern
 }
 
-int VertexBlockMatrix::source_of(const Eigen::SparseMatrix<double>& a, int i, int j, int p, int q) const {
-  const int col = row_of_[static_cast<std::size_t>(3 * j + q)], row = row_of_[static_cast<std::size_t>(3 * i + p)];
-  if (col < 0 || row < 0) return -1;
-  const int* begin = a.innerIndexPtr() + a.outerIndexPtr()[col];
-  const int* end = a.innerIndexPtr() + a.outerIndexPtr()[col + 1];
-  const int* found = std::lower_bound(begin, end, row);
-  return found != end && *found == row ? static_cast<int>(found - a.innerIndexPtr()) : -1;
-}
-
 // Where each entry (p, q) of block (i, j) lies in a (source_,
-// identity_source_).
+// identity_source_): a's column row_of_(j, q) holds rows row_of_(i, p) for
+// the blocks (i, j) of block column j, which are the blocks (j, i) of block
+// row j (the pattern symmetric), i ascending: one walk down each column,
+// each block row's blocks met in column order (a cursor per row and list).
 void VertexBlockMatrix::find_sources(const Eigen::SparseMatrix<double>& a) {
   const int rows = block_rows();
   source_.assign(9 * column_.size(), -1);
   identity_source_.assign(9 * identity_column_.size(), -1);
-  for (int i = 0; i < rows; ++i) {
-    for (int k = outer_[static_cast<std::size_t>(i)]; k < outer_[static_cast<std::size_t>(i) + 1]; ++k) {
-      for (int e = 0; e < 9; ++e) {
-        source_[static_cast<std::size_t>(9 * k + e)] = source_of(a, i, column_[static_cast<std::size_t>(k)], e / 3, e % 3);
-      }
+  std::vector<int> full_at(outer_.begin(), outer_.end() - 1), identity_at(identity_outer_.begin(), identity_outer_.end() - 1);
+  std::vector<std::pair<int, int*>> column_blocks;  // per block (i, j) of column j: i, its 9 sources
+  for (int j = 0; j < rows; ++j) {
+    column_blocks.clear();
+    for (int k = outer_[static_cast<std::size_t>(j)]; k < outer_[static_cast<std::size_t>(j) + 1]; ++k) {
+      const int i = column_[static_cast<std::size_t>(k)];
+      const int at = full_at[static_cast<std::size_t>(i)]++;
+      REPOSE_DEMAND(column_[static_cast<std::size_t>(at)] == j);  // a symmetric pattern
+      column_blocks.emplace_back(i, source_.data() + 9 * static_cast<std::ptrdiff_t>(at));
     }
-    for (int k = identity_outer_[static_cast<std::size_t>(i)]; k < identity_outer_[static_cast<std::size_t>(i) + 1]; ++k) {
-      for (int e = 0; e < 9; ++e) {
-        const int at = source_of(a, i, identity_column_[static_cast<std::size_t>(k)], e / 3, e % 3);
-        REPOSE_DEMAND(at >= 0);  // free in every axis
-        identity_source_[static_cast<std::size_t>(9 * k + e)] = at;
+    for (int k = identity_outer_[static_cast<std::size_t>(j)]; k < identity_outer_[static_cast<std::size_t>(j) + 1]; ++k) {
+      const int i = identity_column_[static_cast<std::size_t>(k)];
+      const int at = identity_at[static_cast<std::size_t>(i)]++;
+      REPOSE_DEMAND(identity_column_[static_cast<std::size_t>(at)] == j);
+      column_blocks.emplace_back(i, identity_source_.data() + 9 * static_cast<std::ptrdiff_t>(at));
+    }
+    std::sort(column_blocks.begin(), column_blocks.end());
+    for (int q = 0; q < 3; ++q) {
+      const int col = row_of_[static_cast<std::size_t>(3 * j + q)];
+      if (col < 0) continue;
+      const int* at = a.innerIndexPtr() + a.outerIndexPtr()[col];
+      const int* end = a.innerIndexPtr() + a.outerIndexPtr()[col + 1];
+      for (const auto& [i, sources] : column_blocks) {
+        for (int p = 0; p < 3; ++p) {
+          const int row = row_of_[static_cast<std::size_t>(3 * i + p)];
+          if (row < 0) continue;
+          while (at != end && *at < row) ++at;
+          if (at != end && *at == row) sources[3 * p + q] = static_cast<int>(at - a.innerIndexPtr());
+        }
       }
     }
   }
+  for (const int source : identity_source_) REPOSE_DEMAND(source >= 0);  // free in every axis
 }
 
 bool VertexBlockMatrix::has_pattern_of(const Eigen::SparseMatrix<double>& a) const {

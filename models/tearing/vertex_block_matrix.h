@@ -145,8 +145,6 @@ class VertexBlockMatrix {
   void add_transposed_part(int i, bool upper, const double v[3], double scale, double* y) const;
   void split_blocks(std::vector<std::vector<int>>* columns, const std::vector<std::pair<int, int>>& identity);
   void find_sources(const Eigen::SparseMatrix<double>& a);
-  // where entry (p, q) of block (i, j) lies in a's values, or -1
-  int source_of(const Eigen::SparseMatrix<double>& a, int i, int j, int p, int q) const;
   const float* scalars() const { return values_.data() + source_.size(); }
 
   int scalar_rows_ = 0;          // a's rows

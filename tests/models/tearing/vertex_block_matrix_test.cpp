@@ -116,6 +116,40 @@ TEST(VertexBlockMatrix, ABackwardSweepWithItsProductEqualsTheSweepThenTheProduct
   EXPECT_EQ(ax[3], 0.0);
 }
 
+// Block (i, j)'s entry (p, q) is a's entry in row (i, p) and column (j, q),
+// not its mirror: values made unsymmetric (the pattern kept) tell them
+// apart; scalar blocks and held axes included.
+TEST(VertexBlockMatrix, ItsBlocksHoldTheEntriesOfTheirRowsAndColumns) {
+  const BlockSystem s = block_system(14, 30.0, 51, true);
+  Eigen::SparseMatrix<double> a = s.matrix;
+  for (int c = 0; c < a.outerSize(); ++c) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(a, c); it; ++it) it.valueRef() += 1e-3 * (it.row() - 2 * c);
+  }
+  const VertexBlockMatrix pattern(a, s.index, false, s.identity_pairs);
+  VertexBlockMatrix blocks(a, s.index);  // no scalar blocks: a's are not k I now
+  blocks.refresh(a);
+  const std::vector<int> place = blocks.block_place_of_rows();
+  std::vector<int> row_at(3 * static_cast<std::size_t>(blocks.block_rows()), -1);
+  for (int r = 0; r < a.rows(); ++r) row_at[static_cast<std::size_t>(place[static_cast<std::size_t>(r)])] = r;
+  int checked = 0;
+  for (int i = 0; i < blocks.block_rows(); ++i) {
+    for (int j = 0; j < blocks.block_rows(); ++j) {
+      const int k = blocks.find_block(i, j);
+      if (k < 0) continue;
+      for (int e = 0; e < 9; ++e) {
+        const int row = row_at[static_cast<std::size_t>(3 * i + e / 3)], col = row_at[static_cast<std::size_t>(3 * j + e % 3)];
+        const double expected = row < 0 || col < 0 ? 0.0 : a.coeff(row, col);
+        EXPECT_EQ(blocks.values()[9 * k + e], static_cast<float>(expected)) << i << " " << j << " " << e;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 9 * static_cast<int>(blocks.block_count()));
+  // the pattern-only copy with scalar blocks finds them all, none full
+  EXPECT_GT(pattern.scalar_count(), 0u);
+  EXPECT_EQ(pattern.block_count() + pattern.scalar_count(), blocks.block_count());
+}
+
 TEST(VertexBlockMatrix, ARefreshFollowsNewValuesOfThePattern) {
   const BlockSystem s = block_system(10, 5.0, 8);
   VertexBlockMatrix blocks(s.matrix, s.index);
