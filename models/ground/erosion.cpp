@@ -63,21 +63,23 @@ void scale_groups(std::vector<Flux>* fluxes, std::vector<std::pair<std::int64_t,
 // Never above an object: scales the inflow of each capped cell (one under
 // an object) down to its room. `inflow` is per cell, all 0 between calls:
 // each capped cell's inflow is summed there in flux order (as a group of
-// the cell's fluxes would be), read, and cleared again, so a pass costs
-// what flows, not the grid's size, and sorts nothing.
-void cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<double>* inflow) {
+// the cell's fluxes would be) and read; apply_fluxes clears it again (one
+// loop over the fluxes fewer), so a pass costs what flows, not the grid's
+// size, and sorts nothing. Returns whether any flux is capped (ends under
+// an object): when none is, nothing was summed and there is nothing to clear.
+bool cap_inflow(const double* h, std::vector<Flux>* fluxes, std::vector<double>* inflow) {
   std::vector<double>& in = *inflow;
+  bool any = false;
   for (const Flux& f : *fluxes) {
-    if (std::isfinite(f.ceiling_m)) in[static_cast<std::size_t>(f.to)] += f.amount;
+    if (std::isfinite(f.ceiling_m)) in[static_cast<std::size_t>(f.to)] += f.amount, any = true;
   }
+  if (!any) return false;
   for (Flux& f : *fluxes) {
     if (!std::isfinite(f.ceiling_m)) continue;
     const double total = in[static_cast<std::size_t>(f.to)], allowed = std::max(0.0, f.ceiling_m - h[f.to]);
     if (total > allowed) f.amount *= allowed / total;
   }
-  for (const Flux& f : *fluxes) {
-    if (std::isfinite(f.ceiling_m)) in[static_cast<std::size_t>(f.to)] = 0.0;
-  }
+  return true;
 }
 
 // The state's per-cell inflow scratch (all 0), sized to the grid.
@@ -87,29 +89,31 @@ std::vector<double>& inflow_scratch(const Grid& g, GroundState* state) {
   return inflow;
 }
 
-// Inclined bed (erosion.h): per material, the height differences a pair
-// may have. Along x, d = h(i+1) - h(i) in [lo, hi]; along y, |d| <= across.
-// Moves each flux's material and then remembers both cells of every move
-// (all moves first: touching cells changes nothing the moves read). The
-// inclined rule floors a drained cell at the base, so a cell emptied to
-// round-off ends at 0, not 1 ulp below it. Returns the moves made.
+// Moves each flux's material and remembers both cells of every move, in
+// flux order (touching cells changes nothing the moves read, so one loop
+// does both). The inclined rule floors a drained cell at the base, so a
+// cell emptied to round-off ends at 0, not 1 ulp below it. `inflow` given
+// (cap_inflow summed into it): each capped flux's entry is cleared back to
+// 0 on the way. Returns the moves made.
 enum class FloorAtZero { kNo, kYes };
-long long apply_fluxes(const std::vector<Flux>& fluxes, FloorAtZero floor, double* h, ErosionMemory* memory) {
+long long apply_fluxes(const std::vector<Flux>& fluxes, FloorAtZero floor, double* h, ErosionMemory* memory,
+                       std::vector<double>* inflow) {
   long long moves = 0;
+  double* in = inflow == nullptr ? nullptr : inflow->data();
   for (const Flux& f : fluxes) {
+    if (in != nullptr && std::isfinite(f.ceiling_m)) in[f.to] = 0.0;
     if (!(f.amount > 0.0)) continue;
     h[f.from] = floor == FloorAtZero::kYes ? std::max(0.0, h[f.from] - f.amount) : h[f.from] - f.amount;
     h[f.to] += f.amount;
     ++moves;
-  }
-  for (const Flux& f : fluxes) {
-    if (!(f.amount > 0.0)) continue;
     memory->touch(f.from);
     memory->touch(f.to);
   }
   return moves;
 }
 
+// Inclined bed (erosion.h): per material, the height differences a pair
+// may have. Along x, d = h(i+1) - h(i) in [lo, hi]; along y, |d| <= across.
 struct InclinedRule {
   double lo_m, hi_m, across_m;
   double sigma;
@@ -194,8 +198,8 @@ ErosionResult erode_inclined(const GroundModel& model, const GroundParams& param
     if (fluxes.empty()) break;
     result.passes = p + 1;
     cap_outflow(h, &fluxes, &scratch);
-    cap_inflow(h, &fluxes, &inflow);
-    result.moves += apply_fluxes(fluxes, FloorAtZero::kYes, h, &memory);
+    const bool capped = cap_inflow(h, &fluxes, &inflow);
+    result.moves += apply_fluxes(fluxes, FloorAtZero::kYes, h, &memory, capped ? &inflow : nullptr);
   }
   return result;
 }
@@ -370,9 +374,8 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
     if (fluxes.empty()) break;
     result.passes = p + 1;
 
-    cap_inflow(h, &fluxes, &inflow);
-
-    result.moves += apply_fluxes(fluxes, FloorAtZero::kNo, h, &memory);
+    const bool capped = cap_inflow(h, &fluxes, &inflow);
+    result.moves += apply_fluxes(fluxes, FloorAtZero::kNo, h, &memory, capped ? &inflow : nullptr);
   }
   return result;
 }

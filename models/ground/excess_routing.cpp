@@ -188,9 +188,9 @@ Shed shed_of(const ExcessRouting& in, const Rings& rings, std::int64_t c, int i,
   if (!(mine > 0.0)) return s;
   double lowest = std::numeric_limits<double>::infinity();
   // tiers: ahead along a drag; not backwards; any way out (excess_routing.h)
-  for (const int tier : {0, 1, 2}) {
-    for (std::size_t m = 0; m < kNeighbours.size(); ++m) {
-      if (!in.tier_allows[static_cast<std::size_t>(tier)][m]) continue;
+  for (std::size_t tier = 0; tier < 3; ++tier) {
+    for (int q = 0; q < in.tier_dir_count[tier]; ++q) {
+      const std::size_t m = static_cast<std::size_t>(in.tier_dirs[tier][static_cast<std::size_t>(q)]);
       const int ni = i + kNeighbours[m][0], nj = j + kNeighbours[m][1];
       const bool inside = g.contains(ni, nj);
       if (inside && !onward(rings, i, j, k, ni, nj)) continue;
@@ -334,6 +334,11 @@ void route_excess(ExcessRouting in, Received* received, GroundState* state) {
     in.tier_allows[0][m] = !(in.dir.active && !in.dir.forward(oi, oj)) && !in.dir.backward(oi, oj);
     in.tier_allows[1][m] = !in.dir.backward(oi, oj);
     in.tier_allows[2][m] = true;
+  }
+  for (std::size_t t = 0; t < in.tier_allows.size(); ++t) {
+    for (std::size_t m = 0; m < kNeighbours.size(); ++m) {
+      if (in.tier_allows[t][m]) in.tier_dirs[t][static_cast<std::size_t>(in.tier_dir_count[t]++)] = static_cast<int>(m);
+    }
   }
   move_under_objects(in, received, state);
   heap_on_open_ground(in, received, state);

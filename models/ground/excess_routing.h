@@ -74,6 +74,9 @@ struct ExcessRouting {
   // Whether a cell on open ground may shed towards kNeighbours[m] in tier t
   // (0: ahead along a drag; 1: not backwards; 2: any way), found once.
   std::array<std::array<bool, 4>, 3> tier_allows{};
+  // The same as lists: tier t allows kNeighbours[tier_dirs[t][0 .. tier_dir_count[t])].
+  std::array<std::array<int, 4>, 3> tier_dirs{};
+  std::array<int, 3> tier_dir_count{};
   // How high the cell may stand before its material must move on: the
   // ceiling under an object (the base where that is lower), the crest in a
   // pocket, +inf on open ground.

@@ -22,7 +22,7 @@ namespace repose {
 // doubles when a ring reaches its edge.
 class Rings {
  public:
-  explicit Rings(const ExcessRouting& in) : in_(in), window_(in.region.fp) {
+  explicit Rings(const ExcessRouting& in) : in_(in), window_(in.region.fp), covered_(covering_box(in)) {
     resize_window(16);
     const Footprint& fp = in.region.fp;
     rings_.emplace_back();
@@ -114,7 +114,7 @@ class Rings {
         const int ni = i + o[0], nj = j + o[1];
         // a cell already in a ring needs no second look (on_open_ground is the costly part)
         if (!g.contains(ni, nj) || of(ni, nj) != -1) continue;
-        if (in_.on_open_ground(ni, nj)) add(k, ni, nj);
+        if (!covered_.contains(ni, nj) || in_.on_open_ground(ni, nj)) add(k, ni, nj);
       }
     }
     // by away(), then index: the keys found once, not in every comparison
@@ -130,8 +130,27 @@ class Rings {
       by_rank_.push_back(keyed[m]);
     }
   }
+  // The box around every underside's footprint and the pockets' window:
+  // beyond it no cell is covered and none is a pocket, so every cell is on
+  // open ground (ExcessRouting::limit_at: +inf there) without asking.
+  static Footprint covering_box(const ExcessRouting& in) {
+    Footprint box = in.window;
+    for (const Underside& u : in.ceiling.undersides) {
+      if (u.empty()) continue;
+      if (box.empty()) {
+        box = u.footprint;
+        continue;
+      }
+      const int i1 = std::max(box.i0 + box.ni, u.footprint.i0 + u.footprint.ni);
+      const int j1 = std::max(box.j0 + box.nj, u.footprint.j0 + u.footprint.nj);
+      box.i0 = std::min(box.i0, u.footprint.i0), box.j0 = std::min(box.j0, u.footprint.j0);
+      box.ni = i1 - box.i0, box.nj = j1 - box.j0;
+    }
+    return box;
+  }
   const ExcessRouting& in_;
   Footprint window_;
+  Footprint covered_;
   int margin_ = 0;
   std::vector<std::vector<std::array<int, 2>>> rings_;  // the cells (i, j) of each ring
   std::vector<int> ring_of_;  // over window_; -1: not reached
