@@ -54,7 +54,7 @@ struct EnergyLedger {
   double fracture_j = 0.0;   // SheetState::torn_energy_j
   double softening_j = 0.0;  // SheetState::softening_energy_j, a part of fracture_j (tear_rule cohesive)
   double torn_twist_j = 0.0;  // SheetState::torn_twist_energy_j
-  double torn_bending_j = 0.0;  // SheetState::torn_bending_energy_j (release_time_s > 0 only)
+  double torn_bending_j = 0.0;  // SheetState::torn_bending_energy_j
   double residual_j = 0.0;
 };
 
