@@ -28,16 +28,20 @@
 // when the leading spring reaches e_f, s = 0 and the cell holds nothing:
 // the tear releases no stored energy, everything the cell gave up was
 // dissipated along the law. Why the whole cell: with springs softening
-// each on its own (session 17), only the springs past their peak softened;
-// the others (the diagonals at about half the edges' strain, the
-// compressed ones) still held their elastic energy when the cell went,
-// released in one step, and it grew per unit tear length as the mesh was
-// refined (0.0088 -> 0.0196 J/m from 100 to 200 cells, the law's own
-// softening +3 %; experiments/tearing_convergence_cohesive.yaml), the
-// fracture energy with it (+18 %). With the cell damaged as one, a band of
-// cells opened in uniaxial stress (cell energy 1/2 E t h^2 e^2 per cell)
-// dissipates exactly 1/2 E t h^2 e_p e_f per cell, Gamma per unit length
-// below, on every mesh (cohesive_law_test.cpp).
+// each on its own (session 17), only the springs past their peak softened
+// (in the tear, the one edge at the crack tip's side: 4.1 % when it went,
+// the opposite edge 0.08 %); the others, the diagonals above all (median
+// strain 0.25 %, 88 % of it), still held their elastic energy when the
+// cell went, released in one step, about the same per cell on every mesh,
+// so growing per unit tear length as the mesh was refined (0.0088 ->
+// 0.0196 J/m from 100 to 200 cells, the law's own softening +3 %;
+// experiments/tearing_convergence_cohesive.yaml), the fracture energy
+// with it (+18 %); a band pulled in uniaxial stress dissipated 1.27,
+// 1.35, 1.56 times Gamma at 1, 0.5, 0.25 mm cells (the default 40 um
+// opening; 1.25, 1.70, 2.16 times with a 1 um one). With the cell damaged
+// as one, a band of cells opened in uniaxial stress (cell energy
+// 1/2 E t h^2 e^2 per cell) dissipates exactly 1/2 E t h^2 e_p e_f per
+// cell, Gamma per unit length below, on every mesh (cohesive_law_test.cpp).
 //
 // The parameters (cohesive_law below): the peak is a strength, a strain
 // fixed for every mesh, SheetParams::tear_strain (the seed's limit), and
