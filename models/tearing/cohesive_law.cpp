@@ -7,10 +7,14 @@
 
 namespace repose {
 
-double CohesiveLaw::secant_factor(double strain, double max_strain) const {
-  if (strain <= 0.0 || max_strain <= peak_strain) return 1.0;
+double CohesiveLaw::damage_factor(double max_strain) const {
+  if (max_strain <= peak_strain) return 1.0;
   if (max_strain >= zero_strain) return 0.0;
   return (peak_strain / max_strain) * (zero_strain - max_strain) / (zero_strain - peak_strain);
+}
+
+double CohesiveLaw::secant_factor(double strain, double max_strain) const {
+  return strain <= 0.0 ? 1.0 : damage_factor(max_strain);
 }
 
 double CohesiveLaw::force_n(double k_n_per_m, double rest_length_m, double strain, double max_strain) const {

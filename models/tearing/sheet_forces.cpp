@@ -96,47 +96,58 @@ CellStretch stretch_of(const std::array<CellSpring, 6>& springs, const Eigen::Ma
   return s;
 }
 
-// Under tear_rule cohesive (cohesive_law.h), the laws of one cell's springs:
-// the sheet's law times the cell's tear factor, each spring's limits as
-// stretch_of takes them.
+// Under tear_rule cohesive (cohesive_law.h), the law of one cell: the
+// sheet's law times the cell's tear factor, and each spring's limits as
+// stretch_of takes them (that law times scale[q]).
 struct CellLaws {
-  std::array<CohesiveLaw, 6> spring;
+  CohesiveLaw cell;
+  std::array<double, 6> scale{};
 };
 
 CellLaws cell_laws(const CohesiveLaw& sheet_law, const SheetModel& model, const std::array<CellSpring, 6>& springs,
                    int c, const SpringConstants* isotropic) {
-  const CohesiveLaw cell = sheet_law.scaled(model.cell_tear_factor[c]);
-  CellLaws laws;
-  for (int q = 0; q < 6; ++q) {
-    laws.spring[q] = {spring_limit_of(cell.peak_strain, springs[q], isotropic),
-                      spring_limit_of(cell.zero_strain, springs[q], isotropic)};
-  }
+  CellLaws laws{sheet_law.scaled(model.cell_tear_factor[c]), {}};
+  for (int q = 0; q < 6; ++q) laws.scale[q] = spring_limit_of(1.0, springs[q], isotropic);
   return laws;
 }
 
-// The fraction of its linear force each spring of a cell pulls with
-// (CohesiveLaw::secant_factor at the largest strains `reached`, 6 values).
+// The cell's damage strain: the largest of its springs' largest strains
+// (`reached`, 6 values), each on the cell law's scale.
+double cell_reached(const CellLaws& laws, const double* reached) {
+  double m = 0.0;
+  for (int q = 0; q < 6; ++q) m = std::max(m, reached[q] / laws.scale[q]);
+  return m;
+}
+
+// The fraction of its linear force each spring of a cell pulls with: the
+// cell's damage factor (CohesiveLaw::damage_factor at cell_reached), the
+// same for all six (cohesive_law.h: the cell softens as one).
 using SpringFactors = std::array<double, 6>;
-SpringFactors secant_factors(const std::array<CellSpring, 6>& springs, const CellStretch& s, const CellLaws& laws,
-                             const double* reached) {
+SpringFactors secant_factors(const CellLaws& laws, const double* reached) {
   SpringFactors f;
-  for (int q = 0; q < 6; ++q) {
-    f[q] = laws.spring[q].secant_factor(s.length[q] / springs[q].rest_length_m - 1.0, reached[q]);
-  }
+  f.fill(laws.cell.damage_factor(cell_reached(laws, reached)));
   return f;
 }
 
 // Raises each spring's largest strain (`reached`, 6 values) to its strain
-// now where that passes its peak; returns the energy dissipated (J).
+// now where that passes its peak; returns the energy dissipated (J): the
+// drop of the cell's damage factor times the linear energy its six
+// springs hold now (the stored energy the damage takes, at these
+// positions; cohesive_law.h).
 double soften_cell(const std::array<CellSpring, 6>& springs, const CellStretch& s, const CellLaws& laws,
                    const SpringConstants& k, double weight, double* reached) {
-  double dissipated = 0.0;
+  if (laws.cell.zero_strain <= laws.cell.peak_strain) return 0.0;  // the snap: no softening
+  const double before = laws.cell.damage_factor(cell_reached(laws, reached));
+  double linear_energy = 0.0;
   for (int q = 0; q < 6; ++q) {
-    const double strain = s.length[q] / springs[q].rest_length_m - 1.0;
-    dissipated += laws.spring[q].soften(spring_constant_n_per_m(k, springs[q], weight), springs[q].rest_length_m,
-                                        strain, &reached[q]);
+    const double stretch = s.length[q] - springs[q].rest_length_m;
+    const double strain = stretch / springs[q].rest_length_m;
+    if (strain > laws.cell.peak_strain * laws.scale[q] && strain > reached[q]) {
+      reached[q] = std::min(strain, laws.cell.zero_strain * laws.scale[q]);
+    }
+    linear_energy += 0.5 * spring_constant_n_per_m(k, springs[q], weight) * stretch * stretch;
   }
-  return dissipated;
+  return (before - laws.cell.damage_factor(cell_reached(laws, reached))) * linear_energy;
 }
 
 // factors: each spring's share of its constant (SpringFactors), or null: all 1.
@@ -223,8 +234,7 @@ const SpringFactors* state_factors(const SheetModel& model, const SheetParams& p
   const SpringConstants k = spring_constants(model, params);
   const CellLaws laws =
       cell_laws(cohesive_law(model, params), model, springs, c, model.spec.isotropic_tear_energy ? &k : nullptr);
-  *storage = secant_factors(springs, stretch_of(springs, state.positions, INFINITY), laws,
-                            state.softening.data() + 6 * static_cast<std::size_t>(c));
+  *storage = secant_factors(laws, state.softening.data() + 6 * static_cast<std::size_t>(c));
   return storage;
 }
 
@@ -254,6 +264,29 @@ bool cell_overstretched(const SheetModel& model, const SheetParams& params, cons
       .over;
 }
 
+namespace {
+
+// The energy (J) at the state's positions of the bending terms that the
+// cells torn at step_number (snapped: hold 1 -> 0) took out: each term's
+// hold with those cells still intact minus its hold now, times its energy.
+double snapped_bending_energy_j(const SheetModel& model, const SpringConstants& k, int step_number,
+                                const SheetState& state) {
+  SheetState before;  // only torn_step and releasing are read by bending_hold
+  before.torn_step = state.torn_step;
+  for (int& s : before.torn_step) {
+    if (s == step_number) s = -1;
+  }
+  before.releasing = state.releasing;
+  double dropped = 0.0;
+  for (const BendingTerm& t : model.bending) {
+    const double lost = bending_hold(t, before) - bending_hold(t, state);
+    if (lost > 0.0) dropped += lost * bending_term_energy_j(k, t, state.positions);
+  }
+  return dropped;
+}
+
+}  // namespace
+
 int tear_and_internal_forces(const SheetModel& model, const SheetParams& params, int step_number, SheetState* state,
                              Eigen::Matrix3Xd* forces) {
   forces->setZero(3, model.vertex_count());
@@ -278,7 +311,7 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
       const double dissipated = soften_cell(springs, s, laws, k, model.cell_stiffness[c], reached);
       state->torn_energy_j += dissipated;
       state->softening_energy_j += dissipated;
-      factor_storage = secant_factors(springs, s, laws, reached);
+      factor_storage = secant_factors(laws, reached);
       factors = &factor_storage;
     }
     if (intact && s.over) {
@@ -300,6 +333,7 @@ int tear_and_internal_forces(const SheetModel& model, const SheetParams& params,
       add_twist_forces(model, k, c, state->hold(c), state->velocities, beta, forces);
     }
   }
+  if (torn > 0 && !gradual) state->torn_bending_energy_j += snapped_bending_energy_j(model, k, step_number, *state);
   add_bending_forces(model, k, *state, state->positions, 1.0, forces);
   if (beta > 0.0) add_bending_forces(model, k, *state, state->velocities, beta, forces);
   return torn;

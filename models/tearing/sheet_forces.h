@@ -77,7 +77,9 @@ void internal_forces(const SheetModel& model, const SheetParams& params, const S
 // a cell before the next is judged changes nothing): cells over their limit
 // are marked torn at step_number; under the seed's snap (release_time_s 0)
 // the energy their springs held is added to state->torn_energy_j (their
-// twist terms' to state->torn_twist_energy_j) and they act no more; with
+// twist terms' to state->torn_twist_energy_j, that of the bending terms
+// they took out, whose edges no intact cell holds any more, to
+// state->torn_bending_energy_j) and they act no more; with
 // release_time_s > 0 they start letting go (SheetState::releasing = 1;
 // cell_release.h fades them and books the energy). The forces of every
 // cell still holding are accumulated, scaled by its hold: elastic, plus

@@ -44,9 +44,10 @@ struct SheetState {
   // (SheetSpec::twist_stiffness; 0 without): lost with the cell, not
   // counted as fracture energy (sheet_model.h).
   double torn_twist_energy_j = 0.0;
-  // The energy (J) the bending terms gave up while their cells were let go
-  // gradually (SheetSpec::release_time_s > 0; 0 under the seed's snap,
-  // whose dropped bending terms the ledger leaves in its residual).
+  // The energy (J) the bending terms held when their cells let go: under
+  // the seed's snap, what each term held at the step its last holding
+  // cell tore (sheet_forces.h); with SheetSpec::release_time_s > 0, what
+  // they gave up as the cells faded (cell_release.h).
   double torn_bending_energy_j = 0.0;
   // The kinetic energy (J) the mass-proportional damping (damping_per_s) has
   // taken from the free vertices, summed over the run; the explicit

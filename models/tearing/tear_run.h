@@ -39,9 +39,10 @@ struct TearRunOptions {
 // Where the grips' work went by the end of a run (J): the sheet starts at
 // rest in its rest shape, so
 //   grip work + gravity's work = stored + kinetic + damping + fracture + torn twist + torn bending + residual,
-// the residual being the integrator's own energy error plus what the ledger
-// does not itemise (bending terms that stop acting when their cells snap,
-// the dashpots of stiffness_damping_s). Kinetic energy and gravity's work
+// the residual being the integrator's own energy error (first order in the
+// step through a softening tear: cohesive_law_test.cpp) plus what the
+// ledger does not itemise (the dashpots of stiffness_damping_s; the
+// bending terms snapped cells take out are torn bending). Kinetic energy and gravity's work
 // are over the free degrees of freedom (the grips move the held ones and
 // carry their weight). damping_j is 0 for the implicit integrator, whose
 // damping then sits in the residual.
@@ -54,7 +55,7 @@ struct EnergyLedger {
   double fracture_j = 0.0;   // SheetState::torn_energy_j
   double softening_j = 0.0;  // SheetState::softening_energy_j, a part of fracture_j (tear_rule cohesive)
   double torn_twist_j = 0.0;  // SheetState::torn_twist_energy_j
-  double torn_bending_j = 0.0;  // SheetState::torn_bending_energy_j (release_time_s > 0 only)
+  double torn_bending_j = 0.0;  // SheetState::torn_bending_energy_j
   double residual_j = 0.0;
 };
 

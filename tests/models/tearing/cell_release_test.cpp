@@ -87,7 +87,7 @@ TEST(CellRelease, AZeroReleaseTimeIsTheSeedsSnapToTheBit) {
   EXPECT_TRUE(run.positions == by_hand.positions);
   EXPECT_TRUE(run.velocities == by_hand.velocities);
   for (const double r : run.releasing) EXPECT_EQ(r, 0.0);
-  EXPECT_EQ(run.torn_bending_energy_j, 0.0);
+  EXPECT_GT(run.torn_bending_energy_j, 0.0);  // the snap books the bending terms it takes out (sheet_forces.h)
 }
 
 // A torn cell holds all of its springs on the step it tears, then a share
@@ -128,8 +128,7 @@ TEST(CellRelease, ATornCellFadesLinearlyAndIsFullyReleasedAfterTheReleaseTime) {
 }
 
 // Through a whole tear, the energy the fading cells give up is booked, and
-// the grips' work is accounted for within 1 % (the seed's snap leaves its
-// dropped bending terms in the residual: tear_run_test.cpp allows 2 %), for
+// the grips' work is accounted for within 1 %, for
 // a fade of a few steps and one of many.
 TEST(CellRelease, TheEnergyLedgerClosesWhileTornCellsFade) {
   const SheetParams params;

@@ -5,6 +5,7 @@
 // the forces against its gradient.
 #include "models/tearing/sheet_forces.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -161,6 +162,36 @@ TEST(SheetForces, AnAffineMapStoresNoTwistEnergy) {
   EXPECT_GT(e.structural_j, 0.0);
   EXPECT_LT(e.twist_j, 1e-20 * e.structural_j);
   EXPECT_LT(e.bending_j, 1e-20 * e.structural_j);
+}
+
+// The seed's snap takes out the bending terms no intact cell holds any more
+// (a term across the torn column), and books what they held: on a rolled
+// 3 x 3 sheet whose middle column alone is stretched past its limit, the
+// energy before the tear is the energy after it plus the springs' fracture
+// energy plus the dropped bending terms', and a later step books nothing
+// again.
+TEST(SheetForces, ASnappedColumnBooksTheBendingTermsItTakesOut) {
+  SheetSpec spec = free_sheet_spec(0.006, 3);
+  spec.bending_stiffness_n_m = 3e-2;  // so that bending weighs against the springs
+  const SheetModel model = uniform_sheet(spec);
+  SheetParams params;
+  params.tear_strain = 0.01;
+  const double h = model.cell_size_m;
+  SheetState state = displaced(model, [](double x, double y) { return 4.0 * x * x + 3.0 * x * y; });
+  for (int v = 0; v < model.vertex_count(); ++v) {  // the middle column stretched 3 % along x
+    state.positions(0, v) += 0.03 * std::clamp(model.rest_positions(0, v) - h, 0.0, h);
+  }
+  const ElasticEnergy before = elastic_energy(model, params, state);
+  Eigen::Matrix3Xd forces;
+  ASSERT_EQ(tear_and_internal_forces(model, params, 1, &state, &forces), 3);
+  const ElasticEnergy after = elastic_energy(model, params, state);
+  EXPECT_GT(after.bending_j, 0.0) << "the flaps still bend";
+  EXPECT_GT(state.torn_bending_energy_j, 0.05 * before.bending_j);
+  EXPECT_NEAR(before.total_j(), after.total_j() + state.torn_energy_j + state.torn_bending_energy_j,
+              1e-12 * before.total_j());
+  const double booked = state.torn_bending_energy_j;
+  EXPECT_EQ(tear_and_internal_forces(model, params, 2, &state, &forces), 0);
+  EXPECT_EQ(state.torn_bending_energy_j, booked);
 }
 
 // A twisted cell torn apart takes its twist term with it: the energy it
