@@ -60,6 +60,12 @@ double keep_in_wedge(const GroundModel& model, double compressed_m3, double frac
   return kept;
 }
 
+void keep_pushed_ahead(double volume_m3, std::array<int, 2> back, DragWedge* wedge) {
+  REPOSE_DEMAND(back[0] != 0 || back[1] != 0);  // pushed ahead only while moving sideways
+  wedge->volume_m3 += volume_m3;
+  wedge->back = back;
+}
+
 double lay_wedge(const GroundModel& model, const SpanMap& map, const Eigen::Vector3d& motion_m, DragWedge* wedge,
                  GroundState* state) {
   if (!(wedge->volume_m3 > 0.0) || dragging(model, motion_m)) return 0.0;

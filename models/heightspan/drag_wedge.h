@@ -23,6 +23,19 @@
 // span; erosion settles it from there. What finds no cell ahead on the grid
 // leaves the grid (the ledger's left_grid_m3). The wedge is counted in the
 // ledger while carried (heightspan_state.h: accounted_m3).
+//
+// That wedge comes from the wall band's compression, so it is the same on a
+// deep and a shallow cut (31 cm^3 on both scoops), where the DEM's grows with
+// the depth (74 / 53 cm^3). With heightspan.wedge_source: lip it is what the
+// lip pushes ahead instead (ground_contact.h: the ground above the intake
+// layer in each cell the lip advances into): that fraction of it goes into
+// the wedge rather than onto the ground cell in front of the object, so the
+// wedge grows with the cut's depth, and the drag's compression stays
+// compressed; it is laid as above. With wedge_source: both, the wedge keeps
+// its fraction of both (the lip's push-ahead and the wall band's compression:
+// everything the bucket's front drives). Refitted to the deep scoop, neither
+// holds the held-out shallow scoop's mass within 6 % (lip +17 %, both -20 %;
+// experiments/heightspan_scoop_fit_lipwedge.yaml, _bothwedge.yaml).
 
 #include <array>
 
@@ -46,6 +59,10 @@ struct DragWedge {
 // drag's direction. Returns the volume kept.
 double keep_in_wedge(const GroundModel& model, double compressed_m3, double fraction, const Eigen::Vector3d& motion_m,
                      DragWedge* wedge, GroundState* state);
+
+// wedge_source lip: keeps `volume_m3` that the object's lip pushed ahead
+// while moving against the cell step `back` (not {0, 0}) in the wedge.
+void keep_pushed_ahead(double volume_m3, std::array<int, 2> back, DragWedge* wedge);
 
 // When `motion_m` is not a drag and the wedge holds material, lays it in
 // front of the object (above) and empties it; the cells join the erosion

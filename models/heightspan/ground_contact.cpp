@@ -7,6 +7,7 @@
 
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_state.h"
+#include "models/heightspan/drag_wedge.h"
 
 namespace repose {
 
@@ -96,7 +97,7 @@ bool cell_ahead(const SpanMap& map, const Grid& ground, CellOffset off, int i, i
 }  // namespace
 
 double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state, const Eigen::Vector3d& motion_m,
-                      double intake_layer_m) {
+                      double intake_layer_m, LipWedge lip) {
   const Grid& g = model.grid;
   const CellOffset off = ground_offset(map->grid, g);
   const std::array<int, 2> back = back_step(motion_m);
@@ -128,8 +129,12 @@ double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state
       moved += (h - left - ahead) * g.cell_area_m2();
       h = left;
       if (ahead > 0.0) {
-        state->height.at(ai, aj) += ahead;
-        state->erosion.touch(model.cell(ai, aj));
+        const double kept = lip.wedge != nullptr ? lip.fraction * ahead : 0.0;  // m of height
+        if (kept > 0.0) keep_pushed_ahead(kept * g.cell_area_m2(), back, lip.wedge);
+        if (ahead - kept > 0.0) {
+          state->height.at(ai, aj) += ahead - kept;
+          state->erosion.touch(model.cell(ai, aj));
+        }
       }
       push_overflow_up(map, c);
       state->erosion.touch(model.cell(gi, gj));

@@ -26,6 +26,9 @@
 //     than into it (issue 12; departure from the paper). Without a cell
 //     ahead on the ground grid it goes in. Pressing (no sideways motion)
 //     takes in everything;
+//     With a lip wedge (heightspan.wedge_source: lip, drag_wedge.h), its
+//     fraction of what is pushed ahead goes into the object's wedge instead
+//     of onto the cell ahead (only where there is a cell ahead, as above);
 //   - what is left between the lowest span's bottom and top is the ground
 //     model's intersection, compressed and displaced as the ground model
 //     does (models/ground/displacement.h), by the caller.
@@ -40,8 +43,16 @@
 
 namespace repose {
 
+struct DragWedge;
 struct GroundModel;
 struct GroundState;
+
+// Where the ground pushed ahead of a lip goes (drag_wedge.h): `fraction` of
+// it into `wedge` (none when null), the rest onto the cell ahead.
+struct LipWedge {
+  DragWedge* wedge = nullptr;
+  double fraction = 0.0;  // [0, 1]
+};
 
 // The ground cell holding map cell (i, j)'s centre is (i + di, j + dj).
 struct CellOffset {
@@ -57,9 +68,10 @@ Underside underside_of(const SpanMap& map, const Grid& ground, double top_m);
 // the volume moved (m^3). Cells that changed join the erosion memory.
 // motion_m: the object's move this substep; ground scooped while it moves
 // sideways is pushed back into it (ground_contact.cpp: push_back_into).
-// intake_layer_m: the layer taken in per cell while moving sideways (above).
+// intake_layer_m: the layer taken in per cell while moving sideways (above);
+// lip: where what is pushed ahead goes.
 double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state,
                       const Eigen::Vector3d& motion_m = Eigen::Vector3d::Zero(),
-                      double intake_layer_m = std::numeric_limits<double>::infinity());
+                      double intake_layer_m = std::numeric_limits<double>::infinity(), LipWedge lip = {});
 
 }  // namespace repose

@@ -18,6 +18,10 @@
 //     wedge_fraction: 0             # the fraction of what a held object's drag compresses that it keeps as a
 //                                   # wedge ahead of it instead, laid in front of it when it stops dragging
 //                                   # (drag_wedge.h); 0: compressed, as the ground model does
+//     wedge_source: compression     # what the wedge keeps its fraction of: compression (what the drag's
+//                                   # displacement compresses, the wall band) | lip (what the lip pushes
+//                                   # ahead, the ground above the intake layer, so it grows with the
+//                                   # cut's depth; ground_contact.h) | both (drag_wedge.h)
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
 //     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}
@@ -42,6 +46,8 @@ struct HeightSpanSpec {
   double particle_spread_m_s = 0.02;   // [0, 100]
   double intake_layer_m = 1e6;         // (0, 1e6]; 1e6: no limit (ground_contact.h)
   double wedge_fraction = 0.0;         // [0, 1]; 0: none (drag_wedge.h)
+  enum class WedgeSource { kCompression, kLip, kBoth };
+  WedgeSource wedge_source = WedgeSource::kCompression;  // what wedge_fraction keeps (drag_wedge.h)
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
   enum class SpanMaps { kCpu, kOsmesa };
   SpanMaps span_maps = SpanMaps::kCpu;
@@ -60,6 +66,9 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
   v.number("particle_spread_m_s", s.particle_spread_m_s, Range::any());
   v.number("intake_layer_m", s.intake_layer_m, Range::any());
   v.number("wedge_fraction", s.wedge_fraction, Range::any());
+  using W = HeightSpanSpec::WedgeSource;
+  v.choice("wedge_source", s.wedge_source,
+           std::vector<std::pair<std::string, W>>{{"compression", W::kCompression}, {"lip", W::kLip}, {"both", W::kBoth}});
   v.number("frame_interval_s", s.frame_interval_s, Range::any());
   using M = HeightSpanSpec::SpanMaps;
   v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});

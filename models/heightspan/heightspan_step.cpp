@@ -38,6 +38,15 @@ void accumulate(const SpanErosionResult& e, SpanErosionResult* sum) {
   sum->to_particles_m3 += e.to_particles_m3;
 }
 
+// The wedge's source (heightspan.wedge_source, drag_wedge.h): the drag's compression, the lip's push-ahead or both.
+double compression_wedge_fraction(const HeightSpanSpec& o) {
+  return o.wedge_source != HeightSpanSpec::WedgeSource::kLip ? o.wedge_fraction : 0.0;
+}
+LipWedge lip_wedge(const HeightSpanSpec& o, DragWedge* wedge) {
+  if (o.wedge_source == HeightSpanSpec::WedgeSource::kCompression || !(o.wedge_fraction > 0.0)) return {};
+  return {wedge, o.wedge_fraction};
+}
+
 void substep(const HeightSpanModel& model, const GroundParams& params, UndersideRenderer& renderer,
              const std::vector<Pose>& from, const std::vector<Pose>& to, double dt_s, HeightSpanState* state,
              HeightSpanStepReport* report) {
@@ -51,7 +60,10 @@ void substep(const HeightSpanModel& model, const GroundParams& params, Underside
     report->resampled += move_spans(model, model.held[k], to[o], motion / dt_s, *state->peeler, &spans, &state->particles,
                                      &state->rng)
                              .resampled;
-    report->taken_up_m3 += take_up_ground(ground, &spans.map, &state->ground, motion, model.options.intake_layer_m);
+    const double wedge_before_m3 = spans.wedge.volume_m3;
+    report->taken_up_m3 += take_up_ground(ground, &spans.map, &state->ground, motion, model.options.intake_layer_m,
+                                          lip_wedge(model.options, &spans.wedge));
+    report->wedge_kept_m3 += spans.wedge.volume_m3 - wedge_before_m3;  // wedge_source lip
     ceiling.undersides.push_back(underside_of(spans.map, ground.grid, top_at(ground.objects[o], to[o])));
     motions.push_back(motion);
   }
@@ -68,8 +80,8 @@ void substep(const HeightSpanModel& model, const GroundParams& params, Underside
         displace(ground, params, ceiling.undersides[k], ceiling, motions[k], &state->ground).contact_cells;
     if (k < model.held.size()) {
       const double compressed_m3 = state->ground.ledger.compressed_m3 - compressed_before_m3;
-      report->wedge_kept_m3 += keep_in_wedge(ground, compressed_m3, model.options.wedge_fraction, motions[k],
-                                             &state->held[k].wedge, &state->ground);
+      report->wedge_kept_m3 += keep_in_wedge(ground, compressed_m3, compression_wedge_fraction(model.options),
+                                             motions[k], &state->held[k].wedge, &state->ground);
       report->wedge_laid_m3 += lay_wedge(ground, state->held[k].map, motions[k], &state->held[k].wedge, &state->ground);
     }
   }

@@ -46,6 +46,16 @@ TEST(DragWedge, KeepsItsFractionOfWhatADragCompressesAndTheLedgerStillBalances) 
   EXPECT_DOUBLE_EQ(w.volume_m3, 1.4e-6);
 }
 
+TEST(DragWedge, KeepsWhatTheLipPushedAheadAndRemembersTheWay) {
+  DragWedge w;
+  keep_pushed_ahead(2e-6, {-1, 0}, &w);
+  EXPECT_EQ(w.volume_m3, 2e-6);
+  EXPECT_EQ(w.back, (std::array<int, 2>{-1, 0}));
+  keep_pushed_ahead(1e-6, {0, 1}, &w);  // turned towards -y: the latest way counts
+  EXPECT_DOUBLE_EQ(w.volume_m3, 3e-6);
+  EXPECT_EQ(w.back, (std::array<int, 2>{0, 1}));
+}
+
 TEST(DragWedge, LaysItInEqualSharesJustAheadOfEveryLaneOfTheObjectOnceItStopsDragging) {
   Standing b = standing_bucket(0.1);  // spans over ground cells 12 .. 27 in x and y
   GroundState& g = b.state.ground;

@@ -4,6 +4,7 @@
 
 #include "heightspan_fixtures.h"
 #include "models/core/config/initial_height.h"
+#include "models/heightspan/drag_wedge.h"
 
 namespace repose {
 namespace {
@@ -134,11 +135,13 @@ double expected_intake_m3(const HeightSpanModel& model, const HeightSpanState& s
 }
 
 // An upright bucket (floor top at 2 cm, centre x = 0.1) in a flat bed `bed_m` deep,
-// moved 1 mm along +x (dx = 0: pressed) with the intake layer `layer_m`.
+// moved 1 mm along +x (dx = 0: pressed) with the intake layer `layer_m`, keeping
+// `wedge_fraction` of what its lip pushes ahead in its wedge (drag_wedge.h).
 struct Taken {
-  double held_m3 = 0.0, expected_m3 = 0.0, ahead_gain_m3 = 0.0, balance_m3 = 0.0;
+  double held_m3 = 0.0, expected_m3 = 0.0, ahead_gain_m3 = 0.0, balance_m3 = 0.0, wedge_m3 = 0.0;
+  std::array<int, 2> wedge_back{0, 0};
 };
-Taken drag_through(double bed_m, double layer_m, double dx) {
+Taken drag_through(double bed_m, double layer_m, double dx, double wedge_fraction = 0.0) {
   Scene s = bed_scene(40, 40, 0.005, bed_m, {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.1, 0.1, 0.04)})}, 1);
   const HeightSpanModel model = build_heightspan_model(s);
   HeightSpanState state = make_heightspan_state(model, make_initial_height(s));
@@ -146,8 +149,12 @@ Taken drag_through(double bed_m, double layer_m, double dx) {
   Taken t;
   t.expected_m3 = expected_intake_m3(model, state, dx == 0.0 ? 1e9 : layer_m);
   const HeightField ground0 = state.ground.height;
-  take_up_ground(model.ground, &state.held[0].map, &state.ground, Eigen::Vector3d(dx, 0.0, 0.0), layer_m);
+  DragWedge& wedge = state.held[0].wedge;
+  take_up_ground(model.ground, &state.held[0].map, &state.ground, Eigen::Vector3d(dx, 0.0, 0.0), layer_m,
+                 wedge_fraction > 0.0 ? LipWedge{&wedge, wedge_fraction} : LipWedge{});
   t.held_m3 = state.held[0].map.material_m3();
+  t.wedge_m3 = wedge.volume_m3;
+  t.wedge_back = wedge.back;
   for (int j = 0; j < 40; ++j) {
     for (int i = 28; i < 40; ++i) {  // in front of the bucket (its outer rim ends at x = 0.14)
       t.ahead_gain_m3 += (state.ground.height.at(i, j) - ground0.at(i, j)) * model.ground.grid.cell_area_m2();
@@ -179,6 +186,29 @@ TEST(GroundContact, ADraggedBucketFillsInTheRatioOfTheLayersItTakesIn) {
   const double shallow_l = drag_through(0.022, 0.004, 0.001).held_m3, deep_l = drag_through(0.03, 0.004, 0.001).held_m3;
   EXPECT_NEAR(shallow_l, shallow, 1e-15);  // a thinner layer than the limit goes in whole
   EXPECT_NEAR(deep_l / shallow_l, 2.0, 1e-9);
+}
+
+TEST(GroundContact, ALipWedgeCarriesItsFractionOfWhatIsPushedAheadInsteadOfTheGroundAhead) {
+  for (const double bed : {0.022, 0.03}) {
+    SCOPED_TRACE(bed);
+    const Taken none = drag_through(bed, 0.004, 0.001);
+    for (const double f : {0.5, 1.0}) {
+      SCOPED_TRACE(f);
+      const Taken t = drag_through(bed, 0.004, 0.001, f);
+      EXPECT_NEAR(t.held_m3, none.held_m3, 1e-15);  // the lip takes in the same layer
+      EXPECT_NEAR(t.wedge_m3, f * none.ahead_gain_m3, 1e-15);
+      EXPECT_NEAR(t.ahead_gain_m3, (1.0 - f) * none.ahead_gain_m3, 1e-15);
+      EXPECT_NEAR(t.balance_m3, 0.0, 1e-15);  // the wedge is in the ledger
+      if (none.ahead_gain_m3 > 0.0) {
+        EXPECT_EQ(t.wedge_back, (std::array<int, 2>{-1, 0}));
+      }
+    }
+  }
+  // a deeper cut pushes more ahead: the wedge grows with it (2 mm of ground over the
+  // floor pushes nothing past a 4 mm layer; 10 mm pushes 6 mm per cell the lip meets)
+  EXPECT_EQ(drag_through(0.022, 0.004, 0.001, 1.0).wedge_m3, 0.0);
+  EXPECT_GT(drag_through(0.03, 0.004, 0.001, 1.0).wedge_m3, 0.0);
+  EXPECT_EQ(drag_through(0.03, 0.004, 0.0, 1.0).wedge_m3, 0.0);  // pressing pushes nothing ahead
 }
 
 TEST(GroundContact, PressingTakesInEverythingWhateverTheIntakeLayer) {

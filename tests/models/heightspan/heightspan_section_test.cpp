@@ -80,6 +80,15 @@ TEST(HeightSpanSection, ValidateNamesTheField) {
     }
   }
   EXPECT_EQ(HeightSpanSpec{}.wedge_fraction, 0.0);  // the default: compressed, as the ground model does
+  EXPECT_EQ(HeightSpanSpec{}.wedge_source, HeightSpanSpec::WedgeSource::kCompression);  // as session 17's
+}
+
+TEST(HeightSpanSection, ReadsTheWedgeSourceAndRefusesOtherWords) {
+  std::string text = kScene;
+  const std::string from = "near_ground_cells: 2";
+  const Scene s = load(std::string(kScene).replace(text.find(from), from.size(), "wedge_source: lip"));
+  EXPECT_EQ(heightspan_section(s).options.wedge_source, HeightSpanSpec::WedgeSource::kLip);
+  EXPECT_THROW(load(text.replace(text.find(from), from.size(), "wedge_source: bucket")), InputError);
 }
 
 TEST(HeightSpanSection, WritesWhatItReads) {

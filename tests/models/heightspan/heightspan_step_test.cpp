@@ -171,6 +171,76 @@ TEST(HeightSpanStep, AScoopWithAWedgeIsMirrorSymmetricAboutItsLine) {
   EXPECT_GT(h.rightCols(40 - 30).maxCoeff(), 0.03 + 2e-3);  // a heap in front of the drag's end
 }
 
+// With the wedge taken from what the lip pushes ahead (heightspan.wedge_source: lip).
+Scene with_lip_wedge(Scene s, double fraction) {
+  s = with_wedge(std::move(s), fraction);
+  HeightSpanSection section = heightspan_section(s);
+  section.options.wedge_source = HeightSpanSpec::WedgeSource::kLip;
+  return with_heightspan(std::move(s), section);
+}
+
+TEST(HeightSpanStep, RandomScoopsWithALipWedgeConserveMaterialEveryStep) {
+  std::mt19937_64 rng(20261128);
+  std::uniform_real_distribution<double> depth(0.0, 0.025), drag(0.0, 0.08), tilt(0.0, 95.0), speed(0.05, 0.6),
+      layer(0.0002, 0.01), fraction(0.0, 1.0);
+  for (int trial = 0; trial < 8; ++trial) {
+    const double d = depth(rng), l = drag(rng), t = tilt(rng), v = speed(rng), m = layer(rng), f = fraction(rng);
+    const std::string where = fmt::format("trial {} (depth {} m, drag {} m, tilt {} deg, speed {} m/s, layer {} m, "
+                                          "lip wedge {})", trial, d, l, t, v, m, f);
+    run_checked(with_lip_wedge(with_intake_layer(scoop(d, l, t, v, static_cast<std::uint64_t>(trial)), m), f), where);
+    if (HasFailure()) break;
+  }
+}
+
+// The lip's wedge at the end of the drag (21 of its 22 steps) of the scoop of the
+// tests above `depth_m` deep, with a 4 mm intake layer.
+double lip_wedge_at_drag_end_m3(double depth_m) {
+  Scene s = with_lip_wedge(with_intake_layer(scoop(depth_m, 0.08, 80.0, 0.15, 1), 0.004), 1.0);
+  s.time.duration_s = 21.0 / 30.0;
+  return wedge_m3(run_checked(s, fmt::format("lip wedge, {} m deep", depth_m)).state);
+}
+
+TEST(HeightSpanStep, TheLipsWedgeGrowsWithTheCutsDepth) {
+  // the drag's compression (wedge_source compression) comes from the wall band, the same
+  // whatever the depth; what the lip pushes past its 4 mm intake layer is nothing on a
+  // cut within the layer, then grows with the depth, each mm adding the same (the lip's
+  // width times the drag)
+  EXPECT_EQ(lip_wedge_at_drag_end_m3(0.006), 0.0);
+  const double shallow = lip_wedge_at_drag_end_m3(0.012), mid = lip_wedge_at_drag_end_m3(0.016),
+               deep = lip_wedge_at_drag_end_m3(0.020);
+  EXPECT_GT(shallow, 0.0);
+  EXPECT_GT(mid, shallow + 1e-5);
+  EXPECT_NEAR(deep - mid, mid - shallow, 0.1 * (mid - shallow));
+}
+
+TEST(HeightSpanStep, TheWholeWedgeIsTheLipsPlusWhatTheDragWouldCompress) {
+  // wedge_source both: the same ground and load as lip, the drag's compression carried too
+  Scene lip = with_lip_wedge(with_intake_layer(scoop(0.016, 0.08, 80.0, 0.15, 1), 0.004), 1.0);
+  lip.time.duration_s = 21.0 / 30.0;
+  HeightSpanSection section = heightspan_section(lip);
+  section.options.wedge_source = HeightSpanSpec::WedgeSource::kBoth;
+  const Checked l = run_checked(lip, "lip"), b = run_checked(with_heightspan(lip, section), "both");
+  EXPECT_EQ(held_m3(b.state), held_m3(l.state));
+  EXPECT_EQ(b.state.ground.height.heights().matrix(), l.state.ground.height.heights().matrix());
+  const double compressed_kept_m3 = l.state.ground.ledger.compressed_m3 - b.state.ground.ledger.compressed_m3;
+  EXPECT_GT(compressed_kept_m3, 1e-6);
+  EXPECT_GT(wedge_m3(l.state), 1e-6);
+  EXPECT_NEAR(wedge_m3(b.state), wedge_m3(l.state) + compressed_kept_m3, 1e-12 * wedge_m3(b.state));
+}
+
+TEST(HeightSpanStep, AScoopWithALipWedgeIsMirrorSymmetricAboutItsLineAndLaysItAhead) {
+  Scene base = with_intake_layer(scoop(0.015, 0.06, 80.0, 0.15, 2), 0.004);
+  const Checked c = run_checked(with_lip_wedge(base, 1.0), "mirror, lip wedge");
+  const Checked off = run_checked(with_wedge(base, 0.0), "mirror, no wedge");
+  const ArrayXXdR& h = c.state.ground.height.heights();
+  ASSERT_EQ(h.rows(), 24);
+  double worst = 0.0;
+  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_EQ(wedge_m3(c.state), 0.0);  // laid when the lift began
+  EXPECT_NE(h.matrix(), off.state.ground.height.heights().matrix());  // the option changed the scoop
+}
+
 TEST(HeightSpanStep, TiltedBucketDraggedThroughSandFills) {
   const Checked c = run_checked(scoop(0.015, 0.08, 80.0, 0.15, 1), "scoop");
   const double bucket_inside_m3 = 0.07 * 0.07 * 0.045;
