@@ -1,6 +1,7 @@
 #include "models/heightspan/heightspan_step.h"
 
 #include <cmath>
+#include <functional>
 #include <random>
 
 #include <fmt/format.h>
@@ -120,17 +121,24 @@ Scene with_wedge(Scene s, double fraction) {
   return with_heightspan(std::move(s), section);
 }
 
-TEST(HeightSpanStep, RandomScoopsWithAWedgeConserveMaterialEveryStep) {
-  std::mt19937_64 rng(20261127);
+// Eight random scoops, each with a wedge of random fraction made by
+// `with_wedge_of`, conserve material at every step (run_checked).
+void random_scoops_conserve(std::uint64_t seed, const std::function<Scene(Scene, double)>& with_wedge_of,
+                            const std::string& label) {
+  std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> depth(0.0, 0.025), drag(0.0, 0.08), tilt(0.0, 95.0), speed(0.05, 0.6),
       layer(0.0002, 0.01), fraction(0.0, 1.0);
   for (int trial = 0; trial < 8; ++trial) {
     const double d = depth(rng), l = drag(rng), t = tilt(rng), v = speed(rng), m = layer(rng), f = fraction(rng);
     const std::string where = fmt::format("trial {} (depth {} m, drag {} m, tilt {} deg, speed {} m/s, layer {} m, "
-                                          "wedge {})", trial, d, l, t, v, m, f);
-    run_checked(with_wedge(with_intake_layer(scoop(d, l, t, v, static_cast<std::uint64_t>(trial)), m), f), where);
-    if (HasFailure()) break;
+                                          "{} {})", trial, d, l, t, v, m, label, f);
+    run_checked(with_wedge_of(with_intake_layer(scoop(d, l, t, v, static_cast<std::uint64_t>(trial)), m), f), where);
+    if (::testing::Test::HasFailure()) break;
   }
+}
+
+TEST(HeightSpanStep, RandomScoopsWithAWedgeConserveMaterialEveryStep) {
+  random_scoops_conserve(20261127, with_wedge, "wedge");
 }
 
 TEST(HeightSpanStep, TheWedgeKeepsWhatTheDragCompressedInFrontOfTheBucketWithoutChangingTheFill) {
@@ -180,16 +188,7 @@ Scene with_lip_wedge(Scene s, double fraction) {
 }
 
 TEST(HeightSpanStep, RandomScoopsWithALipWedgeConserveMaterialEveryStep) {
-  std::mt19937_64 rng(20261128);
-  std::uniform_real_distribution<double> depth(0.0, 0.025), drag(0.0, 0.08), tilt(0.0, 95.0), speed(0.05, 0.6),
-      layer(0.0002, 0.01), fraction(0.0, 1.0);
-  for (int trial = 0; trial < 8; ++trial) {
-    const double d = depth(rng), l = drag(rng), t = tilt(rng), v = speed(rng), m = layer(rng), f = fraction(rng);
-    const std::string where = fmt::format("trial {} (depth {} m, drag {} m, tilt {} deg, speed {} m/s, layer {} m, "
-                                          "lip wedge {})", trial, d, l, t, v, m, f);
-    run_checked(with_lip_wedge(with_intake_layer(scoop(d, l, t, v, static_cast<std::uint64_t>(trial)), m), f), where);
-    if (HasFailure()) break;
-  }
+  random_scoops_conserve(20261128, with_lip_wedge, "lip wedge");
 }
 
 // The lip's wedge at the end of the drag (21 of its 22 steps) of the scoop of the
