@@ -141,6 +141,19 @@
 // samples (the Galerkin product ~22 %, much of it page faults of its
 // fresh buffers), so a build kept in reused memory is the next lever.
 // Target 20 steps/s (50 ms): missed by ~4 % at load ~7.
+// Measured 2026-11-27 16:07-16:18 on a quiet machine (load ~1: nothing
+// else running; CPU time; main at e3ee8bd (old) and 18ad0f9 (new), the
+// binaries in turn): /200/iterations:40, medians of 3 repetitions, 10
+// rounds: old 60.9 59.7 45.3 44.6 45.8 46.6 45.1 47.7 46.1 46.5, new 57.7
+// 55.5 43.9 44.4 44.2 45.2 45.0 46.9 46.3 46.3 ms (the first two rounds
+// slow for both: the shared host); median 46.3 -> 45.7 ms (21.9 steps/s),
+// per-round ratio median 0.976. Then once more each (median of 3):
+// /200/iterations:40 43.8 -> 36.2 ms (27.7 steps/s), /200/min_time:5
+// (4-5 hierarchy builds, ~4.5 CG iterations a step) 46.2 -> 43.4 ms
+// (23.0 steps/s), BM_ExplicitStep/50 221 -> 148 us (6,750 steps/s).
+// So on a quiet machine the 200 x 200 implicit step meets 20 steps/s,
+// main's before this session's change too; at load 6-8 (two processes
+// a core) it does not (51.8 ms above).
 // Run:
 //   build/bin/tearing_benchmark --benchmark_filter=ImplicitStep --benchmark_repetitions=3 --benchmark_report_aggregates_only=true
 //   build/bin/tearing_benchmark --benchmark_filter='ToleranceError|WholeTearTolerance/50/(12/0|3/1)/'   (minutes)
