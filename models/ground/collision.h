@@ -5,6 +5,7 @@
 // (one pixel per cell), so the cost follows the contact, not the grid. A
 // cell collides where the object's underside lies below the ground height.
 
+#include <algorithm>
 #include <limits>
 #include <memory>
 #include <string>
@@ -30,6 +31,14 @@ struct Footprint {
   // The sub-grid of these cells (same cell size, shifted origin).
   Grid sub_grid(const Grid& grid) const;
 };
+
+// The smallest rectangle holding both (the other when one is empty).
+inline Footprint bounding_box(const Footprint& a, const Footprint& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  const int i0 = std::min(a.i0, b.i0), j0 = std::min(a.j0, b.j0);
+  return Footprint{i0, j0, std::max(a.i0 + a.ni, b.i0 + b.ni) - i0, std::max(a.j0 + a.nj, b.j0 + b.nj) - j0};
+}
 
 // The cells of `grid` whose centres lie inside the box's xy extent.
 Footprint footprint_of(const Aabb& box, const Grid& grid);

@@ -62,14 +62,7 @@ std::vector<std::vector<std::size_t>> touching_clusters(const std::vector<Unders
 // The lowest underside of several objects over the box around their footprints.
 Underside merged_underside(const std::vector<Underside>& undersides, const std::vector<std::size_t>& members) {
   Footprint box = undersides[members[0]].footprint;
-  for (const std::size_t m : members) {
-    const Footprint& f = undersides[m].footprint;
-    const int i1 = std::max(box.i0 + box.ni, f.i0 + f.ni), j1 = std::max(box.j0 + box.nj, f.j0 + f.nj);
-    box.i0 = std::min(box.i0, f.i0);
-    box.j0 = std::min(box.j0, f.j0);
-    box.ni = i1 - box.i0;
-    box.nj = j1 - box.j0;
-  }
+  for (const std::size_t m : members) box = bounding_box(box, undersides[m].footprint);
   Underside u;
   u.footprint = box;
   for (const std::size_t m : members) u.top_m = std::max(u.top_m, undersides[m].top_m);

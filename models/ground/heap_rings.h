@@ -136,15 +136,7 @@ class Rings {
   static Footprint covering_box(const ExcessRouting& in) {
     Footprint box = in.window;
     for (const Underside& u : in.ceiling.undersides) {
-      if (u.empty()) continue;
-      if (box.empty()) {
-        box = u.footprint;
-        continue;
-      }
-      const int i1 = std::max(box.i0 + box.ni, u.footprint.i0 + u.footprint.ni);
-      const int j1 = std::max(box.j0 + box.nj, u.footprint.j0 + u.footprint.nj);
-      box.i0 = std::min(box.i0, u.footprint.i0), box.j0 = std::min(box.j0, u.footprint.j0);
-      box.ni = i1 - box.i0, box.nj = j1 - box.j0;
+      if (!u.empty()) box = bounding_box(box, u.footprint);
     }
     return box;
   }
