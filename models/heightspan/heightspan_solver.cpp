@@ -119,6 +119,8 @@ void write_held_csv(const HeightSpanModel& model, const HeightSpanRun& r, const 
 
 class CompiledHeightSpan final : public CompiledSolver {
  public:
+  static constexpr std::ptrdiff_t kOwnParameters = 2;
+
   explicit CompiledHeightSpan(const Scene& scene)
       : model_(build_heightspan_model(scene)), initial_(make_initial_height(scene)), parameters_(model_.ground) {
     if (model_.held.empty()) check_counts(model_.ground);  // the ground path: as the ground solver checks
@@ -126,6 +128,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     infos_.push_back({"intake_layer_m", "m", 1.0, 1e-9, 1e6, model_.options.intake_layer_m,
                       "the thickest ground layer a span's top takes in per cell while moving sideways; the rest "
                       "is pushed ahead (heightspan.intake_layer_m; 1e6: no limit)"});
+    infos_.push_back({"wedge_fraction", "1", 1.0, 0.0, 1.0, model_.options.wedge_fraction,
+                      "the fraction of what a held object's drag compresses (or its lip pushes, by "
+                      "heightspan.wedge_source) kept as a wedge ahead of it (heightspan.wedge_fraction; drag_wedge.h)"});
   }
 
   const std::vector<ParameterInfo>& parameters() const override { return infos_; }
@@ -133,10 +138,11 @@ class CompiledHeightSpan final : public CompiledSolver {
   Run run(const std::vector<double>& values_si, const RunOptions& options) const override {
     check_values(infos_, values_si, "heightspan");
     const Stopwatch clock;
-    const std::vector<double> material(values_si.begin(), values_si.end() - 1);
+    const std::vector<double> material(values_si.begin(), values_si.end() - kOwnParameters);
     const GroundParams params = parameters_.params_for(model_.ground, material);
     HeightSpanModel model = model_;
-    model.options.intake_layer_m = values_si.back();
+    model.options.intake_layer_m = values_si.end()[-2];
+    model.options.wedge_fraction = values_si.back();
     validate(model.options);
     Run run;
     run.solver = "heightspan";
@@ -200,7 +206,8 @@ class CompiledHeightSpan final : public CompiledSolver {
   HeightSpanModel model_;
   HeightField initial_;
   MaterialParameters parameters_;
-  std::vector<ParameterInfo> infos_;  // the materials' (parameters_), then intake_layer_m
+  // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, wedge_fraction
+  std::vector<ParameterInfo> infos_;
 };
 
 }  // namespace

@@ -4,7 +4,8 @@
 // the HeightSpanModel once; its parameters are the ground model's, by the
 // same names ("sand.alpha", "sand.repose_angle_deg", "sand.sigma";
 // models/ground/material_parameters.h), so a calibration fits them alike,
-// and its own "intake_layer_m" (heightspan.intake_layer_m, m; ground_contact.h).
+// and its own "intake_layer_m" (heightspan.intake_layer_m, m; ground_contact.h)
+// and "wedge_fraction" (heightspan.wedge_fraction, 1; drag_wedge.h).
 // A scene where no object holds material runs the ground model itself
 // (simulate_ground) and builds no span map and no particles.
 //

@@ -28,10 +28,12 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const Scene s = small_scoop();
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
-  // the ground's, then its own intake layer
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 1);
-  EXPECT_EQ(compiled->parameters().back().name, "intake_layer_m");
-  EXPECT_EQ(compiled->parameters().back().value_si, HeightSpanSpec{}.intake_layer_m);
+  // the ground's, then its own intake layer and wedge fraction
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 2);
+  EXPECT_EQ(compiled->parameters().end()[-2].name, "intake_layer_m");
+  EXPECT_EQ(compiled->parameters().end()[-2].value_si, HeightSpanSpec{}.intake_layer_m);
+  EXPECT_EQ(compiled->parameters().back().name, "wedge_fraction");
+  EXPECT_EQ(compiled->parameters().back().value_si, HeightSpanSpec{}.wedge_fraction);
   for (std::size_t k = 0; k < ground->parameters().size(); ++k) {
     EXPECT_EQ(compiled->parameters()[k].name, ground->parameters()[k].name);
     EXPECT_EQ(compiled->parameters()[k].value_si, ground->parameters()[k].value_si);
@@ -52,6 +54,20 @@ TEST(HeightSpanSolver, AFittedIntakeLayerReachesTheRun) {
   EXPECT_GT(thin, 0.0);
   EXPECT_LT(thin, all);
   values[compiled->parameter_index("intake_layer_m")] = 0.0;
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, AFittedWedgeFractionReachesTheRun) {
+  // a drag that keeps its wedge lays it when the drag ends; none without; beyond [0, 1] refused
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  std::vector<double> values = compiled->default_values();
+  values[compiled->parameter_index("sand.alpha")] = 0.3;  // the drag compresses 70 % of what it displaces
+  EXPECT_EQ(compiled->run(values, {}).measure("flows.wedge_kept_m3").value, 0.0);
+  values[compiled->parameter_index("wedge_fraction")] = 1.0;
+  const repose::Run kept = compiled->run(values, {});
+  EXPECT_GT(kept.measure("flows.wedge_kept_m3").value, 0.0);
+  EXPECT_LT(kept.measure("ledger.max_relative_imbalance").value, 1e-12);
+  values[compiled->parameter_index("wedge_fraction")] = 1.5;
   EXPECT_THROW(compiled->run(values, {}), InputError);
 }
 

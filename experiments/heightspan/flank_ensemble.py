@@ -1,0 +1,103 @@
+"""The dumped heap's flank of the height-span scoop as an ensemble (issue 12).
+
+The model's flank (dump_flank.py) is not smooth in its inputs: sigma moved by
+1e-4 of itself, far inside its standard error, moves the held-out scoop's
+flank by up to 3 deg, as the heap's peak cell and the particles' landing
+cells change. One run at the fitted point is therefore one draw, where the
+reference's flank is the mean over three random beds. This runs the model at
+a calibration's fitted parameters on each LIGGGHTS seed's own initial bed
+(data/ref_scoop*/seedN/height_initial.npy), each with sigma scaled by
+1 + k 1e-4 for k = -5..5, and prints the flank's mean, standard deviation,
+standard error and per-bed means beside the seeds' own. Usage:
+  /usr/bin/python3 experiments/heightspan/flank_ensemble.py runs/FIT/parameters.yaml --out runs/flank_FIT \
+      [--deep scenes/ref_scoop.yaml] [--shallow scenes/ref_scoop_shallow.yaml] [--repose build/bin/repose]
+(scenes relative to experiments/; 66 runs of about 0.2 s).
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, HERE)
+import dump_flank  # noqa: E402
+
+SEEDS = (1, 2, 3)
+JITTER = [k * 1e-4 for k in range(-5, 6)]  # sigma's relative change
+
+
+def read_parameters(path):
+    """The `heightspan.NAME: value` lines of a calibration's parameters.yaml, by NAME."""
+    values = {}
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"heightspan\.(\S+):\s*(\S+)", line)
+            if m:
+                values[m.group(1)] = float(m.group(2))
+    if "sand.sigma" not in values:
+        raise SystemExit(f"{path}: no heightspan.sand.sigma line (a heightspan calibration's parameters.yaml?)")
+    return values
+
+
+def overrides(values):
+    """`repose run --set` arguments for fitted values (the ground's material under ground_model)."""
+    args = []
+    for name, v in values.items():
+        key = "ground_model.materials." + name if name.startswith("sand.") else "heightspan." + name
+        args += ["--set", f"{key}={v!r}"]
+    return args
+
+
+def jittered(values, fraction):
+    v = dict(values)
+    v["sand.sigma"] = values["sand.sigma"] * (1.0 + fraction)
+    return v
+
+
+def summary(per_bed):
+    """Mean, sample sd, standard error and per-bed means of a beds x draws array of flanks (deg)."""
+    a = np.asarray(per_bed, dtype=float)
+    sd = a.std(ddof=1)
+    return {"mean": a.mean(), "sd": sd, "sem": sd / np.sqrt(a.size), "per_bed": a.mean(axis=1),
+            "min": a.min(), "max": a.max()}
+
+
+def run_flank(repose, scene, values, bed, out):
+    cmd = [repose, "run", os.path.join(ROOT, "experiments", scene), "--solver", "heightspan", *overrides(values),
+           "--set", "heightspan.frame_interval_s=10", "--set", f"ground.initial_height={{kind: file, path: {bed}}}",
+           "--out", out]
+    subprocess.run(cmd, check=True, capture_output=True)
+    return dump_flank.flank(os.path.join(out, "height_final.npy"))[1]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("parameters")
+    p.add_argument("--out", required=True)
+    p.add_argument("--deep", default="scenes/ref_scoop.yaml")
+    p.add_argument("--shallow", default="scenes/ref_scoop_shallow.yaml")
+    p.add_argument("--repose", default=os.path.join(ROOT, "build", "bin", "repose"))
+    args = p.parse_args()
+    values = read_parameters(args.parameters)
+    for name, scene, data in (("deep", args.deep, "ref_scoop"), ("shallow", args.shallow, "ref_scoop_shallow")):
+        beds = [os.path.join(ROOT, "data", data, f"seed{s}") for s in SEEDS]
+        per_bed = []
+        for s, bed in zip(SEEDS, beds):
+            per_bed.append([run_flank(args.repose, scene, jittered(values, f), os.path.join(bed, "height_initial.npy"),
+                                      os.path.join(args.out, name, f"bed{s}", f"{k}"))
+                            for k, f in enumerate(JITTER)])
+            print(f"{name} bed {s}: " + " ".join(f"{x:.1f}" for x in per_bed[-1]), flush=True)
+        seeds = [dump_flank.flank(os.path.join(bed, "height_final.npy"))[1] for bed in beds]
+        m = summary(per_bed)
+        print(f"{name}: model {m['mean']:.2f} +- {m['sd']:.2f} deg (sem {m['sem']:.2f}; per bed "
+              + " / ".join(f"{x:.2f}" for x in m["per_bed"]) + f"; {m['min']:.1f}..{m['max']:.1f}) against the seeds' "
+              + " / ".join(f"{x:.1f}" for x in seeds) + f" (mean {np.mean(seeds):.2f}, sd {np.std(seeds, ddof=1):.2f})",
+              flush=True)
+
+
+if __name__ == "__main__":
+    main()
