@@ -10,8 +10,10 @@ a calibration's fitted parameters on each LIGGGHTS seed's own initial bed
 1 + k 1e-4 for k = -5..5, and prints the flank's mean, standard deviation,
 standard error and per-bed means beside the seeds' own. Usage:
   /usr/bin/python3 experiments/heightspan/flank_ensemble.py runs/FIT/parameters.yaml --out runs/flank_FIT \
-      [--deep scenes/ref_scoop.yaml] [--shallow scenes/ref_scoop_shallow.yaml] [--repose build/bin/repose]
-(scenes relative to experiments/; 66 runs of about 0.2 s).
+      [--deep scenes/ref_scoop.yaml] [--shallow scenes/ref_scoop_shallow.yaml] [--repose build/bin/repose] \
+      [--set KEY=VALUE ...]
+(scenes relative to experiments/; --set is passed to every run, e.g. ground_model.heap_laying=one_pass;
+66 runs of about 0.2 s).
 """
 import argparse
 import os
@@ -66,11 +68,14 @@ def summary(per_bed):
             "min": a.min(), "max": a.max()}
 
 
-def run_flank(repose, scene, values, bed, out):
+def run_flank(repose, scene, values, bed, out, extra=()):
     cmd = [repose, "run", os.path.join(ROOT, "experiments", scene), "--solver", "heightspan", *overrides(values),
+           *[a for kv in extra for a in ("--set", kv)],
            "--set", "heightspan.frame_interval_s=10", "--set", f"ground.initial_height={{kind: file, path: {bed}}}",
            "--out", out]
-    subprocess.run(cmd, check=True, capture_output=True)
+    done = subprocess.run(cmd, capture_output=True, text=True)
+    if done.returncode != 0:
+        raise SystemExit(f"flank_ensemble: {' '.join(cmd)} failed: {done.stderr.strip()}")
     return dump_flank.flank(os.path.join(out, "height_final.npy"))[1]
 
 
@@ -81,6 +86,7 @@ def main():
     p.add_argument("--deep", default="scenes/ref_scoop.yaml")
     p.add_argument("--shallow", default="scenes/ref_scoop_shallow.yaml")
     p.add_argument("--repose", default=os.path.join(ROOT, "build", "bin", "repose"))
+    p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="passed to every repose run")
     args = p.parse_args()
     values = read_parameters(args.parameters)
     for name, scene, data in (("deep", args.deep, "ref_scoop"), ("shallow", args.shallow, "ref_scoop_shallow")):
@@ -88,7 +94,7 @@ def main():
         per_bed = []
         for s, bed in zip(SEEDS, beds):
             per_bed.append([run_flank(args.repose, scene, jittered(values, f), os.path.join(bed, "height_initial.npy"),
-                                      os.path.join(args.out, name, f"bed{s}", f"{k}"))
+                                      os.path.join(args.out, name, f"bed{s}", f"{k}"), args.set)
                             for k, f in enumerate(JITTER)])
             print(f"{name} bed {s}: " + " ".join(f"{x:.1f}" for x in per_bed[-1]), flush=True)
         seeds = [dump_flank.flank(os.path.join(bed, "height_final.npy"))[1] for bed in beds]
