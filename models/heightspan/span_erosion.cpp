@@ -30,15 +30,25 @@ using namespace span_erosion_detail;
 // span, span count (0 where it has none), lowest span's top and bottom (+inf
 // without spans) and ground cell (-1 beyond the grid) are looked up once
 // per call: the spans' solids and the cells do not change during erosion.
+// A surface material at some height lands on (Columns::landing).
+struct Landing {
+  Kind kind;
+  std::int64_t index;  // a span's index in map.spans, else the local column
+  double level_m;      // where material on it reaches
+  double room_m;       // highest level it may reach
+  double support_m;    // the solid surface it offers: a span's top, the ground's height; -inf under air
+  double* amount_m;    // what it holds (a span's material, the ground's height); nullptr for air
+};
+
 class Columns {
  public:
   static constexpr int kPad = 2;
-  const SpanMap& map;
-  const HeightField& ground;
+  SpanMap& map;
+  HeightField& ground;
   CellOffset off;
   int i0, i1, j0, j1;  // the box
 
-  Columns(const SpanMap& m, const HeightField& g, CellOffset o, const std::array<int, 4>& box)
+  Columns(SpanMap& m, HeightField& g, CellOffset o, const std::array<int, 4>& box)
       : map(m), ground(g), off(o), i0(box[0]), i1(box[1]), j0(box[2]), j1(box[3]) {
     first_.assign(local_count(), 0);
     count_.assign(local_count(), 0);
@@ -94,23 +104,25 @@ class Columns {
   double neighbours_lowest_top(std::int64_t l) const { return neighbours_lowest_top_[static_cast<std::size_t>(l)]; }
 
   // The surface material at height z entering local column l lands on; false when z is inside its solid.
-  bool landing(std::int64_t l, double z, Surface* out) const {
+  bool landing(std::int64_t l, double z, Landing* out) const {
     const std::size_t at = static_cast<std::size_t>(l);
     const int n = count_[at];
-    const Span* s = map.spans.data() + first_[at];  // not read when n == 0
+    Span* s = map.spans.data() + first_[at];  // not read when n == 0
     int k = n - 1;
     while (k >= 0 && s[k].top_m > z) --k;
     if (k >= 0) {
       if (k + 1 < n && s[k + 1].bottom_m <= z) return false;
-      *out = {Kind::kSpan, first_[at] + k, s[k].level_m(), k + 1 < n ? s[k + 1].bottom_m : kInf};
+      *out = {Kind::kSpan, first_[at] + k, s[k].level_m(), k + 1 < n ? s[k + 1].bottom_m : kInf, s[k].top_m,
+              &s[k].material_m};
       return true;
     }
     if (n > 0 && s[0].bottom_m <= z) return false;
     if (ground_cell_[at] < 0) {
-      *out = {Kind::kAir, l, 0.0, kInf};  // beyond the grid: it falls off
+      *out = {Kind::kAir, l, 0.0, kInf, -kInf, nullptr};  // beyond the grid: it falls off
       return true;
     }
-    *out = {Kind::kGround, l, ground.heights().data()[ground_cell_[at]], n > 0 ? s[0].bottom_m : kInf};
+    double* h = ground.heights().data() + ground_cell_[at];
+    *out = {Kind::kGround, l, *h, n > 0 ? s[0].bottom_m : kInf, *h, h};
     return true;
   }
   // The local index steps to the neighbours, in kNeighbours' order.
@@ -129,49 +141,59 @@ struct PassRule {
   double dust_m;       // material below this (1e-12 cell) is round-off: it does not move
 };
 
-// The solid surface a landing surface offers: a span's top, the ground's
-// height; nothing under air.
-double support_of(const Columns& cols, const Surface& to) {
-  if (to.kind == Kind::kSpan) return cols.map.spans[static_cast<std::size_t>(to.index)].top_m;
-  if (to.kind == Kind::kGround) return to.level_m;
-  return -kInf;
+// A flux of `amount_m` from a surface (what it holds: *from_m) in local column from_l onto `to` in local column to_l;
+// z_m: the level it leaves at.
+Flux make_flux(double amount_m, double* from_m, Kind from_kind, std::int64_t from_l, const Landing& to,
+               std::int64_t to_l, double z_m, std::size_t n_spans) {
+  const bool air = to.kind == Kind::kAir;
+  const std::int64_t key = to.kind == Kind::kSpan ? to.index : static_cast<std::int64_t>(n_spans) + to_l;
+  return {amount_m, air ? z_m : std::max(0.0, to.room_m - to.level_m), from_m, air ? nullptr : to.amount_m,
+          static_cast<std::int32_t>(key), static_cast<std::int32_t>(from_l), static_cast<std::int32_t>(to_l),
+          from_kind, to.kind};
+}
+
+// A surface gives at most what it has: its fluxes (from `first` on) scaled down together where they would exceed it.
+void limit_to(double has, std::size_t first, std::vector<Flux>* fluxes) {
+  double total = 0.0;
+  for (std::size_t f = first; f < fluxes->size(); ++f) total += (*fluxes)[f].amount_m;
+  if (!(total > has)) return;
+  for (std::size_t f = first; f < fluxes->size(); ++f) (*fluxes)[f].amount_m *= has / total;
 }
 
 // The fluxes off the spans of local column l (one of the map's).
 void add_span_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, std::vector<Flux>* fluxes) {
-  const std::int32_t first_span = cols.first(l);
   const int n = cols.count(l);
-  const Span* spans = cols.map.spans.data() + first_span;
-  const std::array<std::int64_t, 4>& steps = cols.steps();
+  Span* spans = cols.map.spans.data() + cols.first(l);
+  const std::size_t n_spans = cols.map.spans.size();
   for (int k = 0; k < n; ++k) {
-    const Span& s = spans[k];
+    Span& s = spans[k];
     if (!(s.material_m > rule.dust_m)) continue;  // round-off left by a slide stays put
-    const Surface from{Kind::kSpan, first_span + k, s.level_m(), kInf};
+    const double level = s.level_m();
     const std::size_t first = fluxes->size();
-    double slide_total = 0.0;  // over the neighbours whose support drops more than the repose slope
-    for (const std::int64_t step : steps) {
-      Surface to;
-      if (!cols.landing(l + step, from.level_m, &to)) continue;
-      const double excess = from.level_m - to.level_m - rule.max_dh_m;
+    std::array<double, 4> slide{};  // per flux: its support's drop, where steeper than the repose slope
+    double slide_total = 0.0;       // over the neighbours whose support drops more than the repose slope
+    for (const std::int64_t step : cols.steps()) {
+      Landing to;
+      if (!cols.landing(l + step, level, &to)) continue;
+      const double excess = level - to.level_m - rule.max_dh_m;
       if (!(excess > rule.tolerance_m)) continue;
       // (a layer thinner than the tolerance is round-off, left where it is as by the slope rule)
-      const double steep = s.material_m > rule.tolerance_m
-                               ? std::min(s.top_m - support_of(cols, to) - rule.max_dh_m, rule.slide_cap_m)
-                               : 0.0;
+      const double steep =
+          s.material_m > rule.tolerance_m ? std::min(s.top_m - to.support_m - rule.max_dh_m, rule.slide_cap_m) : 0.0;
       if (to.kind == Kind::kGround && s.top_m - to.level_m > rule.near_m) to.kind = Kind::kAir;  // falls
-      // release_z_m doubles as the slide weight until the span's fluxes are complete
-      fluxes->push_back({from, to, rule.sigma * excess, steep > rule.tolerance_m ? steep : 0.0});
+      slide[fluxes->size() - first] = steep > rule.tolerance_m ? steep : 0.0;
+      fluxes->push_back(make_flux(rule.sigma * excess, &s.material_m, Kind::kSpan, l, to, l + step, level, n_spans));
       if (steep > rule.tolerance_m) slide_total += steep;
     }
     // unsupported: the span's own surface falls more steeply than the repose slope towards these
     // neighbours, so none of its material can rest on it; all of it slides, shared by steepness
-    for (std::size_t f = first; f < fluxes->size(); ++f) {
-      Flux& flux = (*fluxes)[f];
-      if (slide_total > 0.0 && flux.release_z_m > 0.0) {
-        flux.amount_m = std::max(flux.amount_m, s.material_m * flux.release_z_m / slide_total);
+    if (slide_total > 0.0) {
+      for (std::size_t f = first; f < fluxes->size(); ++f) {
+        Flux& flux = (*fluxes)[f];
+        if (slide[f - first] > 0.0) flux.amount_m = std::max(flux.amount_m, s.material_m * slide[f - first] / slide_total);
       }
-      flux.release_z_m = from.level_m;
     }
+    limit_to(s.material_m, first, fluxes);
   }
 }
 
@@ -179,97 +201,131 @@ void add_span_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, 
 void add_ground_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, std::vector<Flux>* fluxes) {
   const std::int64_t gc = cols.ground_cell(l);
   if (gc < 0) return;
-  const double g = cols.ground.heights().data()[gc];
+  double* from = cols.ground.heights().data() + gc;
+  const double g = *from;
   // only a span whose top is at or below g can take it: none when every neighbour's lowest one's is above
   if (cols.neighbours_lowest_top(l) > g) return;
   if (g > cols.lowest_bottom(l)) return;  // under the object: not exposed
-  const Surface from{Kind::kGround, l, g, kInf};
+  const std::size_t first = fluxes->size();
   for (const std::int64_t step : cols.steps()) {
     // only a span whose top is at or below g can take it: none when the lowest one's is above (or there is none)
     if (cols.lowest_top(l + step) > g) continue;
-    Surface to;
+    Landing to;
     if (!cols.landing(l + step, g, &to) || to.kind != Kind::kSpan) continue;
     const double excess = g - to.level_m - rule.max_dh_m;
-    if (excess > rule.tolerance_m) fluxes->push_back({from, to, rule.sigma * excess, g});
+    if (excess > rule.tolerance_m) {
+      fluxes->push_back(
+          make_flux(rule.sigma * excess, from, Kind::kGround, l, to, l + step, g, cols.map.spans.size()));
+    }
   }
+  limit_to(g, first, fluxes);
 }
 
-// The surfaces' amounts and one pass's sums: what each gives and takes.
-// The sums live in the object's scratch (SpanErosionScratch) and only the
-// entries a pass touched are cleared again, so a call costs what moves, not
-// the map's size.
+// Which columns a pass changed, so that the next pass examines only them
+// and their neighbours: a column's fluxes read its own surfaces and its four
+// neighbours' only, so where none of these changed it would find the same
+// fluxes again, and those all came to nothing (a source with nothing to
+// give or a target with no room, unchanged since): skipping it changes no
+// amount. A pass that finds only such fluxes is no longer counted.
+class ChangedColumns {
+ public:
+  ChangedColumns(const Columns& cols, std::vector<char>* flags) : cols_(cols), flags_(*flags) {
+    flags_.assign(cols.local_count(), 0);
+  }
+  // Local column l or a 4-neighbour changed in the last pass.
+  bool near(std::int64_t l) const { return flags_[static_cast<std::size_t>(l)] != 0; }
+  // Some column of row j is near().
+  bool row_near(int j) const { return rows_[static_cast<std::size_t>(j - cols_.j0 + Columns::kPad)] != 0; }
+  // Forgets the last pass's changes.
+  void forget() {
+    for (const std::int64_t l : marked_) flags_[static_cast<std::size_t>(l)] = 0;
+    marked_.clear();
+    std::fill(rows_.begin(), rows_.end(), 0);
+  }
+  // Local column l changed: it and its neighbours (it is in the first ring at most: the padding holds them)
+  // are near a change.
+  void mark(std::int64_t l) {
+    flag(l);
+    for (const std::int64_t step : steps_) flag(l + step);
+    const std::size_t row = static_cast<std::size_t>(l / steps_[2]);
+    rows_[row - 1] = rows_[row] = rows_[row + 1] = 1;
+  }
+
+ private:
+  void flag(std::int64_t l) {
+    if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = 1, marked_.push_back(l);
+  }
+  const Columns& cols_;
+  std::vector<char>& flags_;
+  std::vector<std::int64_t> marked_;  // the flagged columns
+  std::vector<char> rows_ = std::vector<char>(static_cast<std::size_t>(cols_.j1 - cols_.j0 + 1 + 2 * Columns::kPad), 0);
+  const std::array<std::int64_t, 4> steps_ = cols_.steps();
+};
+
+// One pass's exchange: each target takes at most its room (a pass's inflows
+// into it summed in flux order, in the object's scratch, all 0 between
+// passes: only the entries a pass touched are cleared again, so a call
+// costs what moves, not the map's size); the moves applied in flux order;
+// material falling into air gathered per column and released as particles
+// after the passes.
 struct Exchange {
   const GroundModel& model;
   SpanMap& map;
   GroundState* ground;
   const Columns& cols;
-  std::size_t n_spans, n_local;
-  // per surface: outflow, then inflow; spans first, then the columns' ground (and air)
-  std::vector<double>& out;
   std::vector<double>& in;
   std::vector<double>& released_m;
   std::vector<double>& release_z;
   std::vector<std::size_t>& released_at;  // the columns with released material, in the order they got it
 
   Exchange(const GroundModel& m, SpanMap& sm, GroundState* g, const Columns& c, SpanErosionScratch* scratch)
-      : model(m), map(sm), ground(g), cols(c), n_spans(sm.spans.size()), n_local(c.local_count()),
-        out(scratch->out), in(scratch->in), released_m(scratch->released_m), release_z(scratch->release_z),
-        released_at(scratch->released_at) {
-    if (out.size() < n_spans + n_local) out.resize(n_spans + n_local, 0.0), in.resize(n_spans + n_local, 0.0);
+      : model(m), map(sm), ground(g), cols(c), in(scratch->in), released_m(scratch->released_m),
+        release_z(scratch->release_z), released_at(scratch->released_at) {
+    const std::size_t n_local = c.local_count();
+    if (in.size() < sm.spans.size() + n_local) in.resize(sm.spans.size() + n_local, 0.0);
     if (released_m.size() < n_local) released_m.resize(n_local, 0.0), release_z.resize(n_local, -kInf);
     released_at.clear();
   }
 
-  std::size_t key(const Surface& s) const {
-    return static_cast<std::size_t>(s.kind == Kind::kSpan ? s.index : static_cast<std::int64_t>(n_spans) + s.index);
-  }
-  std::int64_t ground_cell(std::int64_t local) const { return cols.ground_cell(local); }
-  double& amount_of(const Surface& s) {
-    if (s.kind == Kind::kSpan) return map.spans[static_cast<std::size_t>(s.index)].material_m;
-    return ground->height.heights().data()[ground_cell(s.index)];
-  }
-
-  // a surface gives at most what it has, takes at most its room
-  void scale(std::vector<Flux>* fluxes) {
+  // Scales the fluxes (their sources' limits applied) to their targets' room, applies them, records the columns
+  // they changed.
+  void apply(std::vector<Flux>* fluxes, ChangedColumns* changed, SpanErosionResult* result) {
     for (const Flux& f : *fluxes) {
-      out[key(f.from)] = 0.0;
-      if (f.to.kind != Kind::kAir) in[key(f.to)] = 0.0;
+      if (f.to_kind != Kind::kAir) in[static_cast<std::size_t>(f.to_key)] += f.amount_m;
     }
-    for (const Flux& f : *fluxes) out[key(f.from)] += f.amount_m;
-    for (Flux& f : *fluxes) {
-      const double has = amount_of(f.from), total = out[key(f.from)];
-      if (total > has) f.amount_m *= has / total;
-      if (f.to.kind != Kind::kAir) in[key(f.to)] += f.amount_m;
-    }
-    for (Flux& f : *fluxes) {
-      if (f.to.kind == Kind::kAir) continue;
-      const double room = std::max(0.0, f.to.room_m - f.to.level_m), total = in[key(f.to)];
-      if (total > room) f.amount_m *= room / total;
-    }
-  }
-
-  void apply(const std::vector<Flux>& fluxes, SpanErosionResult* result) {
+    changed->forget();
     const double area = model.grid.cell_area_m2();
-    for (const Flux& f : fluxes) {
+    const double* h = ground->height.heights().data();
+    for (Flux& f : *fluxes) {
+      if (f.to_kind != Kind::kAir) {
+        const double total = in[static_cast<std::size_t>(f.to_key)];
+        if (total > f.room_or_z_m) f.amount_m *= f.room_or_z_m / total;
+      }
       if (!(f.amount_m > 0.0)) continue;
       ++result->moves;
-      amount_of(f.from) -= f.amount_m;
-      if (f.from.kind == Kind::kGround) {
+      *f.from_m -= f.amount_m;
+      changed->mark(f.from_local);
+      if (f.from_kind == Kind::kGround) {
         result->from_ground_m3 += f.amount_m * area;
-        ground->erosion.touch(ground_cell(f.from.index));
+        ground->erosion.touch(f.from_m - h);
       }
-      if (f.to.kind == Kind::kAir) {  // released after the passes
-        if (!(released_m[f.to.index] > 0.0)) released_at.push_back(static_cast<std::size_t>(f.to.index));
-        released_m[f.to.index] += f.amount_m;
-        release_z[f.to.index] = std::max(release_z[f.to.index], f.release_z_m);
+      if (f.to_kind == Kind::kAir) {  // released after the passes
+        const std::size_t l = static_cast<std::size_t>(f.to_local);
+        if (!(released_m[l] > 0.0)) released_at.push_back(l);
+        released_m[l] += f.amount_m;
+        release_z[l] = std::max(release_z[l], f.room_or_z_m);
         result->to_particles_m3 += f.amount_m * area;
         continue;
       }
-      amount_of(f.to) += f.amount_m;
-      if (f.to.kind == Kind::kGround) {
+      changed->mark(f.to_local);
+      *f.to_m += f.amount_m;
+      if (f.to_kind == Kind::kGround) {
         result->to_ground_m3 += f.amount_m * area;
-        ground->erosion.touch(ground_cell(f.to.index));
+        ground->erosion.touch(f.to_m - h);
       }
+    }
+    for (const Flux& f : *fluxes) {
+      if (f.to_kind != Kind::kAir) in[static_cast<std::size_t>(f.to_key)] = 0.0;
     }
   }
 
@@ -287,63 +343,6 @@ struct Exchange {
     }
     released_at.clear();
   }
-};
-
-// Which columns a pass changed, so that the next pass examines only them
-// and their neighbours: a column's fluxes read its own surfaces and its four
-// neighbours' only, so where none of these changed it would find the same
-// fluxes again, and those all came to nothing (a source with nothing to
-// give or a target with no room, unchanged since): skipping it changes no
-// amount. A pass that finds only such fluxes is no longer counted.
-class ChangedColumns {
- public:
-  ChangedColumns(const Columns& cols, std::vector<char>* flags, std::vector<std::int64_t>* local_of_span)
-      : cols_(cols), flags_(*flags), local_of_span_(*local_of_span) {
-    flags_.assign(cols.local_count(), 0);
-    const SpanMap& map = cols.map;
-    local_of_span_.resize(map.spans.size());
-    for (int j = cols.j0; j <= cols.j1; ++j) {  // beyond the box no column has spans
-      for (int i = cols.i0; i <= cols.i1; ++i) {
-        const std::int64_t c = map.cell(i, j);
-        for (std::int32_t k = map.first[c]; k < map.first[c + 1]; ++k) local_of_span_[k] = cols.local(i, j);
-      }
-    }
-  }
-  // Local column l or a 4-neighbour changed in the last pass.
-  bool near(std::int64_t l) const { return flags_[static_cast<std::size_t>(l)] != 0; }
-  // Some column of row j is near().
-  bool row_near(int j) const { return rows_[static_cast<std::size_t>(j - cols_.j0 + Columns::kPad)] != 0; }
-  // Forgets the last pass's changes, then records those of `fluxes` (applied).
-  void record(const std::vector<Flux>& fluxes) {
-    for (const std::int64_t l : marked_) flags_[static_cast<std::size_t>(l)] = 0;
-    marked_.clear();
-    std::fill(rows_.begin(), rows_.end(), 0);
-    for (const Flux& f : fluxes) {
-      if (!(f.amount_m > 0.0)) continue;
-      mark(f.from);
-      if (f.to.kind != Kind::kAir) mark(f.to);
-    }
-  }
-
- private:
-  void mark(const Surface& s) {
-    // a span: the column whose spans hold it
-    const std::int64_t l = s.kind == Kind::kSpan ? local_of_span_[static_cast<std::size_t>(s.index)] : s.index;
-    // it and its neighbours (it is in the first ring at most: the padding holds them) are near a change
-    flag(l);
-    for (const std::int64_t step : steps_) flag(l + step);
-    const std::size_t row = static_cast<std::size_t>(l / steps_[2]);
-    rows_[row - 1] = rows_[row] = rows_[row + 1] = 1;
-  }
-  void flag(std::int64_t l) {
-    if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = 1, marked_.push_back(l);
-  }
-  const Columns& cols_;
-  std::vector<char>& flags_;
-  std::vector<std::int64_t>& local_of_span_;
-  std::vector<std::int64_t> marked_;  // the flagged columns
-  std::vector<char> rows_ = std::vector<char>(static_cast<std::size_t>(cols_.j1 - cols_.j0 + 1 + 2 * Columns::kPad), 0);
-  const std::array<std::int64_t, 4> steps_ = cols_.steps();
 };
 
 // The columns with spans: [i0, i1] x [j0, j1] (empty when i1 < i0).
@@ -378,7 +377,7 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   const Columns cols{map, ground->height, ground_offset(map.grid, g), box};
   Exchange exchange(model.ground, map, ground, cols, &spans->erosion_scratch);
   std::vector<Flux>& fluxes = spans->erosion_scratch.fluxes;
-  ChangedColumns changed(cols, &spans->erosion_scratch.changed, &spans->erosion_scratch.local_of_span);
+  ChangedColumns changed(cols, &spans->erosion_scratch.changed);
   for (int p = 0; p < m.erosion_iterations; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {
@@ -391,9 +390,7 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
     }
     if (fluxes.empty()) break;
     result.passes = p + 1;
-    exchange.scale(&fluxes);
-    exchange.apply(fluxes, &result);
-    changed.record(fluxes);
+    exchange.apply(&fluxes, &changed, &result);
   }
   exchange.release(velocity_m_s, model.options.particle_spread_m_s, particles, rng);
   return result;

@@ -60,31 +60,29 @@ inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 enum class Kind : std::uint8_t { kSpan, kGround, kAir };
 
-// Where material lies or lands. index: a span's index in map.spans, else
-// the column's local index (ring included: see Columns::local).
-struct Surface {
-  Kind kind = Kind::kSpan;
-  std::int64_t index = 0;
-  double level_m = 0.0;
-  double room_m = kInf;  // highest level it may reach
-};
-
+// One pass's move of material off a surface (a span or the ground beside
+// the map) onto the surface it lands on (a span, the ground, or air: it
+// leaves as a particle). Where material lies or lands: a span is its index in
+// map.spans, the ground or air its column's local index (ring included: see
+// Columns::local in span_erosion.cpp).
 struct Flux {
-  Surface from, to;
   double amount_m;
-  double release_z_m;  // air: the height it leaves at
+  double room_or_z_m;   // to a span or the ground: the room it has (>= 0); to air: the height it leaves at
+  double* from_m;       // what the source holds: a span's material or the ground's height
+  double* to_m;         // the same of the target; nullptr for air
+  std::int32_t to_key;  // the target's entry in the pass's inflow sums: a span's index, else span count + column
+  std::int32_t from_local, to_local;  // the columns (local indices) of source and target
+  Kind from_kind, to_kind;
 };
-
 }  // namespace span_erosion_detail
 
 // What erode_spans reuses from call to call (no allocation per step once
-// grown); its contents between calls mean nothing.
+// grown); its contents between calls mean nothing, except that `in` is all 0.
 struct SpanErosionScratch {
   std::vector<span_erosion_detail::Flux> fluxes;
-  std::vector<double> out, in, released_m, release_z;
+  std::vector<double> in, released_m, release_z;  // in: all 0 between passes
   std::vector<std::size_t> released_at;
   std::vector<char> changed;  // per column (ring included): it or a neighbour changed in the last pass
-  std::vector<std::int64_t> local_of_span;  // the column (local index) of each span
 };
 
 struct SpanErosionResult {
