@@ -22,14 +22,6 @@ constexpr int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 
 using namespace span_erosion_detail;
 
-// The map's columns with spans (the box [i0, i1] x [j0, j1] of the map's
-// cells holding any) and the ground under them, two rings of cells beyond
-// (the second only so that a ring column's neighbours need no bounds
-// check: nothing beyond the first ring has spans or takes part). Local
-// indices run row-major over that padded window. Each local column's first
-// span, span count (0 where it has none), lowest span's top and bottom (+inf
-// without spans) and ground cell (-1 beyond the grid) are looked up once
-// per call: the spans' solids and the cells do not change during erosion.
 // A surface material at some height lands on (Columns::landing).
 struct Landing {
   Kind kind;
@@ -40,6 +32,14 @@ struct Landing {
   double* amount_m;    // what it holds (a span's material, the ground's height); nullptr for air
 };
 
+// The map's columns with spans (the box [i0, i1] x [j0, j1] of the map's
+// cells holding any) and the ground under them, two rings of cells beyond
+// (the second only so that a ring column's neighbours need no bounds
+// check: nothing beyond the first ring has spans or takes part). Local
+// indices run row-major over that padded window. Each local column's first
+// span, span count (0 where it has none), lowest span's top and bottom (+inf
+// without spans) and ground cell (-1 beyond the grid) are looked up once
+// per call: the spans' solids and the cells do not change during erosion.
 class Columns {
  public:
   static constexpr int kPad = 2;
@@ -103,28 +103,38 @@ class Columns {
   // The least of its four neighbours' lowest_top (local column l in the map or its first ring).
   double neighbours_lowest_top(std::int64_t l) const { return neighbours_lowest_top_[static_cast<std::size_t>(l)]; }
 
-  // The surface material at height z entering local column l lands on; false when z is inside its solid.
-  bool landing(std::int64_t l, double z, Landing* out) const {
-    const std::size_t at = static_cast<std::size_t>(l);
-    const int n = count_[at];
-    Span* s = map.spans.data() + first_[at];  // not read when n == 0
-    int k = n - 1;
-    while (k >= 0 && s[k].top_m > z) --k;
-    if (k >= 0) {
-      if (k + 1 < n && s[k + 1].bottom_m <= z) return false;
-      *out = {Kind::kSpan, first_[at] + k, s[k].level_m(), k + 1 < n ? s[k + 1].bottom_m : kInf, s[k].top_m,
-              &s[k].material_m};
+  // What landing() reads, as plain pointers: copied into a caller's locals, they stay in registers across the
+  // stores of its fluxes, where the vectors' data would be loaded again for every lookup.
+  struct View {
+    const std::int32_t* first;
+    const std::int32_t* count;
+    const std::int64_t* ground_cell;
+    Span* spans;
+    double* heights;
+
+    // The surface material at height z entering local column l lands on; false when z is inside its solid.
+    bool landing(std::int64_t l, double z, Landing* out) const {
+      const int n = count[l];
+      Span* s = spans + first[l];  // not read when n == 0
+      int k = n - 1;
+      while (k >= 0 && s[k].top_m > z) --k;
+      if (k >= 0) {
+        if (k + 1 < n && s[k + 1].bottom_m <= z) return false;
+        *out = {Kind::kSpan, first[l] + k, s[k].level_m(), k + 1 < n ? s[k + 1].bottom_m : kInf, s[k].top_m,
+                &s[k].material_m};
+        return true;
+      }
+      if (n > 0 && s[0].bottom_m <= z) return false;
+      if (ground_cell[l] < 0) {
+        *out = {Kind::kAir, l, 0.0, kInf, -kInf, nullptr};  // beyond the grid: it falls off
+        return true;
+      }
+      double* h = heights + ground_cell[l];
+      *out = {Kind::kGround, l, *h, n > 0 ? s[0].bottom_m : kInf, *h, h};
       return true;
     }
-    if (n > 0 && s[0].bottom_m <= z) return false;
-    if (ground_cell_[at] < 0) {
-      *out = {Kind::kAir, l, 0.0, kInf, -kInf, nullptr};  // beyond the grid: it falls off
-      return true;
-    }
-    double* h = ground.heights().data() + ground_cell_[at];
-    *out = {Kind::kGround, l, *h, n > 0 ? s[0].bottom_m : kInf, *h, h};
-    return true;
-  }
+  };
+  View view() const { return {first_.data(), count_.data(), ground_cell_.data(), map.spans.data(), ground.heights().data()}; }
   // The local index steps to the neighbours, in kNeighbours' order.
   const std::array<std::int64_t, 4>& steps() const { return steps_; }
 
@@ -152,16 +162,17 @@ Flux make_flux(double amount_m, double* from_m, Kind from_kind, std::int64_t fro
           from_kind, to.kind};
 }
 
-// A surface gives at most what it has: its fluxes (from `first` on) scaled down together where they would exceed it.
-void limit_to(double has, std::size_t first, std::vector<Flux>* fluxes) {
+// A surface gives at most what it has: its fluxes [begin, end) scaled down together where they would exceed it.
+void limit_to(double has, Flux* begin, Flux* end) {
   double total = 0.0;
-  for (std::size_t f = first; f < fluxes->size(); ++f) total += (*fluxes)[f].amount_m;
+  for (const Flux* f = begin; f != end; ++f) total += f->amount_m;
   if (!(total > has)) return;
-  for (std::size_t f = first; f < fluxes->size(); ++f) (*fluxes)[f].amount_m *= has / total;
+  for (Flux* f = begin; f != end; ++f) f->amount_m *= has / total;
 }
 
 // The fluxes off the spans of local column l (one of the map's).
 void add_span_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, std::vector<Flux>* fluxes) {
+  const Columns::View view = cols.view();
   const int n = cols.count(l);
   Span* spans = cols.map.spans.data() + cols.first(l);
   const std::size_t n_spans = cols.map.spans.size();
@@ -169,31 +180,33 @@ void add_span_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, 
     Span& s = spans[k];
     if (!(s.material_m > rule.dust_m)) continue;  // round-off left by a slide stays put
     const double level = s.level_m();
-    const std::size_t first = fluxes->size();
     std::array<double, 4> slide{};  // per flux: its support's drop, where steeper than the repose slope
     double slide_total = 0.0;       // over the neighbours whose support drops more than the repose slope
+    std::size_t made = 0;           // fluxes made off this span
     for (const std::int64_t step : cols.steps()) {
       Landing to;
-      if (!cols.landing(l + step, level, &to)) continue;
+      if (!view.landing(l + step, level, &to)) continue;
       const double excess = level - to.level_m - rule.max_dh_m;
       if (!(excess > rule.tolerance_m)) continue;
       // (a layer thinner than the tolerance is round-off, left where it is as by the slope rule)
       const double steep =
           s.material_m > rule.tolerance_m ? std::min(s.top_m - to.support_m - rule.max_dh_m, rule.slide_cap_m) : 0.0;
       if (to.kind == Kind::kGround && s.top_m - to.level_m > rule.near_m) to.kind = Kind::kAir;  // falls
-      slide[fluxes->size() - first] = steep > rule.tolerance_m ? steep : 0.0;
+      slide[made++] = steep > rule.tolerance_m ? steep : 0.0;
       fluxes->push_back(make_flux(rule.sigma * excess, &s.material_m, Kind::kSpan, l, to, l + step, level, n_spans));
       if (steep > rule.tolerance_m) slide_total += steep;
     }
     // unsupported: the span's own surface falls more steeply than the repose slope towards these
     // neighbours, so none of its material can rest on it; all of it slides, shared by steepness
+    if (made == 0) continue;
+    Flux* const end = fluxes->data() + fluxes->size();
+    Flux* const begin = end - made;
     if (slide_total > 0.0) {
-      for (std::size_t f = first; f < fluxes->size(); ++f) {
-        Flux& flux = (*fluxes)[f];
-        if (slide[f - first] > 0.0) flux.amount_m = std::max(flux.amount_m, s.material_m * slide[f - first] / slide_total);
+      for (std::size_t f = 0; f < made; ++f) {
+        if (slide[f] > 0.0) begin[f].amount_m = std::max(begin[f].amount_m, s.material_m * slide[f] / slide_total);
       }
     }
-    limit_to(s.material_m, first, fluxes);
+    limit_to(s.material_m, begin, end);
   }
 }
 
@@ -211,14 +224,14 @@ void add_ground_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l
     // only a span whose top is at or below g can take it: none when the lowest one's is above (or there is none)
     if (cols.lowest_top(l + step) > g) continue;
     Landing to;
-    if (!cols.landing(l + step, g, &to) || to.kind != Kind::kSpan) continue;
+    if (!cols.view().landing(l + step, g, &to) || to.kind != Kind::kSpan) continue;
     const double excess = g - to.level_m - rule.max_dh_m;
     if (excess > rule.tolerance_m) {
       fluxes->push_back(
           make_flux(rule.sigma * excess, from, Kind::kGround, l, to, l + step, g, cols.map.spans.size()));
     }
   }
-  limit_to(g, first, fluxes);
+  limit_to(g, fluxes->data() + first, fluxes->data() + fluxes->size());
 }
 
 // Which columns a pass changed, so that the next pass examines only them
@@ -245,15 +258,19 @@ class ChangedColumns {
   // Local column l changed: it and its neighbours (it is in the first ring at most: the padding holds them)
   // are near a change.
   void mark(std::int64_t l) {
-    flag(l);
+    char& f = flags_[static_cast<std::size_t>(l)];
+    if (f == kChanged) return;  // marked already in this pass
+    if (f == 0) marked_.push_back(l);
+    f = kChanged;
     for (const std::int64_t step : steps_) flag(l + step);
     const std::size_t row = static_cast<std::size_t>(l / steps_[2]);
     rows_[row - 1] = rows_[row] = rows_[row + 1] = 1;
   }
 
  private:
+  static constexpr char kNear = 1, kChanged = 2;  // flags: a neighbour changed; the column changed (and is near)
   void flag(std::int64_t l) {
-    if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = 1, marked_.push_back(l);
+    if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = kNear, marked_.push_back(l);
   }
   const Columns& cols_;
   std::vector<char>& flags_;
