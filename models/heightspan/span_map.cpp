@@ -41,8 +41,12 @@ struct Edge {
     const Eigen::Vector2d& b = negate ? u : v;
     ox = a.x(), oy = a.y(), dx = b.x() - a.x(), dy = b.y() - a.y();
   }
-  double at(double px, double py) const {
-    const double w = dx * (py - oy) - dy * (px - ox);
+  double at(double px, double py) const { return from_row(row(py), px); }
+  // at(px, py) in two parts: row(py) is the same for a row of centres, so it is worked out once per row
+  // (the same product as at() forms, so the same bits).
+  double row(double py) const { return dx * (py - oy); }
+  double from_row(double row_term, double px) const {
+    const double w = row_term - dy * (px - ox);
     return negate ? -w : w;
   }
   bool covers(double w) const { return w > 0.0 || (w == 0.0 && owned); }
@@ -65,10 +69,15 @@ void rasterise(Eigen::Vector3d a, Eigen::Vector3d b, Eigen::Vector3d c, const Gr
   const Edge ea(b2, c2), eb(c2, a2), ec(a2, b2);
   for (int j = j0; j <= j1; ++j) {
     const double py = grid.centre_y(j);
+    const double ra = ea.row(py), rb = eb.row(py), rc = ec.row(py);
     for (int i = i0; i <= i1; ++i) {
       const double px = grid.centre_x(i);
-      const double wa = ea.at(px, py), wb = eb.at(px, py), wc = ec.at(px, py);
-      if (!ea.covers(wa) || !eb.covers(wb) || !ec.covers(wc)) continue;
+      const double wa = ea.from_row(ra, px);
+      if (!ea.covers(wa)) continue;  // the other edges only where this one covers the centre
+      const double wb = eb.from_row(rb, px);
+      if (!eb.covers(wb)) continue;
+      const double wc = ec.from_row(rc, px);
+      if (!ec.covers(wc)) continue;
       const double sum = wa + wb + wc;
       if (!(sum > 0.0)) continue;
       const double z = (wa * a.z() + wb * b.z() + wc * c.z()) / sum;
