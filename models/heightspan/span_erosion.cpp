@@ -112,26 +112,30 @@ class Columns {
     Span* spans;
     double* heights;
 
-    // The surface material at height z entering local column l lands on; false when z is inside its solid.
-    bool landing(std::int64_t l, double z, Landing* out) const {
+    // Where material at height z entering local column l lands: false when z is inside its solid; else the
+    // level there (*level_m) and the span it lands on (*k, its index in the column's; -1: the ground, or air
+    // beyond the grid). Only the level: most landings make no flux, and landing() gives the rest.
+    bool lands(std::int64_t l, double z, int* k, double* level_m) const {
       const int n = count[l];
-      Span* s = spans + first[l];  // not read when n == 0
-      int k = n - 1;
-      while (k >= 0 && s[k].top_m > z) --k;
-      if (k >= 0) {
-        if (k + 1 < n && s[k + 1].bottom_m <= z) return false;
-        *out = {Kind::kSpan, first[l] + k, s[k].level_m(), k + 1 < n ? s[k + 1].bottom_m : kInf, s[k].top_m,
-                &s[k].material_m};
-        return true;
-      }
-      if (n > 0 && s[0].bottom_m <= z) return false;
-      if (ground_cell[l] < 0) {
-        *out = {Kind::kAir, l, 0.0, kInf, -kInf, nullptr};  // beyond the grid: it falls off
-        return true;
-      }
-      double* h = heights + ground_cell[l];
-      *out = {Kind::kGround, l, *h, n > 0 ? s[0].bottom_m : kInf, *h, h};
+      const Span* s = spans + first[l];  // not read when n == 0
+      int kk = n - 1;
+      while (kk >= 0 && s[kk].top_m > z) --kk;
+      if (kk + 1 < n && s[kk + 1].bottom_m <= z) return false;  // the span above z (or the lowest one) reaches it
+      *k = kk;
+      *level_m = kk >= 0 ? s[kk].level_m() : ground_cell[l] < 0 ? 0.0 : heights[ground_cell[l]];
       return true;
+    }
+    // The surface of lands(): span k of local column l's, or below them the ground (air beyond the grid).
+    Landing landing(std::int64_t l, int k) const {
+      const int n = count[l];
+      Span* s = spans + first[l];
+      if (k >= 0) {
+        return {Kind::kSpan, first[l] + k, s[k].level_m(), k + 1 < n ? s[k + 1].bottom_m : kInf, s[k].top_m,
+                &s[k].material_m};
+      }
+      if (ground_cell[l] < 0) return {Kind::kAir, l, 0.0, kInf, -kInf, nullptr};  // beyond the grid: it falls off
+      double* h = heights + ground_cell[l];
+      return {Kind::kGround, l, *h, n > 0 ? s[0].bottom_m : kInf, *h, h};
     }
   };
   View view() const { return {first_.data(), count_.data(), ground_cell_.data(), map.spans.data(), ground.heights().data()}; }
@@ -184,10 +188,12 @@ void add_span_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, 
     double slide_total = 0.0;       // over the neighbours whose support drops more than the repose slope
     std::size_t made = 0;           // fluxes made off this span
     for (const std::int64_t step : cols.steps()) {
-      Landing to;
-      if (!view.landing(l + step, level, &to)) continue;
-      const double excess = level - to.level_m - rule.max_dh_m;
+      int k_to;
+      double to_level_m;
+      if (!view.lands(l + step, level, &k_to, &to_level_m)) continue;
+      const double excess = level - to_level_m - rule.max_dh_m;
       if (!(excess > rule.tolerance_m)) continue;
+      Landing to = view.landing(l + step, k_to);
       // (a layer thinner than the tolerance is round-off, left where it is as by the slope rule)
       const double steep =
           s.material_m > rule.tolerance_m ? std::min(s.top_m - to.support_m - rule.max_dh_m, rule.slide_cap_m) : 0.0;
@@ -216,6 +222,7 @@ void add_ground_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l
   if (gc < 0) return;
   double* from = cols.ground.heights().data() + gc;
   const double g = *from;
+  const Columns::View view = cols.view();
   // only a span whose top is at or below g can take it: none when every neighbour's lowest one's is above
   if (cols.neighbours_lowest_top(l) > g) return;
   if (g > cols.lowest_bottom(l)) return;  // under the object: not exposed
@@ -223,12 +230,13 @@ void add_ground_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l
   for (const std::int64_t step : cols.steps()) {
     // only a span whose top is at or below g can take it: none when the lowest one's is above (or there is none)
     if (cols.lowest_top(l + step) > g) continue;
-    Landing to;
-    if (!cols.view().landing(l + step, g, &to) || to.kind != Kind::kSpan) continue;
-    const double excess = g - to.level_m - rule.max_dh_m;
+    int k_to;
+    double to_level_m;
+    if (!view.lands(l + step, g, &k_to, &to_level_m) || k_to < 0) continue;  // onto a span only
+    const double excess = g - to_level_m - rule.max_dh_m;
     if (excess > rule.tolerance_m) {
-      fluxes->push_back(
-          make_flux(rule.sigma * excess, from, Kind::kGround, l, to, l + step, g, cols.map.spans.size()));
+      fluxes->push_back(make_flux(rule.sigma * excess, from, Kind::kGround, l, view.landing(l + step, k_to), l + step,
+                                  g, cols.map.spans.size()));
     }
   }
   limit_to(g, fluxes->data() + first, fluxes->data() + fluxes->size());
