@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -230,8 +231,8 @@ struct PairScan {
   // (0..3: +x, -x, +y, -y).
   using Candidate = std::array<std::int32_t, 2>;
 
-  // The memory's cells (ij: their (i, j)); `candidates` is scratch.
-  void cells(const std::vector<std::int64_t>& cs, const std::vector<std::array<int, 2>>& ij,
+  // The memory's cells (ij: their (i, j) and whether they are off the grid's edge); `candidates` is scratch.
+  void cells(const std::vector<std::int64_t>& cs, const std::vector<std::array<int, 3>>& ij,
              std::vector<Candidate>* candidates) {
     if (candidates->size() < 4 * cs.size()) candidates->resize(4 * cs.size());
     const std::size_t found = over_limit(cs, ij, candidates->data());
@@ -248,7 +249,7 @@ struct PairScan {
 
   // The pairs whose difference exceeds the smallest limit by more than the
   // tolerance (no flux otherwise, whichever cell is higher), in visiting order.
-  std::size_t over_limit(const std::vector<std::int64_t>& cs, const std::vector<std::array<int, 2>>& ij,
+  std::size_t over_limit(const std::vector<std::int64_t>& cs, const std::vector<std::array<int, 3>>& ij,
                          Candidate* out) {
     const int nx = model.grid.nx, ny = model.grid.ny;  // closed boundary: no pair leaves the grid
     const double* hh = h;
@@ -256,26 +257,34 @@ struct PairScan {
     const ErosionMemory& mem = memory;
     std::size_t found = 0;
     long long seen = 0;
-    for (std::size_t k = 0; k < cs.size(); ++k) {
+    // one cell's pairs; `inner` (a cell off the grid's edge: all four neighbours on it) known at compile time
+    // where it is true, so that the edge tests drop out for most cells
+    auto scan = [&](auto inner, std::size_t k) {
       const std::int64_t c = cs[k];
-      const int i = ij[k][0], j = ij[k][1];
       const double hc = hh[c];
       const std::int32_t kk = static_cast<std::int32_t>(k);
-      if (i + 1 < nx) {
+      if (inner || ij[k][0] + 1 < nx) {
         ++seen;
         if (std::abs(hc - hh[c + 1]) - lim > tol) out[found++] = {kk, 0};
       }
-      if (i > 0 && !mem.contains(c - 1)) {
+      if ((inner || ij[k][0] > 0) && !mem.contains(c - 1)) {
         ++seen;
         if (std::abs(hc - hh[c - 1]) - lim > tol) out[found++] = {kk, 1};
       }
-      if (j + 1 < ny) {
+      if (inner || ij[k][1] + 1 < ny) {
         ++seen;
         if (std::abs(hc - hh[c + nx]) - lim > tol) out[found++] = {kk, 2};
       }
-      if (j > 0 && !mem.contains(c - nx)) {
+      if ((inner || ij[k][1] > 0) && !mem.contains(c - nx)) {
         ++seen;
         if (std::abs(hc - hh[c - nx]) - lim > tol) out[found++] = {kk, 3};
+      }
+    };
+    for (std::size_t k = 0; k < cs.size(); ++k) {
+      if (ij[k][2] != 0) {
+        scan(std::true_type{}, k);
+      } else {
+        scan(std::false_type{}, k);
       }
     }
     visits += seen;
@@ -359,14 +368,15 @@ ErosionResult erode(const GroundModel& model, const GroundParams& params, const 
   REPOSE_DEMAND(g.cell_count() <= static_cast<std::size_t>(std::numeric_limits<int>::max()));
   std::vector<Flux>& fluxes = state->erosion_scratch.fluxes;
   std::vector<double>& inflow = inflow_scratch(g, state);
-  std::vector<std::array<int, 2>>& ij = state->erosion_scratch.ij;  // of memory.cells(), divided out once: a pass would repeat it
+  std::vector<std::array<int, 3>>& ij = state->erosion_scratch.ij;  // of memory.cells(), divided out once: a pass would repeat it
   ij.clear();
   for (int p = 0; p < passes && !memory.empty(); ++p) {
     fluxes.clear();
     const std::vector<std::int64_t>& cells = memory.cells();
     for (std::size_t k = ij.size(); k < cells.size(); ++k) {
       const int c = static_cast<int>(cells[k]);
-      ij.push_back({c % g.nx, c / g.nx});
+      const int i = c % g.nx, j = c / g.nx;
+      ij.push_back({i, j, i > 0 && j > 0 && i + 1 < g.nx && j + 1 < g.ny ? 1 : 0});
     }
     PairScan scan{model, rules, ceiling, memory, h, tolerance_m, p, one_material, &fluxes, min_max_dh_m};
     scan.cells(cells, ij, &state->erosion_scratch.candidates);

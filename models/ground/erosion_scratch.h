@@ -23,7 +23,7 @@ struct ErosionScratch {
   // A pass's fluxes, and the remembered cells' (i, j) (erode() fills them
   // afresh every call): kept only so that their capacity is.
   std::vector<ErosionFlux> fluxes;
-  std::vector<std::array<int, 2>> ij;
+  std::vector<std::array<int, 3>> ij;  // (i, j, 1 where all four neighbours are on the grid)
   // A pass's pairs over the smallest limit: (index in the memory's cells, direction).
   std::vector<std::array<std::int32_t, 2>> candidates;
 };
