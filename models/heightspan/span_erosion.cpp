@@ -257,32 +257,28 @@ class ChangedColumns {
   bool near(std::int64_t l) const { return flags_[static_cast<std::size_t>(l)] != 0; }
   // Some column of row j is near().
   bool row_near(int j) const { return rows_[static_cast<std::size_t>(j - cols_.j0 + Columns::kPad)] != 0; }
-  // Forgets the last pass's changes.
+  // Forgets the last pass's changes: only rows near a change have flags set.
   void forget() {
-    for (const std::int64_t l : marked_) flags_[static_cast<std::size_t>(l)] = 0;
-    marked_.clear();
-    std::fill(rows_.begin(), rows_.end(), 0);
+    const std::size_t stride = static_cast<std::size_t>(steps_[2]);
+    for (std::size_t r = 0; r < rows_.size(); ++r) {
+      if (rows_[r]) std::fill_n(flags_.begin() + static_cast<std::ptrdiff_t>(r * stride), stride, 0), rows_[r] = 0;
+    }
   }
   // Local column l changed: it and its neighbours (it is in the first ring at most: the padding holds them)
   // are near a change.
   void mark(std::int64_t l) {
-    char& f = flags_[static_cast<std::size_t>(l)];
-    if (f == kChanged) return;  // marked already in this pass
-    if (f == 0) marked_.push_back(l);
-    f = kChanged;
-    for (const std::int64_t step : steps_) flag(l + step);
+    char* f = flags_.data() + l;
+    if (*f & kChanged) return;  // marked already in this pass
+    *f |= kChanged | kNear;
+    for (const std::int64_t step : steps_) f[step] |= kNear;
     const std::size_t row = static_cast<std::size_t>(l / steps_[2]);
     rows_[row - 1] = rows_[row] = rows_[row + 1] = 1;
   }
 
  private:
-  static constexpr char kNear = 1, kChanged = 2;  // flags: a neighbour changed; the column changed (and is near)
-  void flag(std::int64_t l) {
-    if (!flags_[static_cast<std::size_t>(l)]) flags_[static_cast<std::size_t>(l)] = kNear, marked_.push_back(l);
-  }
+  static constexpr char kNear = 1, kChanged = 2;  // flag bits: it or a neighbour changed; it changed
   const Columns& cols_;
   std::vector<char>& flags_;
-  std::vector<std::int64_t> marked_;  // the flagged columns
   std::vector<char> rows_ = std::vector<char>(static_cast<std::size_t>(cols_.j1 - cols_.j0 + 1 + 2 * Columns::kPad), 0);
   const std::array<std::int64_t, 4> steps_ = cols_.steps();
 };
