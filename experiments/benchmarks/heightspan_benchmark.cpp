@@ -47,6 +47,18 @@
 // 118.9 (the load above inflated it 1.4x); the height-span run 0.0152 to
 // 0.0231 s at 5 mm (10 runs, median 0.0192: 6,200x; fastest 7,800x) and
 // median 0.109 s at 2.5 mm (5 runs: 1,090x). So 10^4x is not met.
+// Session 19 (2026-11-27, branch scoop-speed-2 on main ab49db8): span and
+// ground erosion and CPU peeling made cheaper with byte-identical outputs
+// (13 heightspan scene runs, manifests' measures too). Instructions of the
+// 5 mm run (valgrind --tool=callgrind --toggle-collect=
+// 'repose::(anonymous namespace)::CompiledHeightSpan::run*' build/bin/repose
+// run experiments/scenes/ref_scoop.yaml --solver heightspan $S, $S the
+// fitted values, frames off, --set ground.cell_size_m=0.005): 201.0 ->
+// 172.9 M (-14.0 %; erode_spans 94.7 -> 72.6 M, erode 55.6 -> 50.1 M,
+// peel_spans 9.7 -> 9.0 M); BM_ScoopPath 4,492.2 -> 4,163.4 M (-7.3 %).
+// run.cpu_s of that run, 10 runs of each binary in turn (18:23 UTC, load
+// 1.3-1.4): medians 0.01503 -> 0.01338 s (-11 %): 7,910x -> 8,890x
+// LIGGGHTS' 118.9 s. 10^4x (<= 0.0119 s) is still not met.
 
 #include <benchmark/benchmark.h>
 
