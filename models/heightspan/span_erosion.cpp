@@ -22,7 +22,7 @@ constexpr int kNeighbours[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 
 using namespace span_erosion_detail;
 
-// A surface material at some height lands on (Columns::landing).
+// A surface material at some height lands on (Columns::View::landing).
 struct Landing {
   Kind kind;
   std::int64_t index;  // a span's index in map.spans, else the local column
@@ -103,8 +103,8 @@ class Columns {
   // The least of its four neighbours' lowest_top (local column l in the map or its first ring).
   double neighbours_lowest_top(std::int64_t l) const { return neighbours_lowest_top_[static_cast<std::size_t>(l)]; }
 
-  // What landing() reads, as plain pointers: copied into a caller's locals, they stay in registers across the
-  // stores of its fluxes, where the vectors' data would be loaded again for every lookup.
+  // What lands() and landing() read, as plain pointers: copied into a caller's locals, they stay in
+  // registers across the stores of its fluxes, where the vectors' data would be loaded for every lookup.
   struct View {
     const std::int32_t* first;
     const std::int32_t* count;
@@ -138,7 +138,9 @@ class Columns {
       return {Kind::kGround, l, *h, n > 0 ? s[0].bottom_m : kInf, *h, h};
     }
   };
-  View view() const { return {first_.data(), count_.data(), ground_cell_.data(), map.spans.data(), ground.heights().data()}; }
+  View view() const {
+    return {first_.data(), count_.data(), ground_cell_.data(), map.spans.data(), ground.heights().data()};
+  }
   // The local index steps to the neighbours, in kNeighbours' order.
   const std::array<std::int64_t, 4>& steps() const { return steps_; }
 
