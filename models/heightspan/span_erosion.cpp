@@ -46,10 +46,11 @@ class Columns {
   SpanMap& map;
   HeightField& ground;
   CellOffset off;
-  int i0, i1, j0, j1;  // the box
+  int i0, i1, j0, j1;    // the box
+  std::size_t n_spans;  // map.spans.size(), which divides by sizeof(Span) every time
 
   Columns(SpanMap& m, HeightField& g, CellOffset o, const std::array<int, 4>& box)
-      : map(m), ground(g), off(o), i0(box[0]), i1(box[1]), j0(box[2]), j1(box[3]) {
+      : map(m), ground(g), off(o), i0(box[0]), i1(box[1]), j0(box[2]), j1(box[3]), n_spans(m.spans.size()) {
     first_.assign(local_count(), 0);
     count_.assign(local_count(), 0);
     ground_cell_.assign(local_count(), -1);
@@ -181,7 +182,7 @@ void add_span_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l, 
   const Columns::View view = cols.view();
   const int n = cols.count(l);
   Span* spans = cols.map.spans.data() + cols.first(l);
-  const std::size_t n_spans = cols.map.spans.size();
+  const std::size_t n_spans = cols.n_spans;
   for (int k = 0; k < n; ++k) {
     Span& s = spans[k];
     if (!(s.material_m > rule.dust_m)) continue;  // round-off left by a slide stays put
@@ -238,7 +239,7 @@ void add_ground_fluxes(const Columns& cols, const PassRule& rule, std::int64_t l
     const double excess = g - to_level_m - rule.max_dh_m;
     if (excess > rule.tolerance_m) {
       fluxes->push_back(make_flux(rule.sigma * excess, from, Kind::kGround, l, view.landing(l + step, k_to), l + step,
-                                  g, cols.map.spans.size()));
+                                  g, cols.n_spans));
     }
   }
   limit_to(g, fluxes->data() + first, fluxes->data() + fluxes->size());
