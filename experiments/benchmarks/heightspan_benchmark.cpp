@@ -54,11 +54,12 @@
 // 'repose::(anonymous namespace)::CompiledHeightSpan::run*' build/bin/repose
 // run experiments/scenes/ref_scoop.yaml --solver heightspan $S, $S the
 // fitted values, frames off, --set ground.cell_size_m=0.005): 201.0 ->
-// 172.9 M (-14.0 %; erode_spans 94.7 -> 72.6 M, erode 55.6 -> 50.1 M,
-// peel_spans 9.7 -> 9.0 M); BM_ScoopPath 4,492.2 -> 4,163.4 M (-7.3 %).
-// run.cpu_s of that run, 10 runs of each binary in turn (18:23 UTC, load
-// 1.3-1.4): medians 0.01503 -> 0.01338 s (-11 %): 7,910x -> 8,890x
-// LIGGGHTS' 118.9 s. 10^4x (<= 0.0119 s) is still not met.
+// 171.8 M (-14.5 %; erode_spans 94.7 -> 71.4 M, erode 55.6 -> 50.1 M,
+// peel_spans 9.7 -> 9.0 M); at the scene's 2.5 mm 1,623.6 -> 1,368.6 M
+// (-15.7 %); BM_ScoopPath 4,492.2 -> 4,154.1 M (-7.5 %). run.cpu_s of the
+// 5 mm run, 10 runs of each binary in turn (18:33 UTC, load 1.3-1.4):
+// medians 0.01581 -> 0.01399 s (-11.5 %): 7,520x -> 8,500x LIGGGHTS'
+// 118.9 s. 10^4x (<= 0.0119 s) is still not met.
 
 #include <benchmark/benchmark.h>
 
