@@ -118,6 +118,7 @@ json scenes_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
     const SceneError& e = fit.scenes[k];
     scenes.push_back({{"name", e.name},
                       {"role", e.fit ? "fit" : "held_out"},
+                      {"beds", problem.scenes()[k].bed_count() > 1 ? "each" : "mean"},
                       {"scene_path", repository_relative(problem.scenes()[k].entry.scene_path)},
                       {"rmse_initial_m", e.rmse_initial_m},
                       {"rmse_fitted_m", e.rmse_fitted_m},

@@ -180,7 +180,7 @@ ReferenceSpec read_reference(const Context& ctx, const YamlValue& value, const s
 }
 
 CalibrationScene read_scene_entry(const Context& ctx, const YamlValue& value) {
-  const YamlMap map = value.map({"scene", "name", "role", "reference", "observables", "rmse_region_m", "field", "seed"});
+  const YamlMap map = value.map({"scene", "name", "role", "reference", "observables", "rmse_region_m", "field", "seed", "beds"});
   CalibrationScene s;
   s.scene_path = existing(ctx, map.required("scene", "a scene file"), false, "a scene file");
   s.name = map.string_or("name", "");
@@ -194,6 +194,14 @@ CalibrationScene read_scene_entry(const Context& ctx, const YamlValue& value) {
   }
   if (auto r = map.get("rmse_region_m")) s.rmse_region = read_region(*r);
   if (map.has("seed")) s.seed = static_cast<std::uint64_t>(map.integer_or("seed", IntRange{0, std::int64_t{1} << 62}, 0));
+  if (auto beds = map.get("beds")) {
+    if (beds->choice({"mean", "each"}) == 1) {
+      if (s.reference.kind != ReferenceSpec::Kind::kData || s.reference.directories.size() < 2) {
+        beds->fail("mean, or each with a data reference of two or more seeds' folders", "each");
+      }
+      s.beds = CalibrationScene::Beds::kEach;
+    }
+  }
   return s;
 }
 

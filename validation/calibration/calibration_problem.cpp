@@ -219,6 +219,9 @@ CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistr
       // name the calibration file's line too: the reference it points at is the one to fix
       throw InputError(fmt::format("{}: reference: {}", s.entry.reference.location, e.what()));
     }
+    if (s.entry.beds == CalibrationScene::Beds::kEach) {
+      for (const HeightField& bed : s.seed_initial) s.bed_solvers.push_back(solver_->compile(starting_from(s.scene, bed)));
+    }
     s.scene = starting_from(std::move(s.scene), s.initial);
     s.solver = solver_->compile(s.scene);
     try {
@@ -325,14 +328,12 @@ std::vector<double> CalibrationProblem::solver_values(const PreparedScene& scene
   return solver_values;
 }
 
-HeightField CalibrationProblem::run(const PreparedScene& scene, const std::vector<double>& values) const {
-  return run_whole(scene, values).field(scene.entry.field);
-}
-
-Run CalibrationProblem::run_whole(const PreparedScene& scene, const std::vector<double>& values) const {
+Run CalibrationProblem::run_on_bed(const PreparedScene& scene, const std::vector<double>& values, std::size_t bed) const {
+  REPOSE_DEMAND(bed < scene.bed_count());
   // the scene file, its bed and its reference folders fix the scene the solver was compiled for
   std::string key = scene.entry.scene_path + "\nseed " + std::to_string(scene.scene.seed);
   for (const std::string& dir : scene.entry.reference.directories) key += "\n" + dir;
+  if (!scene.bed_solvers.empty()) key += "\nbed " + std::to_string(bed);
   const std::vector<double> solver_in = solver_values(scene, values);
   const auto id = std::make_pair(key, solver_in);
   {
@@ -340,38 +341,68 @@ Run CalibrationProblem::run_whole(const PreparedScene& scene, const std::vector<
     const auto it = memory_->runs.find(id);
     if (it != memory_->runs.end()) return it->second;
   }
-  Run run = scene.solver->run(solver_in, RunOptions{});
+  const CompiledSolver& solver = scene.bed_solvers.empty() ? *scene.solver : *scene.bed_solvers[bed];
+  Run run = solver.run(solver_in, RunOptions{});
   std::lock_guard lock(memory_->mutex);
   if (memory_->runs.size() >= kRunMemoryLimit) memory_->runs.clear();
   memory_->runs[id] = run;
   return run;
 }
 
-std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScene& scene, const Run& run) const {
+std::vector<Run> CalibrationProblem::runs(const PreparedScene& scene, const std::vector<double>& values) const {
+  std::vector<Run> out;
+  for (std::size_t bed = 0; bed < scene.bed_count(); ++bed) out.push_back(run_on_bed(scene, values, bed));
+  return out;
+}
+
+HeightField CalibrationProblem::mean_final(const PreparedScene& scene, const std::vector<Run>& runs) const {
+  REPOSE_DEMAND(runs.size() == scene.bed_count());
+  std::vector<HeightField> fields;
+  for (const Run& run : runs) fields.push_back(run.field(scene.entry.field));
+  return fields.size() == 1 ? fields.front() : mean_field(fields);
+}
+
+std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScene& scene, const std::vector<Run>& runs) const {
+  REPOSE_DEMAND(runs.size() == scene.bed_count());
   std::vector<std::vector<double>> out;
   for (const ObservableSpec& o : scene.entry.observables) {
-    out.push_back(observe(o, scene.initial, run.field(scene.entry.field), run.series, measure_values(run)));
+    std::vector<double> mean;
+    for (std::size_t bed = 0; bed < runs.size(); ++bed) {
+      const Run& run = runs[bed];
+      const std::vector<double> v = observe(o, scene.bed_initial(bed), run.field(scene.entry.field), run.series, measure_values(run));
+      mean.resize(v.size(), 0.0);
+      REPOSE_DEMAND(v.size() == mean.size());
+      for (std::size_t k = 0; k < v.size(); ++k) mean[k] += v[k] / static_cast<double>(runs.size());
+    }
+    out.push_back(std::move(mean));
   }
   return out;
 }
 
-std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const Run& run) const {
-  return residuals(scene, run.field(scene.entry.field), run.series, measure_values(run));
+std::vector<double> CalibrationProblem::weighted_residuals(const PreparedScene& scene,
+                                                           const std::vector<std::vector<double>>& observed) const {
+  REPOSE_DEMAND(observed.size() == scene.entry.observables.size());
+  std::vector<double> r;
+  r.reserve(scene.residual_count);
+  for (std::size_t o = 0; o < observed.size(); ++o) {
+    const std::vector<double>& values = observed[o];
+    const std::vector<double>& reference = scene.reference_values[o];
+    REPOSE_DEMAND(values.size() == reference.size());
+    const double scale = scene.entry.observables[o].weight / std::sqrt(static_cast<double>(values.size()));
+    for (std::size_t k = 0; k < values.size(); ++k) r.push_back(scale * (values[k] - reference[k]));
+  }
+  return r;
+}
+
+std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const std::vector<Run>& runs) const {
+  return weighted_residuals(scene, observed(scene, runs));
 }
 
 std::vector<double> CalibrationProblem::residuals(const PreparedScene& scene, const HeightField& final_height,
                                                   const SeriesByName& series, const MeasureByName& measures) const {
-  std::vector<double> r;
-  r.reserve(scene.residual_count);
-  for (std::size_t o = 0; o < scene.entry.observables.size(); ++o) {
-    const ObservableSpec& spec = scene.entry.observables[o];
-    const std::vector<double> values = observe(spec, scene.initial, final_height, series, measures);
-    const std::vector<double>& reference = scene.reference_values[o];
-    REPOSE_DEMAND(values.size() == reference.size());
-    const double scale = spec.weight / std::sqrt(static_cast<double>(values.size()));
-    for (std::size_t k = 0; k < values.size(); ++k) r.push_back(scale * (values[k] - reference[k]));
-  }
-  return r;
+  std::vector<std::vector<double>> values;
+  for (const ObservableSpec& o : scene.entry.observables) values.push_back(observe(o, scene.initial, final_height, series, measures));
+  return weighted_residuals(scene, values);
 }
 
 std::vector<std::vector<double>> CalibrationProblem::fit_residuals(const std::vector<std::vector<double>>& free_points) const {
@@ -386,7 +417,7 @@ std::vector<std::vector<double>> CalibrationProblem::fit_residuals(const std::ve
   const int threads = solver_->thread_safe() ? spec_.solver.threads : 1;
   parallel_for(free_points.size() * fit.size(), threads, [&](std::size_t task) {
     const std::size_t point = task / fit.size(), scene = task % fit.size();
-    parts[point][scene] = residuals(*fit[scene], run_whole(*fit[scene], values[point]));
+    parts[point][scene] = residuals(*fit[scene], runs(*fit[scene], values[point]));
   });
   runs_ += static_cast<long long>(free_points.size() * fit.size());
   std::vector<std::vector<double>> out(free_points.size());

@@ -48,7 +48,12 @@ struct PreparedScene {
   double grain_diameter_m = 0.0;   // of the scene's dem section (0 without one)
   std::optional<double> reference_wall_time_s;  // one LIGGGHTS run's (the mean over seeds), from its manifest
   std::optional<double> reference_cpu_time_s;
+  // beds: each: the solver compiled for each seed's own bed (seed_initial),
+  // in seed order; empty on the mean bed (`solver`, compiled for `initial`).
+  std::vector<std::shared_ptr<const CompiledSolver>> bed_solvers;
   bool fit() const { return entry.role == CalibrationScene::Role::kFit; }
+  std::size_t bed_count() const { return bed_solvers.empty() ? 1 : bed_solvers.size(); }
+  const HeightField& bed_initial(std::size_t bed) const { return bed_solvers.empty() ? initial : seed_initial[bed]; }
 };
 
 // A reference run's surface (.npy) on the scene's grid; InputError naming the
@@ -93,19 +98,24 @@ class CalibrationProblem {
   const Solver& solver() const { return *solver_; }
   // The compiled solver's values for a calibration parameter set (SI).
   std::vector<double> solver_values(const PreparedScene& scene, const std::vector<double>& values) const;
-  // A run of the calibrated solver on the scene; its field the scene compares
-  // (height_final by default). Entries of one scene file, one bed (seed) and one reference
-  // that compare different fields (the snow model's maps) share the run: the
-  // fields of the last runs are remembered (runs are deterministic).
-  HeightField run(const PreparedScene& scene, const std::vector<double>& values) const;
-  // The same run, whole (its time series too).
-  Run run_whole(const PreparedScene& scene, const std::vector<double>& values) const;
-  // weight * (heuristic - reference) / sqrt(count), observable after observable.
+  // The calibrated solver's run on one bed of the scene (bed 0 of a scene on
+  // the mean bed). Runs of one scene file, bed, seed and reference are
+  // remembered (they are deterministic): entries that compare different
+  // fields of one run (the snow model's maps) share it.
+  Run run_on_bed(const PreparedScene& scene, const std::vector<double>& values, std::size_t bed) const;
+  // Its runs on every bed of the scene, in order (calibration_spec.h: beds).
+  std::vector<Run> runs(const PreparedScene& scene, const std::vector<double>& values) const;
+  // The runs' compared field (height_final by default), the mean over the beds.
+  HeightField mean_final(const PreparedScene& scene, const std::vector<Run>& runs) const;
+  // Each observable's values in the runs (as reference_values): the mean over
+  // the beds of each bed's values, each bed's change taken from its own start.
+  std::vector<std::vector<double>> observed(const PreparedScene& scene, const std::vector<Run>& runs) const;
+  // weight * (observed - reference) / sqrt(count), observable after observable.
+  std::vector<double> weighted_residuals(const PreparedScene& scene, const std::vector<std::vector<double>>& observed) const;
+  std::vector<double> residuals(const PreparedScene& scene, const std::vector<Run>& runs) const;
+  // The residuals of one final surface (and series, measures) grown from the scene's `initial`.
   std::vector<double> residuals(const PreparedScene& scene, const HeightField& final_height,
                                 const SeriesByName& series = {}, const MeasureByName& measures = {}) const;
-  // Each observable's values in a run of the calibrated solver (as reference_values).
-  std::vector<std::vector<double>> observed(const PreparedScene& scene, const Run& run) const;
-  std::vector<double> residuals(const PreparedScene& scene, const Run& run) const;
 
   // Residuals of all fit scenes (concatenated in scene order) at each point
   // (free parameter values), computed on spec().solver.threads threads.

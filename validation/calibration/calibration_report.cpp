@@ -229,6 +229,13 @@ void write_calibration_report(const CalibrationOutputs& o, const std::vector<std
                        e.grain_diameter_m > 0 ? mm(e.grain_diameter_m) : "-",
                        e.grain_diameter_m > 0 ? fmt::format("{:.2f}", e.rmse_fitted_m / e.grain_diameter_m) : "-");
   }
+  for (const PreparedScene& s : problem.scenes()) {
+    if (s.bed_count() > 1) {
+      out << fmt::format("\nScene {} (beds: each): the solver ran on each of the {} seeds' own beds; its surfaces, series "
+                         "and observables are the means over those runs.\n",
+                         s.entry.name, s.bed_count());
+    }
+  }
   write_series_table(out, fit);
   if (o.ladder) {
     const Ladder& l = *o.ladder;

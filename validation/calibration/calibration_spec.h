@@ -54,6 +54,15 @@ struct CalibrationScene {
   // seed). Several entries of one scene file with different seeds fit the
   // solver over several beds at once (each needs its own name).
   std::optional<std::uint64_t> seed;
+  // The bed the calibrated solver runs on. kMean: the mean of the reference
+  // seeds' initial surfaces, one run. kEach: each seed's own bed, one run per
+  // seed, every observable the mean over the beds of its value on each, as
+  // the reference's per-seed observables are. A nonlinear observable (a
+  // heap's flank) of the mean bed, smoother than any seed's, is not the mean
+  // of the beds' (the scoop's dumped flank 1 deg steeper on it). kEach needs
+  // a data reference of two or more seeds.
+  enum class Beds { kMean, kEach };
+  Beds beds = Beds::kMean;
 };
 
 // One fitted (or fixed) parameter of the calibrated solver, named

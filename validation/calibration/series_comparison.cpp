@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "models/core/base/error.h"
+
 #include "validation/observables/calibration_observables.h"
 
 namespace repose {
@@ -17,7 +19,9 @@ std::vector<double> SeriesComparison::fitted_relative_error() const {
   return out;
 }
 
-std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const Run& initial, const Run& fitted) {
+std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const std::vector<std::vector<double>>& initial,
+                                             const std::vector<std::vector<double>>& fitted, const Run& fitted_run) {
+  REPOSE_DEMAND(initial.size() == scene.entry.observables.size() && fitted.size() == initial.size());
   using K = ObservableSpec::Kind;
   std::vector<SeriesComparison> out;
   for (std::size_t o = 0; o < scene.entry.observables.size(); ++o) {
@@ -29,23 +33,20 @@ std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const R
       c.unit = "rad";
     } else if (spec.kind == K::kSeries) {
       c.series = spec.series;
-      const auto it = fitted.series.find(spec.series);
-      if (it != fitted.series.end()) c.unit = it->second.unit;
+      const auto it = fitted_run.series.find(spec.series);
+      if (it != fitted_run.series.end()) c.unit = it->second.unit;
       c.times_s = spec.times_s;
     } else {
       c.series = spec.measure;
-      const auto it = fitted.measures.find(spec.measure);
-      if (it != fitted.measures.end()) c.unit = it->second.unit;
+      const auto it = fitted_run.measures.find(spec.measure);
+      if (it != fitted_run.measures.end()) c.unit = it->second.unit;
     }
     for (std::size_t seed = 0; seed < scene.seed_series.size(); ++seed) {
       c.seeds.push_back(seed_observation(spec, scene, seed));
     }
     c.reference = scene.reference_values[o];
-    const auto of = [&](const Run& run) {
-      return observe(spec, scene.initial, run.field(scene.entry.field), run.series, measure_values(run));
-    };
-    c.initial = of(initial);
-    c.fitted = of(fitted);
+    c.initial = initial[o];
+    c.fitted = fitted[o];
     out.push_back(std::move(c));
   }
   return out;

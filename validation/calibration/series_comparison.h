@@ -25,7 +25,10 @@ struct SeriesComparison {
   std::vector<double> fitted_relative_error() const;
 };
 
-// One comparison per series, measure or heap_flank observable of the scene, in its order.
-std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const Run& initial, const Run& fitted);
+// One comparison per series, measure or heap_flank observable of the scene,
+// in its order, from the solver's observed values (CalibrationProblem::observed)
+// with the initial and the fitted parameters; units from the fitted run's series and measures.
+std::vector<SeriesComparison> compare_series(const PreparedScene& scene, const std::vector<std::vector<double>>& initial,
+                                             const std::vector<std::vector<double>>& fitted, const Run& fitted_run);
 
 }  // namespace repose

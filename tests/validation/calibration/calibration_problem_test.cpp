@@ -94,12 +94,12 @@ TEST(CalibrationProblem, ASeriesObservableComparesTheHeldMassAtItsTimes) {
   EXPECT_GT(s.reference_values[0][0], 0.0) << "the dragged bucket holds sand";
   std::vector<double> at_reference = problem.initial_values();
   at_reference[0] = 40.0 * std::numbers::pi / 180.0;
-  const repose::Run run = problem.run_whole(s, at_reference);
+  const repose::Run run = problem.run_on_bed(s, at_reference, 0);
   const TimeSeries& held = run.series.at("mass_held_kg.bucket");
   EXPECT_EQ(held.unit, "kg");
   EXPECT_DOUBLE_EQ(s.reference_values[0][1], held.at(0.8));
   for (const double r : problem.residuals(s, run.field("height_final"), run.series)) EXPECT_EQ(r, 0.0);
-  const repose::Run away = problem.run_whole(s, problem.initial_values());
+  const repose::Run away = problem.run_on_bed(s, problem.initial_values(), 0);
   double sum = 0.0;
   for (const double r : problem.residuals(s, away.field("height_final"), away.series)) sum += r * r;
   EXPECT_GT(sum, 0.0);
@@ -218,6 +218,53 @@ TEST(CalibrationProblem, AHeapFlankObservableComparesTheMeanOfTheSeedsFlanks) {
   const std::vector<double> r = problem.residuals(s, s.seed_final[0], {}, {});
   ASSERT_EQ(r.size(), 1u);
   EXPECT_DOUBLE_EQ(r[0], 3.0 * (one - 0.5 * (one + two)));
+  fs::remove_all(root);
+}
+
+// beds: each: the solver runs on each seed's own bed and every observable is
+// the mean of its values on the beds, as the reference's per-seed
+// observables are the mean of the seeds'. Two cones that nothing moves (no
+// object, repose angle 60 deg): on their own beds the solver's flank is the
+// reference's exactly; on the mean bed (the two cones averaged, a lower,
+// wider heap) it is not.
+TEST(CalibrationProblem, EachBedRunsTheSolverOnEverySeedsOwnBed) {
+  const fs::path root = fs::temp_directory_path() / ("repose_each_bed_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  const fs::path a = cone_seed_folder(root, "seed1", 20.0, 7, 7), b = cone_seed_folder(root, "seed2", 30.0, 9, 8);
+  for (const fs::path& dir : {a, b}) {
+    fs::copy_file(dir / "height_final.npy", dir / "height_initial.npy", fs::copy_options::overwrite_existing);
+  }
+  const fs::path scene = root / "still.yaml";
+  std::ofstream(scene) << "name: still\ntime: {step_s: 0.02, duration_s: 0.1}\n"
+                          "ground:\n  extent_m: [0.064, 0.064]\n  cell_size_m: 0.004\n  origin_m: [0.0, 0.0]\n"
+                          "  initial_height: {kind: flat, height_m: 0.02}\n  material: sand\n";
+  const auto problem_with = [&](const std::string& beds) {
+    const std::string yaml = "scenes:\n  - scene: " + scene.string() + "\n    beds: " + beds + "\n    reference: {data: [" +
+                             a.string() + ", " + b.string() +
+                             "]}\n    observables: [{kind: heap_flank, weight: 3, reach_m: 0.05, base_height_m: 0.02}, "
+                             "{kind: height_field}]\n"
+                             "parameters:\n  - {name: ground.sand.repose_angle_deg, initial: 60}\n";
+    return CalibrationProblem(load_calibration_from_string(yaml, root.string() + "/inline.yaml"), solver_registry());
+  };
+  const CalibrationProblem each = problem_with("each");
+  const PreparedScene& s = each.scenes().front();
+  ASSERT_EQ(s.bed_count(), 2u);
+  const std::vector<repose::Run> runs = each.runs(s, each.initial_values());
+  ASSERT_EQ(runs.size(), 2u);
+  for (std::size_t bed = 0; bed < 2; ++bed) {
+    EXPECT_EQ((runs[bed].field("height_initial").heights() - s.seed_initial[bed].heights()).abs().maxCoeff(), 0.0) << bed;
+    EXPECT_LT((runs[bed].field("height_final").heights() - s.seed_final[bed].heights()).abs().maxCoeff(), 1e-12) << bed;
+  }
+  // the flank and each bed's change from its own start (none)
+  const std::vector<double> r = each.residuals(s, runs);
+  ASSERT_EQ(r.size(), 1u + 16u * 16u);
+  for (const double v : r) EXPECT_NEAR(v, 0.0, 1e-9);
+  EXPECT_LT((each.mean_final(s, runs).heights() - s.reference_final.heights()).abs().maxCoeff(), 1e-12);
+
+  const CalibrationProblem mean = problem_with("mean");
+  const PreparedScene& m = mean.scenes().front();
+  ASSERT_EQ(m.bed_count(), 1u);
+  EXPECT_GT(std::abs(mean.residuals(m, mean.runs(m, mean.initial_values()))[0]), 3.0 * 0.02);
   fs::remove_all(root);
 }
 
