@@ -14,6 +14,7 @@
 #include "models/core/config/scene_loader.h"
 #include "models/core/io/npy_io.h"
 #include "experiments/solvers/solver_registry.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -35,14 +36,9 @@ int run(const std::string& arguments) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("repose_calibration_command_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  return dir;
-}
-
 TEST(CalibrationCommand, WritesTheRunFolder) {
-  const fs::path out = fresh_dir("ok");
+  const test_support::TempDir temp;
+  const fs::path out = temp.path / "out";
   ASSERT_EQ(run("calibrate " + kDir + "/synthetic.yaml --out " + out.string()), 0);
   for (const char* name : {"calibration.json", "parameters.yaml", "report.md", "manifest.json",
                            "data/calib_indent_reference.npy", "data/calib_indent_heuristic_fitted.npy"}) {
@@ -65,11 +61,11 @@ TEST(CalibrationCommand, WritesTheRunFolder) {
     if (p["name"] == "ground.sand.repose_angle_deg") continue;  // converted from radians
     EXPECT_EQ(fitted[p["name"].get<std::string>()].as<double>(), p["value"].get<double>()) << p["name"];
   }
-  fs::remove_all(out);
 }
 
 TEST(CalibrationCommand, MalformedFileWritesNothingAndExitsTwo) {
-  const fs::path out = fresh_dir("bad");
+  const test_support::TempDir temp;
+  const fs::path out = temp.path / "out";
   EXPECT_EQ(run("calibrate " + kDir + "/bad/bad_loss.yaml --out " + out.string()), 2);
   EXPECT_FALSE(fs::exists(out));
 }
@@ -77,7 +73,8 @@ TEST(CalibrationCommand, MalformedFileWritesNothingAndExitsTwo) {
 // A reference of the wrong shape is found before the output folder is made,
 // and the one-line message names the calibration file's line.
 TEST(CalibrationCommand, AReferenceOfTheWrongShapeNamesItsLineAndWritesNothing) {
-  const fs::path work = fresh_dir("shape");
+  const test_support::TempDir temp;
+  const fs::path& work = temp.path;
   fs::create_directories(work / "ref");
   write_npy_2d((work / "ref" / "height_initial.npy").string(), ArrayXXdR::Zero(3, 4));
   write_npy_2d((work / "ref" / "height_final.npy").string(), ArrayXXdR::Zero(3, 4));
@@ -95,7 +92,6 @@ TEST(CalibrationCommand, AReferenceOfTheWrongShapeNamesItsLineAndWritesNothing) 
   EXPECT_NE(message.find("3 rows x 4 columns"), std::string::npos) << message;
   EXPECT_FALSE(fs::exists(out));
   EXPECT_FALSE(fs::exists(work / ".out.tmp"));
-  fs::remove_all(work);
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 // skips; gives the test a fresh folder dir_.
 
 #include <gtest/gtest.h>
-#include <stdlib.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -14,6 +13,7 @@
 
 #include "models/core/base/error.h"
 #include "validation/liggghts/liggghts_runner.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose::test_support {
 
@@ -27,13 +27,9 @@ class LiggghtsTest : public ::testing::Test {
       if (allow != nullptr && std::string(allow) == "1") GTEST_SKIP() << "liggghts is not installed (allowed)";
       FAIL() << "liggghts is expected (scripts/install-deps.sh) but missing: " << e.what();
     }
-    char pattern[] = "/tmp/repose-liggghts-test-XXXXXX";
-    dir_ = ::mkdtemp(pattern);
   }
-  void TearDown() override {
-    if (!dir_.empty()) std::filesystem::remove_all(dir_);
-  }
-  std::filesystem::path dir_;
+  TempDir temp_;
+  const std::filesystem::path dir_ = temp_.path;
 };
 
 }  // namespace repose::test_support

@@ -1,10 +1,17 @@
 #pragma once
-// A fresh folder under the system temp directory, removed (with whatever a
-// test left in it, even without write permission) when it goes out of scope.
+// A fresh folder under the system temp directory, named after the running
+// test and process, removed (with whatever a test left in it, even without
+// write permission) when it goes out of scope. Every test's temporary files
+// go in one: `ctest -j` runs tests of one program at once, and the normal and
+// sanitized builds' suites may run side by side, so no fixed name is safe.
 
 #include <gtest/gtest.h>
 #include <stdlib.h>
+#include <unistd.h>
 
+#include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -13,11 +20,30 @@
 
 namespace repose::test_support {
 
+// "<Suite>_<Test>_<pid>" of the running GoogleTest test ("no_test_<pid>"
+// outside one), usable in a file name: characters other than letters, digits,
+// '-' and '_' become '_' (a parameterized test's name holds '/'), and the test's
+// part is cut to 120 characters (the folder's random suffix keeps it unique).
+inline std::string current_test_file_name() {
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = test == nullptr ? "no_test" : std::string(test->test_suite_name()) + "_" + test->name();
+  for (char& c : name) {
+    if (std::isalnum(static_cast<unsigned char>(c)) == 0 && c != '-') c = '_';
+  }
+  if (name.size() > 120) name.resize(120);
+  return name + "_" + std::to_string(::getpid());
+}
+
+// <temp>/<prefix>_<Suite>_<Test>_<pid>_XXXXXX, made by mkdtemp: no other test,
+// process or TempDir has it.
 struct TempDir {
   std::filesystem::path path;
-  explicit TempDir(const std::string& prefix = "repose_test") {
-    std::string pattern = (std::filesystem::temp_directory_path() / (prefix + "_XXXXXX")).string();
-    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+  explicit TempDir(const std::string& prefix = "repose") {
+    const std::string name = prefix + "_" + current_test_file_name() + "_XXXXXX";
+    std::string pattern = (std::filesystem::temp_directory_path() / name).string();
+    if (::mkdtemp(pattern.data()) == nullptr) {
+      throw std::runtime_error("cannot make a temporary folder " + pattern + ": " + std::strerror(errno));
+    }
     path = pattern;
   }
   ~TempDir() {

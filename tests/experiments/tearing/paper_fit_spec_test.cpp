@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "models/core/base/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -42,16 +43,9 @@ TEST(PaperFitSpec, TheSackKraftFileLoadsItsPublishedValuesInTheirUnits) {
   EXPECT_TRUE(std::filesystem::exists(s.tear_scene)) << s.tear_scene;
 }
 
-// A file of the running test's own: ctest runs this suite's tests in parallel, and a
-// shared name let one test read what another had just written.
-std::filesystem::path own_temp_file() {
-  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-  return std::filesystem::temp_directory_path() /
-         (std::string("repose_paper_fit_spec_") + test->name() + ".yaml");
-}
-
 std::string error_of_published(const std::string& tear) {
-  const std::filesystem::path path = own_temp_file();
+  const test_support::TempDir dir;
+  const std::filesystem::path path = dir.path / "fit.yaml";
   std::ofstream(path) << "name: t\nsource: s\ntensile_scene: a.yaml\nseeds: [1]\n"
                          "published: {md_stiffness_n_per_m: 1, cd_stiffness_n_per_m: 1, md_strength_n_per_m: 1,"
                          " cd_strength_n_per_m: 1, " << tear << "}\nparameters:\n"
@@ -75,7 +69,8 @@ TEST(PaperFitSpec, TakesTheTearRatioOrBothTearResistancesButNotBoth) {
 }
 
 std::string error_of(const std::string& parameters) {
-  const std::filesystem::path path = own_temp_file();
+  const test_support::TempDir dir;
+  const std::filesystem::path path = dir.path / "fit.yaml";
   std::ofstream(path) << "name: t\nsource: s\ntensile_scene: a.yaml\nseeds: [1]\n"
                          "published: {md_stiffness_n_per_m: 1, cd_stiffness_n_per_m: 1, md_strength_n_per_m: 1,"
                          " cd_strength_n_per_m: 1, tear_cd_over_md: 1}\nparameters:\n" << parameters;

@@ -11,6 +11,7 @@
 #include "models/core/base/error.h"
 #include "models/core/config/scene_loader.h"
 #include "models/ground/ground_solver.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -111,9 +112,8 @@ TEST(HeightSpanSolver, WithAnOutputFolderItWritesTheHeldMassAndFrames) {
   HeightSpanSection section = heightspan_section(s);
   section.options.frame_interval_s = 0.4;
   s = with_heightspan(s, section);
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "heightspan_solver_test";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const test_support::TempDir temp;
+  const std::filesystem::path& dir = temp.path;
   const auto compiled = HeightSpanSolver().compile(s);
   const repose::Run run = compiled->run(compiled->default_values(), {{}, dir.string()});
   EXPECT_NE(std::find(run.files.begin(), run.files.end(), "held_mass.csv"), run.files.end());
@@ -126,7 +126,6 @@ TEST(HeightSpanSolver, WithAnOutputFolderItWritesTheHeldMassAndFrames) {
   int rows = 0;
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_EQ(rows, 24);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(HeightSpanSolver, TheScoopSceneLoadsForTheHeightSpanModelAndLiggghts) {

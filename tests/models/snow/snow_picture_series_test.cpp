@@ -7,6 +7,7 @@
 #include "models/core/config/fields.h"
 #include "models/snow/simulate_snow.h"
 #include "tests/models/snow/snow_fixtures.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -32,8 +33,8 @@ TEST(SnowPictureSeries, WritesTheRequestedFramesAndPicturesAsSnowGrows) {
   options.snowfall = SnowfallRate(0.0005);  // a quarter cell in 5 s: the ground whitens gradually
   SnowModel model = testing::plates_over_ground(ground, {testing::plate(0.04, 0.03, 0.05)}, options);
   model.time.duration_s = 5.0;
-  const fs::path dir = fs::temp_directory_path() / "snow_picture_series_test";
-  fs::remove_all(dir);
+  const test_support::TempDir temp;
+  const fs::path dir = temp.path / "series";  // made by the series
   SnowPictureSeries series(model, 1.0, dir.string());
   series.on_state(make_snow_state(model));
   SnowState state;
@@ -53,7 +54,6 @@ TEST(SnowPictureSeries, WritesTheRequestedFramesAndPicturesAsSnowGrows) {
     before = bright;
   }
   EXPECT_GT(before, 0);
-  fs::remove_all(dir);
 }
 
 TEST(SnowPictureSeries, APictureTimeAfterTheRunIsRefused) {
@@ -61,7 +61,8 @@ TEST(SnowPictureSeries, APictureTimeAfterTheRunIsRefused) {
   SnowOptions options = testing::vertical_snow_options();
   options.pictures.times_s = {3.0};
   const SnowModel model = testing::plates_over_ground(ground, {}, options);  // runs 1 s
-  EXPECT_THROW(SnowPictureSeries(model, 1.0, (fs::temp_directory_path() / "snow_series_refused").string()), FieldError);
+  const test_support::TempDir temp;
+  EXPECT_THROW(SnowPictureSeries(model, 1.0, (temp.path / "series").string()), FieldError);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "models/core/base/error.h"
 #include "models/core/io/png_io.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -53,15 +54,13 @@ TEST(FibreImage, NoClumpsLeavesTheBackground) {
 
 TEST(FibreImage, WritesEveryLayerAndTheCompositeAsSixteenBitPngs) {
   const FibreImages images = draw(5);
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "repose_fibre_image_test";
-  std::filesystem::create_directories(dir);
-  const std::vector<std::string> paths = write_fibre_pngs(images, (dir / "sheet_").string());
+  const test_support::TempDir dir;
+  const std::vector<std::string> paths = write_fibre_pngs(images, (dir.path / "sheet_").string());
   ASSERT_EQ(paths.size(), 4u);
   const ArrayXXdR back = read_png16(paths.back());
   ASSERT_EQ(back.rows(), images.ny());
   ASSERT_EQ(back.cols(), images.nx());
   EXPECT_LT((back / 65535.0 - images.composite).abs().maxCoeff(), 1.0 / 65535.0);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(FibreImage, RefusesOptionsOutsideTheirRanges) {

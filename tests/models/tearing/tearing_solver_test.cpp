@@ -12,6 +12,7 @@
 #include "experiments/solvers/solver_registry.h"
 #include "models/core/base/error.h"
 #include "models/core/config/scene_loader.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -81,8 +82,8 @@ TEST(TearingSolver, AStifferSheetTearsUnderMoreForce) {
 
 TEST(TearingSolver, WritesItsPicturesWhenGivenAFolder) {
   const auto compiled = solver_registry().get("tearing").compile(small_scene());
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "repose_tearing_solver_test";
-  std::filesystem::create_directories(dir);
+  const test_support::TempDir temp;
+  const std::filesystem::path& dir = temp.path;
   RunOptions options;
   options.output_dir = dir.string();
   const repose::Run run = compiled->run(compiled->default_values(), options);
@@ -94,7 +95,6 @@ TEST(TearingSolver, WritesItsPicturesWhenGivenAFolder) {
   std::getline(csv, header);
   EXPECT_EQ(header, "time_s,grip,force_x_n,force_y_n,force_z_n");
   EXPECT_TRUE(std::getline(csv, first) && !first.empty());
-  std::filesystem::remove_all(dir);
 }
 
 // A 3 x 1 cm strip on 2 mm cells in a tensile test, under the energy rule.

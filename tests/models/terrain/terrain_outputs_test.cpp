@@ -8,6 +8,7 @@
 #include "models/core/io/mesh_io.h"
 #include "models/core/io/npy_io.h"
 #include "tests/models/terrain/terrain_fixtures.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -15,8 +16,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(TerrainOutputs, WritesMeshContoursAndHeightsThatReadBack) {
-  const fs::path dir = fs::temp_directory_path() / ("repose_terrain_outputs_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const test_support::TempDir temp;
+  const fs::path& dir = temp.path;
   TerrainOptions o;
   o.slope_rad = 25.0 * std::numbers::pi / 180.0;
   o.sample_spacing_m = 2.0;
@@ -35,7 +36,6 @@ TEST(TerrainOutputs, WritesMeshContoursAndHeightsThatReadBack) {
   EXPECT_EQ(contours(0, 3), 5.0);  // the key contour comes first, at its height
   EXPECT_EQ(read_npy_2d((dir / "terrain_height.npy").string()).cols(), t.height_field.nx());
   EXPECT_EQ(read_npy_2d((dir / "elements.npy").string())(0, 3), 0.5);
-  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "models/core/base/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -109,15 +110,14 @@ TEST(TerrainSection, ReadsTheRigidEnginesValuesOfLayersAndBuildings) {
 }
 
 TEST(TerrainSection, ContourFileIsTakenFromTheScenesFolder) {
-  const fs::path dir = fs::temp_directory_path() / ("repose_terrain_section_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const test_support::TempDir temp;
+  const fs::path& dir = temp.path;
   std::ofstream(dir / "hills.geojson") << R"({"type": "FeatureCollection", "features": [
     {"type": "Feature", "properties": {"name": "foot", "height_m": 3},
      "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]}}]})";
   const TerrainScene s = read("terrain:\n  key_contours_file: hills.geojson\n", (dir / "scene.yaml").string());
   ASSERT_EQ(s.key_contours.size(), 1u);
   EXPECT_EQ(s.key_contours[0].name, "foot");
-  fs::remove_all(dir);
 }
 
 }  // namespace

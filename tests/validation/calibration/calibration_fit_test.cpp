@@ -12,6 +12,7 @@
 #include "validation/calibration/calibration_loader.h"
 #include "validation/calibration/calibration_problem.h"
 #include "tests/validation/calibration/tiny_snow_table.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -60,7 +61,8 @@ TEST(CalibrationFit, AgainstDemIndentReducesCostAndRepeatsBitForBit) {
 // table's snow is reproduced exactly; the ground surface is not it.
 TEST(CalibrationFit, SceneErrorScoresTheEntrysField) {
   const std::string dir = std::string(REPOSE_SOURCE_DIR) + "/experiments";
-  const std::string scene = std::string(::testing::TempDir()) + "/scene_error_table.yaml";
+  const test_support::TempDir temp;
+  const std::string scene = (temp.path / "scene_error_table.yaml").string();
   std::ofstream(scene) << testing::tiny_snow_table_yaml(4.0);
   const std::string yaml = "scenes:\n  - scene: " + scene + "\n    name: top\n    field: snow_depth_final.table\n" +
                            "    reference: {heuristic: {snow.repose_angle_deg: 40}}\n"

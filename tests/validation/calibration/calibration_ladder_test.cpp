@@ -16,6 +16,7 @@
 #include "validation/calibration/calibration_loader.h"
 #include "validation/calibration/calibration_problem.h"
 #include "models/core/io/npy_io.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -95,8 +96,8 @@ Ladder ladder_over(const fs::path& root, const std::vector<std::string>& rungs) 
 // difference; another run is compared with their mean; the ladder carries
 // the reference's noise floor.
 TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
-  const fs::path root = fs::temp_directory_path() / ("repose_ladder_" + std::to_string(::getpid()));
-  fs::remove_all(root);
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
   write_run(root / "seed1", 0.004);
   write_run(root / "seed2", 0.006);
   write_run(root / "other", 0.005);
@@ -117,15 +118,14 @@ TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
     EXPECT_EQ(r.cpu_time_s.value_or(0.0), 8.0);
   }
   EXPECT_EQ(liggghts, 2);
-  fs::remove_all(root);
 }
 
 // Another engine's canonical run is a rung of its own, named after the
 // engine its manifest names, scored against the LIGGGHTS reference; the
 // speed ratio stays LIGGGHTS' (none here: no LIGGGHTS rung).
 TEST(CalibrationLadder, AnotherEnginesRunIsARungScoredAgainstTheReference) {
-  const fs::path root = fs::temp_directory_path() / ("repose_ladder_engine_" + std::to_string(::getpid()));
-  fs::remove_all(root);
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
   write_run(root / "seed1", 0.004);
   write_run(root / "seed2", 0.006);
   write_bullet_run(root / "bullet", 0.007);
@@ -137,7 +137,6 @@ TEST(CalibrationLadder, AnotherEnginesRunIsARungScoredAgainstTheReference) {
   // 7 mm deep against the seeds' mean of 5 mm, on 16 of 256 cells
   EXPECT_NEAR(bullet.rmse_m, 0.002 * 0.25, 1e-12);
   EXPECT_FALSE(ladder.liggghts_over_ground_time.has_value());
-  fs::remove_all(root);
 }
 
 }  // namespace

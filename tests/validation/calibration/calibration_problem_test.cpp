@@ -11,8 +11,6 @@
 #include <numbers>
 #include <string>
 
-#include <unistd.h>
-
 #include <gtest/gtest.h>
 
 #include "experiments/solvers/solver_registry.h"
@@ -23,6 +21,7 @@
 #include "validation/calibration/calibration_loader.h"
 #include "validation/observables/heap_flank.h"
 #include "tests/validation/calibration/tiny_snow_table.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -45,8 +44,8 @@ fs::path seed_folder(const fs::path& root, const std::string& name, double bed_m
 }
 
 TEST(CalibrationProblem, SeedFoldersAreAveragedAndTheirSpreadIsTheNoiseFloor) {
-  const fs::path root = fs::temp_directory_path() / ("repose_seeds_" + std::to_string(::getpid()));
-  fs::remove_all(root);
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
   const fs::path a = seed_folder(root, "seed1", 0.020, 0.004), b = seed_folder(root, "seed2", 0.022, 0.006);
   const std::string yaml = "scenes:\n  - scene: " + kDir + "/scenes/indent.yaml\n    reference: {data: [" + a.string() +
                            ", " + b.string() +
@@ -65,7 +64,6 @@ TEST(CalibrationProblem, SeedFoldersAreAveragedAndTheirSpreadIsTheNoiseFloor) {
   // Δh differs by 2 mm on 16 of 256 cells: RMSE 2 mm * sqrt(16/256)
   EXPECT_NEAR(noise->pair_rmse_m, 0.002 * 0.25, 1e-12);
   EXPECT_NEAR(noise->rmse_m, 0.002 * 0.25, 1e-12);
-  fs::remove_all(root);
 }
 
 TEST(CalibrationProblem, HoldingOutASceneMovesItOutOfTheFitResiduals) {
@@ -110,8 +108,8 @@ TEST(CalibrationProblem, ASeriesObservableComparesTheHeldMassAtItsTimes) {
 // A data reference's series come from each seed's held_mass.csv
 // (held_mass_series.h) and are averaged over the seeds.
 TEST(CalibrationProblem, DataSeriesAreEachSeedsHeldMassCsvAveraged) {
-  const fs::path root = fs::temp_directory_path() / ("repose_series_" + std::to_string(::getpid()));
-  fs::remove_all(root);
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
   std::vector<std::string> dirs;
   for (const auto& [name, scale] : {std::pair{"seed1", 1.0}, std::pair{"seed2", 3.0}}) {
     const fs::path dir = root / name;
@@ -131,7 +129,6 @@ TEST(CalibrationProblem, DataSeriesAreEachSeedsHeldMassCsvAveraged) {
   ASSERT_EQ(s.seed_series.size(), 2u);
   EXPECT_DOUBLE_EQ(s.reference_values[0][0], 0.5 * (0.05 + 0.15));  // linear between the samples, then the mean
   EXPECT_DOUBLE_EQ(s.reference_values[0][1], 0.5 * (0.1 + 0.3));
-  fs::remove_all(root);
 }
 
 // A measure observable (a run's scalar measure: the peak force on a wall)
@@ -139,8 +136,8 @@ TEST(CalibrationProblem, DataSeriesAreEachSeedsHeldMassCsvAveraged) {
 // record and the reference is their mean; a run is compared by its own
 // measure, and a run without it is refused by name.
 TEST(CalibrationProblem, AMeasureObservableComparesTheSeedsMeanWithTheRunsMeasure) {
-  const fs::path root = fs::temp_directory_path() / ("repose_measure_" + std::to_string(::getpid()));
-  fs::remove_all(root);
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
   std::vector<std::string> dirs;
   for (const auto& [name, force] : {std::pair{"seed1", 0.4}, std::pair{"seed2", 0.6}}) {
     const fs::path dir = seed_folder(root, name, 0.02, 0.004);
@@ -170,7 +167,6 @@ TEST(CalibrationProblem, AMeasureObservableComparesTheSeedsMeanWithTheRunsMeasur
     EXPECT_NE(std::string(e.what()).find("chute.peak.force_n"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("chute.front_arrival_s"), std::string::npos) << e.what();
   }
-  fs::remove_all(root);
 }
 
 // A seed folder whose final surface is the flat bed with a cone of the given
@@ -196,8 +192,8 @@ fs::path cone_seed_folder(const fs::path& root, const std::string& name, double 
 // (two heaps side by side average to a lower, wider one); by default heights
 // are taken above the initial surface's mean.
 TEST(CalibrationProblem, AHeapFlankObservableComparesTheMeanOfTheSeedsFlanks) {
-  const fs::path root = fs::temp_directory_path() / ("repose_heap_flank_" + std::to_string(::getpid()));
-  fs::remove_all(root);
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
   const fs::path a = cone_seed_folder(root, "seed1", 20.0, 7, 7), b = cone_seed_folder(root, "seed2", 30.0, 9, 8);
   const std::string yaml = "scenes:\n  - scene: " + kDir + "/scenes/indent.yaml\n    reference: {data: [" + a.string() +
                            ", " + b.string() +
@@ -218,7 +214,6 @@ TEST(CalibrationProblem, AHeapFlankObservableComparesTheMeanOfTheSeedsFlanks) {
   const std::vector<double> r = problem.residuals(s, s.seed_final[0], {}, {});
   ASSERT_EQ(r.size(), 1u);
   EXPECT_DOUBLE_EQ(r[0], 3.0 * (one - 0.5 * (one + two)));
-  fs::remove_all(root);
 }
 
 // beds: each: the solver runs on each seed's own bed and every observable is
@@ -272,8 +267,8 @@ TEST(CalibrationProblem, EachBedRunsTheSolverOnEverySeedsOwnBed) {
 // one scene compare two snow maps (field:), share their runs, and the fit
 // recovers the angle of repose a synthetic reference was made with.
 TEST(CalibrationProblem, SnowMapsAreComparedByFieldAndTheAngleIsRecovered) {
-  const fs::path root = fs::temp_directory_path() / ("repose_snow_field_" + std::to_string(::getpid()));
-  fs::create_directories(root);
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
   const fs::path scene = root / "table.yaml";
   std::ofstream(scene) << testing::tiny_snow_table_yaml(6.0);
   const std::string entry = "  - scene: " + scene.string() + "\n    reference: {heuristic: {snow.repose_angle_deg: 40}}\n" +
@@ -302,7 +297,6 @@ TEST(CalibrationProblem, SnowMapsAreComparedByFieldAndTheAngleIsRecovered) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("snow_depth_final.table.npy"), std::string::npos) << e.what();
   }
-  fs::remove_all(root);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "models/core/base/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -19,12 +20,6 @@ namespace fs = std::filesystem;
 
 class LiggghtsDump : public ::testing::Test {
  protected:
-  void SetUp() override {
-    char pattern[] = "/tmp/repose-dump-test-XXXXXX";
-    dir_ = ::mkdtemp(pattern);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   std::string write(const std::string& name, const std::string& text) {
     const fs::path p = dir_ / name;
     std::ofstream(p) << text;
@@ -41,7 +36,8 @@ class LiggghtsDump : public ::testing::Test {
     return {};
   }
 
-  fs::path dir_;
+  test_support::TempDir temp_;
+  const fs::path dir_ = temp_.path;
 };
 
 const std::string kHeader =

@@ -1,14 +1,12 @@
 #include "validation/liggghts/liggghts_neighbor_stats.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
-#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "models/core/base/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -16,7 +14,8 @@ namespace {
 namespace fs = std::filesystem;
 
 TEST(LiggghtsNeighborStats, SumsEveryRunBlockOfTheLog) {
-  const fs::path log = fs::temp_directory_path() / fmt::format("repose-neighbor-stats-{}.log", ::getpid());
+  const test_support::TempDir dir;
+  const fs::path log = dir.path / "log.liggghts";
   std::ofstream(log) << "LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0)\n"
                         "Loop time of 0.1 on 1 procs for 0 steps with 10 atoms\n"
                         "Neighbor list builds = 0\nDangerous builds = 0\n"
@@ -27,7 +26,6 @@ TEST(LiggghtsNeighborStats, SumsEveryRunBlockOfTheLog) {
   const NeighborStats stats = read_neighbor_stats(log.string());
   EXPECT_EQ(stats.builds, 34);
   EXPECT_EQ(stats.dangerous_builds, 3);
-  fs::remove(log);
 }
 
 TEST(LiggghtsNeighborStats, AMissingLogIsAnErrorNamingIt) {

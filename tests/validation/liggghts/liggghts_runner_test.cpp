@@ -21,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include "models/core/base/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -29,12 +30,7 @@ namespace fs = std::filesystem;
 
 class LiggghtsRunner : public ::testing::Test {
  protected:
-  void SetUp() override {
-    char pattern[] = "/tmp/repose-runner-test-XXXXXX";
-    dir_ = ::mkdtemp(pattern);
-    std::ofstream(dir_ / "in.test") << "# nothing\n";
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  void SetUp() override { std::ofstream(dir_ / "in.test") << "# nothing\n"; }
 
   // A stand-in program whose body runs with $LOG set to the log path.
   LiggghtsRunOptions fake(const std::string& body) {
@@ -58,7 +54,8 @@ class LiggghtsRunner : public ::testing::Test {
     return {};
   }
 
-  fs::path dir_;
+  test_support::TempDir temp_;
+  const fs::path dir_ = temp_.path;
 };
 
 const char* kThermo =

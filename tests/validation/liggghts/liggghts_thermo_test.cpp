@@ -1,20 +1,19 @@
 #include "validation/liggghts/liggghts_thermo.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
 #include "models/core/base/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
 
 TEST(LiggghtsThermo, JoinsTheBlocksOfTheLastStyle) {
-  char pattern[] = "/tmp/repose-thermo-test-XXXXXX";
-  const std::filesystem::path dir = ::mkdtemp(pattern);
+  const test_support::TempDir temp;
+  const std::filesystem::path& dir = temp.path;
   const std::string log = (dir / "log.liggghts").string();
   std::ofstream(log) << "LIGGGHTS (Version x)\n"
                         "Step Atoms KinEng\n0 5 0\nLoop time of 0\n"
@@ -30,7 +29,6 @@ TEST(LiggghtsThermo, JoinsTheBlocksOfTheLastStyle) {
   EXPECT_EQ(t.rows[2][3], -0.25);
   std::ofstream(log) << "no thermo here\n";
   EXPECT_THROW(read_thermo_table(log), InputError);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -7,17 +7,13 @@
 
 #include "models/core/base/error.h"
 #include "tests/validation/rigid/debris_test_world.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("repose_liggghts_debris_" + name);
-  fs::remove_all(dir);
-  return dir;
-}
 
 // A tiny LIGGGHTS run (one element on the house's roof, 0.6 s of 1 ms
 // steps): the house, a fixed mesh, carries the element's weight.
@@ -34,7 +30,8 @@ TEST(LiggghtsDebrisRun, AnElementRestingOnABuildingWeighsOnIt) {
   const double weight_n = rock.density_kg_m3 * 4.0 / 3.0 * M_PI * std::pow(rock.radius_m, 3) * setup.spec.gravity_m_s2;
   LiggghtsDebrisOptions options;
   options.force_interval_s = 0.1;
-  const LiggghtsDebrisResult r = run_liggghts_debris(setup, 0.6, options, fresh_dir("rest").string());
+  const test_support::TempDir temp;
+  const LiggghtsDebrisResult r = run_liggghts_debris(setup, 0.6, options, (temp.path / "run").string());
   ASSERT_EQ(r.run.buildings.size(), 1u);
   const BuildingOutcome& house = r.run.buildings[0];
   ASSERT_EQ(r.run.force_time_s.size(), 6u);
@@ -50,8 +47,8 @@ TEST(LiggghtsDebrisRun, AnElementRestingOnABuildingWeighsOnIt) {
 }
 
 TEST(LiggghtsDebrisRun, MalformedForcesAreRefusedNamingTheFile) {
-  const fs::path dir = fresh_dir("forces");
-  fs::create_directories(dir);
+  const test_support::TempDir temp;
+  const fs::path& dir = temp.path;
   const std::string path = (dir / "building_forces.txt").string();
   std::ofstream(path) << "# Time-averaged data\n# TimeStep f_part0[1] f_part0[2] f_part0[3]\n100 1 2\n";
   DebrisRunResult r;
@@ -66,8 +63,8 @@ TEST(LiggghtsDebrisRun, MalformedForcesAreRefusedNamingTheFile) {
 
 // Parts 0 and 2 are the house's, part 1 the barn's.
 TEST(LiggghtsDebrisRun, ABuildingsForceIsTheMagnitudeOfItsPartsSumAtEachStep) {
-  const fs::path dir = fresh_dir("read");
-  fs::create_directories(dir);
+  const test_support::TempDir temp;
+  const fs::path& dir = temp.path;
   const std::string path = (dir / "building_forces.txt").string();
   std::ofstream(path) << "# Time-averaged data\n# TimeStep f_part0[1] ...\n"
                       << "50 3 0 0  1 1 1  0 4 0\n100 0 0 -2  0 0 0  0 0 2\n";

@@ -12,6 +12,7 @@
 #include "experiments/solvers/solver_registry.h"
 #include "models/core/config/scene_loader.h"
 #include "models/core/io/npy_io.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -53,9 +54,8 @@ TEST(LiggghtsDebrisSolver, RunsATerrainScenesDebrisAndStillADemScene) {
 TEST(LiggghtsDebrisSolver, WritesTheFrameSeriesItPromises) {
   const auto path = std::filesystem::path(REPOSE_SOURCE_DIR) / "experiments" / "scenes" / "terrain_debris.yaml";
   const Scene scene = load_scene_with_duration(path, "0.2");
-  const auto dir = std::filesystem::path(::testing::TempDir()) / "repose_liggghts_debris_frames";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const test_support::TempDir temp;
+  const std::filesystem::path& dir = temp.path;
   const auto compiled = LiggghtsDebrisSolver().compile(scene);
   RunOptions options;
   options.output_dir = dir.string();

@@ -9,6 +9,7 @@
 
 #include "models/core/base/error.h"
 #include "validation/particles/particle_observables.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -80,8 +81,8 @@ TEST(HeldMassSeries, LeavesOutFreeBodiesAndNamesUnnamedObjects) {
 }
 
 TEST(HeldMassSeries, CsvRoundTripsAndReadsTheHeightSpanModelsColumns) {
-  const auto dir = std::filesystem::temp_directory_path() / "repose_held_mass_series_test";
-  std::filesystem::create_directories(dir);
+  const test_support::TempDir temp;
+  const std::filesystem::path& dir = temp.path;
   HeldMassSeries s;
   s.time_s = {0.0, 0.05, 0.1};
   s.objects = {"bucket", "plate"};
@@ -107,7 +108,6 @@ TEST(HeldMassSeries, CsvRoundTripsAndReadsTheHeightSpanModelsColumns) {
   }
   std::ofstream(dir / "ragged.csv") << "time_s,bucket_mass_kg\n0\n";
   EXPECT_THROW(read_held_mass_csv((dir / "ragged.csv").string()), InputError);
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "models/core/base/error.h"
 #include "models/core/config/scene.h"
 #include "models/terrain/terrain_section.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -76,8 +77,8 @@ Scene terrain_scene(bool with_elements) {
 
 TEST(DebrisSolver, AStillWorldReportsNoRunoutNoDamageAndItsFiles) {
   const auto compiled = compile_debris(terrain_scene(true), still_engine());
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("repose_debris_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test_support::TempDir temp;
+  const std::filesystem::path& dir = temp.path;
   RunOptions options;
   options.output_dir = dir.string();
   const repose::Run run = compiled->run(compiled->default_values(), options);
@@ -90,7 +91,6 @@ TEST(DebrisSolver, AStillWorldReportsNoRunoutNoDamageAndItsFiles) {
   EXPECT_TRUE((run.field("height_final").heights() == run.field("height_initial").heights()).all());
   EXPECT_GT(run.field("deposit").volume_m3(), 0.0);
   for (const std::string& f : run.files) EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
-  std::filesystem::remove_all(dir);
 }
 
 TEST(DebrisSolver, ATerrainWithoutElementsIsRefusedNamingTheKey) {

@@ -2,13 +2,12 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "models/core/base/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -51,14 +50,14 @@ TEST(Sha256, PaddingBoundariesGiveDistinctHashes) {
 }
 
 TEST(Sha256, FileIsHashedLikeItsContents) {
-  const fs::path path = fs::temp_directory_path() / ("repose_sha256_" + std::to_string(::getpid()) + ".bin");
+  const test_support::TempDir dir;
+  const fs::path path = dir.path / "million_a.bin";
   {
     std::ofstream out(path, std::ios::binary);
     // a million 'a' spans many 64 KiB read chunks
     out << std::string(1000000, 'a');
   }
   EXPECT_EQ(sha256_hex_of_file(path.string()), kMillionA);
-  fs::remove(path);
 }
 
 TEST(Sha256, MissingFileOrDirectoryIsAnInputError) {

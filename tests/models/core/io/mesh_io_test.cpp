@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "models/core/base/error.h"
+#include "tests/support/temp_dir.h"
 
 namespace repose {
 namespace {
@@ -15,23 +16,14 @@ namespace fs = std::filesystem;
 
 const fs::path kMeshes = fs::path(REPOSE_SOURCE_DIR) / "tests/data/meshes";
 
-// A scratch folder per test, removed afterwards.
-class MeshIo : public ::testing::Test {
+// A scratch folder per test (dir_.path), removed afterwards.
+class MeshIo : public test_support::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("repose_mesh_io_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string file(const std::string& name, const std::string& text) const {
-    const fs::path p = dir_ / name;
+    const std::string p = path(name);
     std::ofstream(p, std::ios::binary) << text;
-    return p.string();
+    return p;
   }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
 };
 
 std::string error_of(const std::string& path) {
@@ -80,7 +72,7 @@ TEST_F(MeshIo, RefusesWhatIsNotAMesh) {
   EXPECT_NE(error_of((kMeshes / "not_a_mesh.stl").string()).find("not an STL file"), std::string::npos);
   EXPECT_NE(error_of(kMeshes.string()).find("expected a .obj or .stl"), std::string::npos);
   EXPECT_NE(error_of(path("missing.obj")).find("no such file"), std::string::npos);
-  fs::create_directories(dir_ / "folder.stl");
+  fs::create_directories(dir_.path / "folder.stl");
   EXPECT_NE(error_of(path("folder.stl")).find("is a directory"), std::string::npos);
   EXPECT_NE(error_of(file("mesh.ply", "ply\n")).find("expected a .obj or .stl"), std::string::npos);
 }
