@@ -66,9 +66,11 @@ void write_series_table(std::ostream& out, const CalibrationFit& fit) {
         for (const auto& seed : c.seeds) seeds += (seeds.empty() ? "" : ", ") + fmt::format("{:.4g}", seed[k]);
         const std::string time = c.times_s.empty() ? "–" : fmt::format("{:.3g}", c.times_s[k]);
         const std::string name = c.unit.empty() ? c.series : fmt::format("{} ({})", c.series, c.unit);
-        out << fmt::format("| {} | {} | {} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:+.3g} | {:+.1f} % |\n",
+        // a reference of zero (the bucket emptied) has no relative error: the difference says it
+        const std::string relative = c.reference[k] != 0.0 ? fmt::format("{:+.1f} %", 100.0 * error[k]) : "–";
+        out << fmt::format("| {} | {} | {} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:+.3g} | {} |\n",
                            e.name, role_name(e.fit), name, time, seeds, c.reference[k],
-                           c.initial[k], c.fitted[k], c.fitted[k] - c.reference[k], 100.0 * error[k]);
+                           c.initial[k], c.fitted[k], c.fitted[k] - c.reference[k], relative);
       }
     }
   }

@@ -223,8 +223,8 @@ TEST(CalibrationProblem, AHeapFlankObservableComparesTheMeanOfTheSeedsFlanks) {
 // reference's exactly; on the mean bed (the two cones averaged, a lower,
 // wider heap) it is not.
 TEST(CalibrationProblem, EachBedRunsTheSolverOnEverySeedsOwnBed) {
-  const fs::path root = fs::temp_directory_path() / ("repose_each_bed_" + std::to_string(::getpid()));
-  fs::remove_all(root);
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
   const fs::path a = cone_seed_folder(root, "seed1", 20.0, 7, 7), b = cone_seed_folder(root, "seed2", 30.0, 9, 8);
   for (const fs::path& dir : {a, b}) {
     fs::copy_file(dir / "height_final.npy", dir / "height_initial.npy", fs::copy_options::overwrite_existing);
@@ -260,7 +260,6 @@ TEST(CalibrationProblem, EachBedRunsTheSolverOnEverySeedsOwnBed) {
   const PreparedScene& m = mean.scenes().front();
   ASSERT_EQ(m.bed_count(), 1u);
   EXPECT_GT(std::abs(mean.residuals(m, mean.runs(m, mean.initial_values()))[0]), 3.0 * 0.02);
-  fs::remove_all(root);
 }
 
 // The snow model's parameters through the generic binding: two entries of
