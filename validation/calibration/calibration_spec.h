@@ -60,7 +60,8 @@ struct CalibrationScene {
   // the reference's per-seed observables are. A nonlinear observable (a
   // heap's flank) of the mean bed, smoother than any seed's, is not the mean
   // of the beds' (the scoop's dumped flank 1 deg steeper on it). kEach needs
-  // a data reference of two or more seeds.
+  // a data reference of two or more seeds. The ladder's rungs (one timed run
+  // each) run on the mean bed either way.
   enum class Beds { kMean, kEach };
   Beds beds = Beds::kMean;
 };
