@@ -70,15 +70,18 @@ for engine in bullet ode; do
   order+=("ref_indent_deep_$engine/seed1")
 done
 # the scoop references (issue 12): LIGGGHTS and Bullet on three beds each,
-# and the calibration's held-out shallower scoop in LIGGGHTS on the same beds
+# the calibration's held-out shallower scoop and a scoop of middle depth in
+# LIGGGHTS on the same beds
 for seed in "${seeds[@]}"; do
   scenes[ref_scoop/seed$seed]=experiments/scenes/ref_scoop.yaml
   scenes[ref_scoop_shallow/seed$seed]=experiments/scenes/ref_scoop_shallow.yaml
+  scenes[ref_scoop_medium/seed$seed]=experiments/scenes/ref_scoop_medium.yaml
   scenes[ref_scoop_bullet/seed$seed]=experiments/scenes/ref_scoop.yaml
   solvers[ref_scoop_bullet/seed$seed]=bullet
   order+=("ref_scoop/seed$seed")
 done
 for seed in "${seeds[@]}"; do order+=("ref_scoop_shallow/seed$seed" "ref_scoop_bullet/seed$seed"); done
+for seed in "${seeds[@]}"; do order+=("ref_scoop_medium/seed$seed"); done
 # the coarse-grain rungs of the scoop's ladder (grains 1.5 times larger): one bed per engine
 scenes[ref_scoop_coarse/seed1]=experiments/scenes/ref_scoop_coarse.yaml
 scenes[ref_scoop_coarse_bullet/seed1]=experiments/scenes/ref_scoop_coarse.yaml

@@ -76,6 +76,16 @@ void write_series_table(std::ostream& out, const CalibrationFit& fit) {
   }
 }
 
+// Which scenes ran the solver on each seed's own bed (calibration_spec.h: beds).
+void write_beds_notes(std::ostream& out, const CalibrationProblem& problem) {
+  for (const PreparedScene& s : problem.scenes()) {
+    if (s.bed_count() == 1) continue;
+    out << fmt::format("\nScene {} (beds: each): the solver ran on each of the {} seeds' own beds; its surfaces, series "
+                       "and observables are the means over those runs.\n",
+                       s.entry.name, s.bed_count());
+  }
+}
+
 std::string ratio(double a, double b) { return b > 0.0 ? fmt::format("{:.2f}", a / b) : "-"; }
 
 // The table a report leads with: per scene, the reference's noise floor, the
@@ -231,13 +241,7 @@ void write_calibration_report(const CalibrationOutputs& o, const std::vector<std
                        e.grain_diameter_m > 0 ? mm(e.grain_diameter_m) : "-",
                        e.grain_diameter_m > 0 ? fmt::format("{:.2f}", e.rmse_fitted_m / e.grain_diameter_m) : "-");
   }
-  for (const PreparedScene& s : problem.scenes()) {
-    if (s.bed_count() > 1) {
-      out << fmt::format("\nScene {} (beds: each): the solver ran on each of the {} seeds' own beds; its surfaces, series "
-                         "and observables are the means over those runs.\n",
-                         s.entry.name, s.bed_count());
-    }
-  }
+  write_beds_notes(out, problem);
   write_series_table(out, fit);
   if (o.ladder) {
     const Ladder& l = *o.ladder;
