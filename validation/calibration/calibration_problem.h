@@ -3,7 +3,8 @@
 // once by the calibrated solver (any solver of the registry: it declares its
 // parameters), its reference surfaces loaded (or made), and the reference's
 // observables taken once. Evaluating a parameter set then runs the solver on
-// each scene (many sets in parallel, each run independent and deterministic,
+// each scene (on each seed's bed for a scene with beds: each, its observables
+// averaged over the beds; many sets in parallel, each run independent and deterministic,
 // so results do not depend on the thread count) and returns the weighted
 // residuals (solver - reference) of the fit scenes. Observables are taken the
 // same way from the solver's Run and the reference's (observe_run).

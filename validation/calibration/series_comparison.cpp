@@ -3,7 +3,6 @@
 #include <limits>
 
 #include "models/core/base/error.h"
-
 #include "validation/observables/calibration_observables.h"
 
 namespace repose {
