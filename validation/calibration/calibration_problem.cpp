@@ -91,18 +91,25 @@ SeriesByName read_reference_series(const std::string& dir) {
   return out;
 }
 
+// The element-wise mean of an observable's values on each seed or bed (lists of one length).
+std::vector<double> mean_values(const std::vector<std::vector<double>>& lists) {
+  REPOSE_DEMAND(!lists.empty());
+  std::vector<double> mean(lists.front().size(), 0.0);
+  for (const std::vector<double>& v : lists) {
+    REPOSE_DEMAND(v.size() == mean.size());
+    for (std::size_t k = 0; k < v.size(); ++k) mean[k] += v[k] / static_cast<double>(lists.size());
+  }
+  return mean;
+}
+
 // The reference's values of an observable: of the mean surfaces, or for a
 // series, a measure or a heap's flank the mean over seeds of each seed's values.
 std::vector<double> reference_values(const ObservableSpec& o, const PreparedScene& s) {
   if (!observed_per_seed(o)) return observe(o, s.initial, s.reference_final);
   REPOSE_DEMAND(s.seed_series.size() == s.seed_measures.size() && !s.seed_series.empty());
-  std::vector<double> mean;
-  for (std::size_t seed = 0; seed < s.seed_series.size(); ++seed) {
-    const std::vector<double> v = seed_observation(o, s, seed);
-    mean.resize(v.size(), 0.0);
-    for (std::size_t k = 0; k < v.size(); ++k) mean[k] += v[k] / static_cast<double>(s.seed_series.size());
-  }
-  return mean;
+  std::vector<std::vector<double>> per_seed;
+  for (std::size_t seed = 0; seed < s.seed_series.size(); ++seed) per_seed.push_back(seed_observation(o, s, seed));
+  return mean_values(per_seed);
 }
 
 void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solver& fitted,
@@ -366,15 +373,12 @@ std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScen
   REPOSE_DEMAND(runs.size() == scene.bed_count());
   std::vector<std::vector<double>> out;
   for (const ObservableSpec& o : scene.entry.observables) {
-    std::vector<double> mean;
+    std::vector<std::vector<double>> per_bed;
     for (std::size_t bed = 0; bed < runs.size(); ++bed) {
       const Run& run = runs[bed];
-      const std::vector<double> v = observe(o, scene.bed_initial(bed), run.field(scene.entry.field), run.series, measure_values(run));
-      mean.resize(v.size(), 0.0);
-      REPOSE_DEMAND(v.size() == mean.size());
-      for (std::size_t k = 0; k < v.size(); ++k) mean[k] += v[k] / static_cast<double>(runs.size());
+      per_bed.push_back(observe(o, scene.bed_initial(bed), run.field(scene.entry.field), run.series, measure_values(run)));
     }
-    out.push_back(std::move(mean));
+    out.push_back(mean_values(per_bed));
   }
   return out;
 }
