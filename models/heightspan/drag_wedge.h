@@ -36,6 +36,16 @@
 // everything the bucket's front drives). Refitted to the deep scoop, neither
 // holds the held-out shallow scoop's mass within 6 % (lip +17 %, both -20 %;
 // experiments/heightspan_scoop_fit_lipwedge.yaml, _bothwedge.yaml).
+//
+// With one fraction for both, a fit that keeps the fill keeps little of
+// either (0.18 of each, fitted to two depths), since what the lip's wedge
+// takes the bucket does not: the wedge is then too small to make a heap
+// for the dump to land on as the DEM's does. With wedge_source: split the
+// two parts have their own fractions, wedge_fraction the compression's and
+// heightspan.lip_wedge_fraction the lip's, so a fit can keep the wall
+// band's compression whole and as much of the lip's push-ahead as the
+// depth's trend asks. Fitted to the deep and middle scoops, it keeps none of
+// the lip's (experiments/heightspan_scoop_fit_two_depths_wedge_split.yaml).
 
 #include <array>
 

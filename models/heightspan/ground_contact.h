@@ -26,7 +26,7 @@
 //     than into it (issue 12; departure from the paper). Without a cell
 //     ahead on the ground grid it goes in. Pressing (no sideways motion)
 //     takes in everything;
-//     With a lip wedge (heightspan.wedge_source: lip, drag_wedge.h), its
+//     With a lip wedge (heightspan.wedge_source: lip, both or split; drag_wedge.h), its
 //     fraction of what is pushed ahead goes into the object's wedge instead
 //     of onto the cell ahead (only where there is a cell ahead, as above);
 //   - what is left between the lowest span's bottom and top is the ground

@@ -39,6 +39,13 @@ void validate(const HeightSpanSpec& s) {
   if (!(s.wedge_fraction >= 0.0 && s.wedge_fraction <= 1.0)) {
     throw FieldError("wedge_fraction", "a fraction in [0, 1] (0: none)", yaml_number(s.wedge_fraction));
   }
+  if (!(s.lip_wedge_fraction >= 0.0 && s.lip_wedge_fraction <= 1.0)) {
+    throw FieldError("lip_wedge_fraction", "a fraction in [0, 1] (0: none)", yaml_number(s.lip_wedge_fraction));
+  }
+  if (s.lip_wedge_fraction > 0.0 && s.wedge_source != HeightSpanSpec::WedgeSource::kSplit) {
+    throw FieldError("lip_wedge_fraction", "read only with wedge_source: split (the other sources take "
+                     "wedge_fraction); 0 or set wedge_source: split", yaml_number(s.lip_wedge_fraction));
+  }
   if (!(s.frame_interval_s >= 0.0 && s.frame_interval_s <= 1e6)) {
     throw FieldError("frame_interval_s", "a time in [0, 1e6] s (0: no frames)", yaml_number(s.frame_interval_s));
   }

@@ -21,7 +21,11 @@
 //     wedge_source: compression     # what the wedge keeps its fraction of: compression (what the drag's
 //                                   # displacement compresses, the wall band) | lip (what the lip pushes
 //                                   # ahead, the ground above the intake layer, so it grows with the
-//                                   # cut's depth; ground_contact.h) | both (drag_wedge.h)
+//                                   # cut's depth; ground_contact.h) | both (drag_wedge.h) | split (both,
+//                                   # the lip's part by its own fraction, lip_wedge_fraction)
+//     lip_wedge_fraction: 0         # wedge_source split: the fraction of what the lip pushes ahead kept in
+//                                   # the wedge (wedge_fraction is then the compression's); fitted as
+//                                   # heightspan.lip_wedge_fraction; refused above 0 with another source
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
 //     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}
@@ -46,8 +50,9 @@ struct HeightSpanSpec {
   double particle_spread_m_s = 0.02;   // [0, 100]
   double intake_layer_m = 1e6;         // (0, 1e6]; 1e6: no limit (ground_contact.h)
   double wedge_fraction = 0.0;         // [0, 1]; 0: none (drag_wedge.h)
-  enum class WedgeSource { kCompression, kLip, kBoth };
+  enum class WedgeSource { kCompression, kLip, kBoth, kSplit };
   WedgeSource wedge_source = WedgeSource::kCompression;  // what wedge_fraction keeps (drag_wedge.h)
+  double lip_wedge_fraction = 0.0;     // [0, 1]; above 0 only with kSplit (drag_wedge.h)
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
   enum class SpanMaps { kCpu, kOsmesa };
   SpanMaps span_maps = SpanMaps::kCpu;
@@ -68,7 +73,9 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
   v.number("wedge_fraction", s.wedge_fraction, Range::any());
   using W = HeightSpanSpec::WedgeSource;
   v.choice("wedge_source", s.wedge_source,
-           std::vector<std::pair<std::string, W>>{{"compression", W::kCompression}, {"lip", W::kLip}, {"both", W::kBoth}});
+           std::vector<std::pair<std::string, W>>{{"compression", W::kCompression}, {"lip", W::kLip}, {"both", W::kBoth},
+                                                          {"split", W::kSplit}});
+  v.number("lip_wedge_fraction", s.lip_wedge_fraction, Range::any());
   v.number("frame_interval_s", s.frame_interval_s, Range::any());
   using M = HeightSpanSpec::SpanMaps;
   v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});

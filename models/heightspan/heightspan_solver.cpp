@@ -119,7 +119,7 @@ void write_held_csv(const HeightSpanModel& model, const HeightSpanRun& r, const 
 
 class CompiledHeightSpan final : public CompiledSolver {
  public:
-  static constexpr std::ptrdiff_t kOwnParameters = 2;
+  static constexpr std::ptrdiff_t kOwnParameters = 3;
 
   explicit CompiledHeightSpan(const Scene& scene)
       : model_(build_heightspan_model(scene)), initial_(make_initial_height(scene)), parameters_(model_.ground) {
@@ -131,6 +131,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     infos_.push_back({"wedge_fraction", "1", 1.0, 0.0, 1.0, model_.options.wedge_fraction,
                       "the fraction of what a held object's drag compresses (or its lip pushes, by "
                       "heightspan.wedge_source) kept as a wedge ahead of it (heightspan.wedge_fraction; drag_wedge.h)"});
+    infos_.push_back({"lip_wedge_fraction", "1", 1.0, 0.0, 1.0, model_.options.lip_wedge_fraction,
+                      "with heightspan.wedge_source split, the fraction of what a held object's lip pushes ahead "
+                      "kept in its wedge (heightspan.lip_wedge_fraction; drag_wedge.h)"});
   }
 
   const std::vector<ParameterInfo>& parameters() const override { return infos_; }
@@ -141,8 +144,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     const std::vector<double> material(values_si.begin(), values_si.end() - kOwnParameters);
     const GroundParams params = parameters_.params_for(model_.ground, material);
     HeightSpanModel model = model_;
-    model.options.intake_layer_m = values_si.end()[-2];
-    model.options.wedge_fraction = values_si.back();
+    model.options.intake_layer_m = values_si.end()[-3];
+    model.options.wedge_fraction = values_si.end()[-2];
+    model.options.lip_wedge_fraction = values_si.back();
     validate(model.options);
     Run run;
     run.solver = "heightspan";
@@ -206,7 +210,8 @@ class CompiledHeightSpan final : public CompiledSolver {
   HeightSpanModel model_;
   HeightField initial_;
   MaterialParameters parameters_;
-  // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, wedge_fraction
+  // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, wedge_fraction,
+  // lip_wedge_fraction
   std::vector<ParameterInfo> infos_;
 };
 

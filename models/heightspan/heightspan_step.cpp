@@ -38,13 +38,18 @@ void accumulate(const SpanErosionResult& e, SpanErosionResult* sum) {
   sum->to_particles_m3 += e.to_particles_m3;
 }
 
-// The wedge's source (heightspan.wedge_source, drag_wedge.h): the drag's compression, the lip's push-ahead or both.
+// The wedge's source (heightspan.wedge_source, drag_wedge.h): the drag's compression, the lip's push-ahead or
+// both, with one fraction (both) or each with its own (split: the lip's is lip_wedge_fraction).
 double compression_wedge_fraction(const HeightSpanSpec& o) {
   return o.wedge_source != HeightSpanSpec::WedgeSource::kLip ? o.wedge_fraction : 0.0;
 }
 LipWedge lip_wedge(const HeightSpanSpec& o, DragWedge* wedge) {
-  if (o.wedge_source == HeightSpanSpec::WedgeSource::kCompression || !(o.wedge_fraction > 0.0)) return {};
-  return {wedge, o.wedge_fraction};
+  using W = HeightSpanSpec::WedgeSource;
+  const double fraction = o.wedge_source == W::kCompression ? 0.0
+                          : o.wedge_source == W::kSplit     ? o.lip_wedge_fraction
+                                                            : o.wedge_fraction;
+  if (!(fraction > 0.0)) return {};
+  return {wedge, fraction};
 }
 
 void substep(const HeightSpanModel& model, const GroundParams& params, UndersideRenderer& renderer,

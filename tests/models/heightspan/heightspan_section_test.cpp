@@ -83,11 +83,42 @@ TEST(HeightSpanSection, ValidateNamesTheField) {
   EXPECT_EQ(HeightSpanSpec{}.wedge_source, HeightSpanSpec::WedgeSource::kCompression);  // as session 17's
 }
 
+TEST(HeightSpanSection, RefusesALipWedgeFractionOutsideItsRangeOrWithoutTheSplitSource) {
+  HeightSpanSpec spec;
+  spec.wedge_source = HeightSpanSpec::WedgeSource::kSplit;
+  auto refused_field = [](const HeightSpanSpec& s) {
+    try {
+      validate(s);
+    } catch (const FieldError& e) {
+      return e.field();
+    }
+    return std::string("(accepted)");
+  };
+  for (const double fraction : {-0.1, 1.1, std::nan("")}) {
+    spec.lip_wedge_fraction = fraction;
+    EXPECT_EQ(refused_field(spec), "lip_wedge_fraction") << fraction;
+  }
+  spec.lip_wedge_fraction = 0.4;
+  EXPECT_NO_THROW(validate(spec));
+  for (const auto source : {HeightSpanSpec::WedgeSource::kCompression, HeightSpanSpec::WedgeSource::kLip,
+                            HeightSpanSpec::WedgeSource::kBoth}) {
+    spec.wedge_source = source;  // the others take wedge_fraction: a lip fraction there would be ignored
+    EXPECT_EQ(refused_field(spec), "lip_wedge_fraction");
+  }
+  spec.lip_wedge_fraction = 0.0;
+  EXPECT_NO_THROW(validate(spec));
+  EXPECT_EQ(HeightSpanSpec{}.lip_wedge_fraction, 0.0);
+}
+
 TEST(HeightSpanSection, ReadsTheWedgeSourceAndRefusesOtherWords) {
   std::string text = kScene;
   const std::string from = "near_ground_cells: 2";
   const Scene s = load(std::string(kScene).replace(text.find(from), from.size(), "wedge_source: lip"));
   EXPECT_EQ(heightspan_section(s).options.wedge_source, HeightSpanSpec::WedgeSource::kLip);
+  const Scene split =
+      load(std::string(kScene).replace(text.find(from), from.size(), "wedge_source: split, lip_wedge_fraction: 0.3"));
+  EXPECT_EQ(heightspan_section(split).options.wedge_source, HeightSpanSpec::WedgeSource::kSplit);
+  EXPECT_EQ(heightspan_section(split).options.lip_wedge_fraction, 0.3);
   EXPECT_THROW(load(text.replace(text.find(from), from.size(), "wedge_source: bucket")), InputError);
 }
 

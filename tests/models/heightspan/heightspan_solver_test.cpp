@@ -29,12 +29,14 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const Scene s = small_scoop();
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
-  // the ground's, then its own intake layer and wedge fraction
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 2);
-  EXPECT_EQ(compiled->parameters().end()[-2].name, "intake_layer_m");
-  EXPECT_EQ(compiled->parameters().end()[-2].value_si, HeightSpanSpec{}.intake_layer_m);
-  EXPECT_EQ(compiled->parameters().back().name, "wedge_fraction");
-  EXPECT_EQ(compiled->parameters().back().value_si, HeightSpanSpec{}.wedge_fraction);
+  // the ground's, then its own intake layer and wedge fractions
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 3);
+  EXPECT_EQ(compiled->parameters().end()[-3].name, "intake_layer_m");
+  EXPECT_EQ(compiled->parameters().end()[-3].value_si, HeightSpanSpec{}.intake_layer_m);
+  EXPECT_EQ(compiled->parameters().end()[-2].name, "wedge_fraction");
+  EXPECT_EQ(compiled->parameters().end()[-2].value_si, HeightSpanSpec{}.wedge_fraction);
+  EXPECT_EQ(compiled->parameters().back().name, "lip_wedge_fraction");
+  EXPECT_EQ(compiled->parameters().back().value_si, HeightSpanSpec{}.lip_wedge_fraction);
   for (std::size_t k = 0; k < ground->parameters().size(); ++k) {
     EXPECT_EQ(compiled->parameters()[k].name, ground->parameters()[k].name);
     EXPECT_EQ(compiled->parameters()[k].value_si, ground->parameters()[k].value_si);
@@ -70,6 +72,23 @@ TEST(HeightSpanSolver, AFittedWedgeFractionReachesTheRun) {
   EXPECT_LT(kept.measure("ledger.max_relative_imbalance").value, 1e-12);
   values[compiled->parameter_index("wedge_fraction")] = 1.5;
   EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, AFittedLipWedgeFractionReachesTheRunOnlyWithTheSplitSource) {
+  // a thin intake layer makes the lip push ahead; with wedge_source split its fraction of that is kept
+  Scene s = small_scoop();
+  HeightSpanSection section = heightspan_section(s);
+  section.options.intake_layer_m = 0.002;
+  const auto other = HeightSpanSolver().compile(with_heightspan(s, section));
+  section.options.wedge_source = HeightSpanSpec::WedgeSource::kSplit;
+  const auto split = HeightSpanSolver().compile(with_heightspan(s, section));
+  std::vector<double> values = split->default_values();
+  EXPECT_EQ(split->run(values, {}).measure("flows.wedge_kept_m3").value, 0.0);
+  values[split->parameter_index("lip_wedge_fraction")] = 1.0;
+  const repose::Run kept = split->run(values, {});
+  EXPECT_GT(kept.measure("flows.wedge_kept_m3").value, 0.0);
+  EXPECT_LT(kept.measure("ledger.max_relative_imbalance").value, 1e-12);
+  EXPECT_THROW(other->run(values, {}), InputError);  // the compression's source would ignore it: refused
 }
 
 TEST(HeightSpanSolver, RunsReportTheLedgerTheHeldMassAndWhatWasBuilt) {

@@ -227,6 +227,46 @@ TEST(HeightSpanStep, TheWholeWedgeIsTheLipsPlusWhatTheDragWouldCompress) {
   EXPECT_NEAR(wedge_m3(b.state), wedge_m3(l.state) + compressed_kept_m3, 1e-12 * wedge_m3(b.state));
 }
 
+// wedge_source split: the drag's compression kept by `compression`, the lip's push-ahead by `lip`.
+Scene with_split_wedge(Scene s, double compression, double lip) {
+  s = with_wedge(std::move(s), compression);
+  HeightSpanSection section = heightspan_section(s);
+  section.options.wedge_source = HeightSpanSpec::WedgeSource::kSplit;
+  section.options.lip_wedge_fraction = lip;
+  return with_heightspan(std::move(s), section);
+}
+
+TEST(HeightSpanStep, RandomScoopsWithASplitWedgeConserveMaterialEveryStep) {
+  random_scoops_conserve(
+      20261129, [](Scene s, double f) { return with_split_wedge(std::move(s), f, 1.0 - f); }, "split wedge");
+}
+
+TEST(HeightSpanStep, ASplitWedgeIsBothWithEqualFractionsAndEachSourceWithTheOtherAtZero) {
+  // the scoop up to the drag's end (the wedge still carried): the same ground, load and
+  // wedge, bit for bit, as the source it reduces to
+  Scene base = with_intake_layer(scoop(0.016, 0.08, 80.0, 0.15, 1), 0.004);
+  base.time.duration_s = 21.0 / 30.0;
+  auto same = [](const Checked& a, const Checked& b, const std::string& what) {
+    EXPECT_EQ(held_m3(a.state), held_m3(b.state)) << what;
+    EXPECT_EQ(wedge_m3(a.state), wedge_m3(b.state)) << what;
+    EXPECT_EQ(a.state.ground.ledger.compressed_m3, b.state.ground.ledger.compressed_m3) << what;
+    EXPECT_EQ(a.state.ground.height.heights().matrix(), b.state.ground.height.heights().matrix()) << what;
+  };
+  Scene both = with_lip_wedge(base, 0.7);
+  HeightSpanSection section = heightspan_section(both);
+  section.options.wedge_source = HeightSpanSpec::WedgeSource::kBoth;
+  both = with_heightspan(both, section);
+  same(run_checked(with_split_wedge(base, 0.7, 0.7), "split 0.7 0.7"), run_checked(both, "both 0.7"), "both");
+  const Checked lip = run_checked(with_lip_wedge(base, 0.6), "lip 0.6");
+  same(run_checked(with_split_wedge(base, 0.0, 0.6), "split 0 0.6"), lip, "lip");
+  const Checked compression = run_checked(with_wedge(base, 0.6), "compression 0.6");
+  same(run_checked(with_split_wedge(base, 0.6, 0.0), "split 0.6 0"), compression, "compression");
+  // each part moves with its own fraction: more of the lip's, a bigger wedge and a smaller load
+  const Checked more_lip = run_checked(with_split_wedge(base, 0.6, 0.6), "split 0.6 0.6");
+  EXPECT_GT(wedge_m3(more_lip.state), wedge_m3(compression.state) + 1e-6);
+  EXPECT_LT(held_m3(more_lip.state), held_m3(compression.state));
+}
+
 TEST(HeightSpanStep, AScoopWithALipWedgeIsMirrorSymmetricAboutItsLineAndLaysItAhead) {
   Scene base = with_intake_layer(scoop(0.015, 0.06, 80.0, 0.15, 2), 0.004);
   const Checked c = run_checked(with_lip_wedge(base, 1.0), "mirror, lip wedge");
