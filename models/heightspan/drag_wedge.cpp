@@ -11,11 +11,11 @@
 
 namespace repose {
 
-namespace {
-
-bool dragging(const GroundModel& model, const Eigen::Vector3d& motion_m) {
+bool drags(const GroundModel& model, const Eigen::Vector3d& motion_m) {
   return is_drag(motion_m, 1e-3 * model.grid.cell_size_m);  // as the displacement decides (displacement.cpp)
 }
+
+namespace {
 
 // The ground cells in front of the map's frontmost span of every lane along
 // -back (one per lane that has a span and a cell ahead on the grid); lanes
@@ -48,7 +48,7 @@ std::vector<std::array<int, 2>> cells_ahead(const SpanMap& map, const Grid& grou
 
 double keep_in_wedge(const GroundModel& model, double compressed_m3, double fraction, const Eigen::Vector3d& motion_m,
                      DragWedge* wedge, GroundState* state) {
-  if (!(fraction > 0.0) || !(compressed_m3 > 0.0) || !dragging(model, motion_m)) return 0.0;
+  if (!(fraction > 0.0) || !(compressed_m3 > 0.0) || !drags(model, motion_m)) return 0.0;
   const double kept = fraction * compressed_m3;
   state->ledger.compressed_m3 -= kept;
   wedge->volume_m3 += kept;
@@ -68,7 +68,7 @@ void keep_pushed_ahead(double volume_m3, std::array<int, 2> back, DragWedge* wed
 
 double lay_wedge(const GroundModel& model, const SpanMap& map, const Eigen::Vector3d& motion_m, DragWedge* wedge,
                  GroundState* state) {
-  if (!(wedge->volume_m3 > 0.0) || dragging(model, motion_m)) return 0.0;
+  if (!(wedge->volume_m3 > 0.0) || drags(model, motion_m)) return 0.0;
   REPOSE_DEMAND(wedge->back[0] != 0 || wedge->back[1] != 0);  // a wedge is only kept while dragging
   int off_grid = 0;
   const std::vector<std::array<int, 2>> cells = cells_ahead(map, model.grid, wedge->back, &off_grid);

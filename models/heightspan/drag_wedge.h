@@ -46,6 +46,16 @@
 // band's compression whole and as much of the lip's push-ahead as the
 // depth's trend asks. Fitted to the deep and middle scoops, it keeps none of
 // the lip's (experiments/heightspan_scoop_fit_two_depths_wedge_split.yaml).
+//
+// Pressing (heightspan.press_fraction, default 0): lowering the bucket into
+// the bed compresses (1 - alpha) of what its underside meets, as the ground
+// model does; at the two-depth compression fit that is 39 cm^3 on the deep
+// scoop, the whole run's net loss, where the DEM loses 15-17 cm^3 over the
+// whole scoop. With press_fraction p > 0 a held object that presses (does
+// not drag) displaces alpha + p (1 - alpha) of what it meets around its
+// contact instead, so the drag then meets it again. Fitted with the wedge
+// to two depths it is 0.25, and neither held-out target is met
+// (experiments/heightspan_scoop_fit_two_depths_press.yaml).
 
 #include <array>
 
@@ -62,6 +72,10 @@ struct DragWedge {
   double volume_m3 = 0.0;         // carried in front of the object
   std::array<int, 2> back{0, 0};  // the cell step against the last drag, along its main axis
 };
+
+// True when a held object's motion this substep is a drag, as the ground's
+// displacement decides it (displacement.h: is_drag); otherwise it presses.
+bool drags(const GroundModel& model, const Eigen::Vector3d& motion_m);
 
 // After a held object's displacement this substep compressed `compressed_m3`:
 // when `motion_m` is a drag (displacement.h: is_drag), moves `fraction` of

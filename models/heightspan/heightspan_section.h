@@ -26,6 +26,10 @@
 //     lip_wedge_fraction: 0         # wedge_source split: the fraction of what the lip pushes ahead kept in
 //                                   # the wedge (wedge_fraction is then the compression's); fitted as
 //                                   # heightspan.lip_wedge_fraction; refused above 0 with another source
+//     press_fraction: 0             # the fraction of what a held object's pressing (lowering into the ground)
+//                                   # would compress that it displaces around its contact instead (as the
+//                                   # ground model displaces its alpha share); 0: compressed, as the ground
+//                                   # model does. Fitted as heightspan.press_fraction (drag_wedge.h)
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
 //     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}
@@ -53,6 +57,7 @@ struct HeightSpanSpec {
   enum class WedgeSource { kCompression, kLip, kBoth, kSplit };
   WedgeSource wedge_source = WedgeSource::kCompression;  // what wedge_fraction keeps (drag_wedge.h)
   double lip_wedge_fraction = 0.0;     // [0, 1]; above 0 only with kSplit (drag_wedge.h)
+  double press_fraction = 0.0;         // [0, 1]; 0: the pressing's compression as the ground model's (drag_wedge.h)
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
   enum class SpanMaps { kCpu, kOsmesa };
   SpanMaps span_maps = SpanMaps::kCpu;
@@ -76,6 +81,7 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
            std::vector<std::pair<std::string, W>>{{"compression", W::kCompression}, {"lip", W::kLip}, {"both", W::kBoth},
                                                           {"split", W::kSplit}});
   v.number("lip_wedge_fraction", s.lip_wedge_fraction, Range::any());
+  v.number("press_fraction", s.press_fraction, Range::any());
   v.number("frame_interval_s", s.frame_interval_s, Range::any());
   using M = HeightSpanSpec::SpanMaps;
   v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});

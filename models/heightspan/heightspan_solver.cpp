@@ -119,7 +119,7 @@ void write_held_csv(const HeightSpanModel& model, const HeightSpanRun& r, const 
 
 class CompiledHeightSpan final : public CompiledSolver {
  public:
-  static constexpr std::ptrdiff_t kOwnParameters = 3;
+  static constexpr std::ptrdiff_t kOwnParameters = 4;
 
   explicit CompiledHeightSpan(const Scene& scene)
       : model_(build_heightspan_model(scene)), initial_(make_initial_height(scene)), parameters_(model_.ground) {
@@ -134,6 +134,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     infos_.push_back({"lip_wedge_fraction", "1", 1.0, 0.0, 1.0, model_.options.lip_wedge_fraction,
                       "with heightspan.wedge_source split, the fraction of what a held object's lip pushes ahead "
                       "kept in its wedge (heightspan.lip_wedge_fraction; drag_wedge.h)"});
+    infos_.push_back({"press_fraction", "1", 1.0, 0.0, 1.0, model_.options.press_fraction,
+                      "the fraction of what a held object's pressing would compress displaced around its contact "
+                      "instead (heightspan.press_fraction; drag_wedge.h)"});
   }
 
   const std::vector<ParameterInfo>& parameters() const override { return infos_; }
@@ -144,9 +147,10 @@ class CompiledHeightSpan final : public CompiledSolver {
     const std::vector<double> material(values_si.begin(), values_si.end() - kOwnParameters);
     const GroundParams params = parameters_.params_for(model_.ground, material);
     HeightSpanModel model = model_;
-    model.options.intake_layer_m = values_si.end()[-3];
-    model.options.wedge_fraction = values_si.end()[-2];
-    model.options.lip_wedge_fraction = values_si.back();
+    model.options.intake_layer_m = values_si.end()[-4];
+    model.options.wedge_fraction = values_si.end()[-3];
+    model.options.lip_wedge_fraction = values_si.end()[-2];
+    model.options.press_fraction = values_si.back();
     validate(model.options);
     Run run;
     run.solver = "heightspan";
@@ -211,7 +215,7 @@ class CompiledHeightSpan final : public CompiledSolver {
   HeightField initial_;
   MaterialParameters parameters_;
   // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, wedge_fraction,
-  // lip_wedge_fraction
+  // lip_wedge_fraction, press_fraction
   std::vector<ParameterInfo> infos_;
 };
 

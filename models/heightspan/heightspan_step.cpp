@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -52,6 +53,15 @@ LipWedge lip_wedge(const HeightSpanSpec& o, DragWedge* wedge) {
   return {wedge, fraction};
 }
 
+// heightspan.press_fraction (drag_wedge.h): the materials a held object presses into, with that
+// fraction of what they would compress displaced instead. None when the option is 0.
+std::optional<GroundParams> pressing_params(const HeightSpanSpec& o, const GroundParams& params) {
+  if (!(o.press_fraction > 0.0)) return std::nullopt;
+  GroundParams p = params;
+  for (Material& m : p.materials) m.alpha += o.press_fraction * (1.0 - m.alpha);
+  return p;
+}
+
 void substep(const HeightSpanModel& model, const GroundParams& params, UndersideRenderer& renderer,
              const std::vector<Pose>& from, const std::vector<Pose>& to, double dt_s, HeightSpanState* state,
              HeightSpanStepReport* report) {
@@ -79,10 +89,13 @@ void substep(const HeightSpanModel& model, const GroundParams& params, Underside
     ceiling.undersides.push_back(std::move(u));
     motions.push_back(to[o].position_m - from[o].position_m);
   }
+  const std::optional<GroundParams> pressing = pressing_params(model.options, params);
   for (std::size_t k = 0; k < ceiling.undersides.size(); ++k) {
     const double compressed_before_m3 = state->ground.ledger.compressed_m3;
-    report->contact_cells +=
-        displace(ground, params, ceiling.undersides[k], ceiling, motions[k], &state->ground).contact_cells;
+    const bool presses = k < model.held.size() && pressing && !drags(ground, motions[k]);
+    report->contact_cells += displace(ground, presses ? *pressing : params, ceiling.undersides[k], ceiling, motions[k],
+                                      &state->ground)
+                                 .contact_cells;
     if (k < model.held.size()) {
       const double compressed_m3 = state->ground.ledger.compressed_m3 - compressed_before_m3;
       report->wedge_kept_m3 += keep_in_wedge(ground, compressed_m3, compression_wedge_fraction(model.options),

@@ -110,6 +110,20 @@ TEST(HeightSpanSection, RefusesALipWedgeFractionOutsideItsRangeOrWithoutTheSplit
   EXPECT_EQ(HeightSpanSpec{}.lip_wedge_fraction, 0.0);
 }
 
+TEST(HeightSpanSection, RefusesAPressFractionOutsideItsRange) {
+  for (const double fraction : {-0.1, 1.1, std::nan("")}) {
+    HeightSpanSpec spec;
+    spec.press_fraction = fraction;
+    try {
+      validate(spec);
+      FAIL() << fraction;
+    } catch (const FieldError& e) {
+      EXPECT_EQ(e.field(), "press_fraction");
+    }
+  }
+  EXPECT_EQ(HeightSpanSpec{}.press_fraction, 0.0);  // the default: compressed, as the ground model does
+}
+
 TEST(HeightSpanSection, ReadsTheWedgeSourceAndRefusesOtherWords) {
   std::string text = kScene;
   const std::string from = "near_ground_cells: 2";

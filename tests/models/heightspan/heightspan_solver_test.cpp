@@ -29,14 +29,16 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const Scene s = small_scoop();
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
-  // the ground's, then its own intake layer and wedge fractions
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 3);
-  EXPECT_EQ(compiled->parameters().end()[-3].name, "intake_layer_m");
-  EXPECT_EQ(compiled->parameters().end()[-3].value_si, HeightSpanSpec{}.intake_layer_m);
-  EXPECT_EQ(compiled->parameters().end()[-2].name, "wedge_fraction");
-  EXPECT_EQ(compiled->parameters().end()[-2].value_si, HeightSpanSpec{}.wedge_fraction);
-  EXPECT_EQ(compiled->parameters().back().name, "lip_wedge_fraction");
-  EXPECT_EQ(compiled->parameters().back().value_si, HeightSpanSpec{}.lip_wedge_fraction);
+  // the ground's, then its own intake layer, wedge fractions and press fraction
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 4);
+  EXPECT_EQ(compiled->parameters().end()[-4].name, "intake_layer_m");
+  EXPECT_EQ(compiled->parameters().end()[-4].value_si, HeightSpanSpec{}.intake_layer_m);
+  EXPECT_EQ(compiled->parameters().end()[-3].name, "wedge_fraction");
+  EXPECT_EQ(compiled->parameters().end()[-3].value_si, HeightSpanSpec{}.wedge_fraction);
+  EXPECT_EQ(compiled->parameters().end()[-2].name, "lip_wedge_fraction");
+  EXPECT_EQ(compiled->parameters().end()[-2].value_si, HeightSpanSpec{}.lip_wedge_fraction);
+  EXPECT_EQ(compiled->parameters().back().name, "press_fraction");
+  EXPECT_EQ(compiled->parameters().back().value_si, HeightSpanSpec{}.press_fraction);
   for (std::size_t k = 0; k < ground->parameters().size(); ++k) {
     EXPECT_EQ(compiled->parameters()[k].name, ground->parameters()[k].name);
     EXPECT_EQ(compiled->parameters()[k].value_si, ground->parameters()[k].value_si);
@@ -89,6 +91,21 @@ TEST(HeightSpanSolver, AFittedLipWedgeFractionReachesTheRunOnlyWithTheSplitSourc
   EXPECT_GT(kept.measure("flows.wedge_kept_m3").value, 0.0);
   EXPECT_LT(kept.measure("ledger.max_relative_imbalance").value, 1e-12);
   EXPECT_THROW(other->run(values, {}), InputError);  // the compression's source would ignore it: refused
+}
+
+TEST(HeightSpanSolver, AFittedPressFractionReachesTheRun) {
+  // the lowering compresses less when the bucket displaces what it presses; beyond [0, 1] refused
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  std::vector<double> values = compiled->default_values();
+  values[compiled->parameter_index("sand.alpha")] = 0.3;
+  const double compressed = compiled->run(values, {}).measure("volume.compressed_m3").value;
+  values[compiled->parameter_index("press_fraction")] = 1.0;
+  const repose::Run displaced = compiled->run(values, {});
+  EXPECT_GT(compressed, 0.0);
+  EXPECT_LT(displaced.measure("volume.compressed_m3").value, compressed);
+  EXPECT_LT(displaced.measure("ledger.max_relative_imbalance").value, 1e-12);
+  values[compiled->parameter_index("press_fraction")] = -0.5;
+  EXPECT_THROW(compiled->run(values, {}), InputError);
 }
 
 TEST(HeightSpanSolver, RunsReportTheLedgerTheHeldMassAndWhatWasBuilt) {

@@ -267,6 +267,37 @@ TEST(HeightSpanStep, ASplitWedgeIsBothWithEqualFractionsAndEachSourceWithTheOthe
   EXPECT_LT(held_m3(more_lip.state), held_m3(compression.state));
 }
 
+// heightspan.press_fraction: that fraction of what the bucket's pressing would compress displaced instead.
+Scene with_press(Scene s, double fraction) {
+  s = with_wedge(std::move(s), 0.0);
+  HeightSpanSection section = heightspan_section(s);
+  section.options.press_fraction = fraction;
+  return with_heightspan(std::move(s), section);
+}
+
+TEST(HeightSpanStep, RandomScoopsThatDisplaceWhatTheyPressConserveMaterialEveryStep) {
+  random_scoops_conserve(20261130, with_press, "press");
+}
+
+TEST(HeightSpanStep, ABucketPressedIntoSandDisplacesItsPressFractionOfWhatItWouldCompress) {
+  // the scoop's lowering alone (its first 0.2 s): on sand of alpha 0.3 the ground model
+  // compresses 70 % of what the bucket meets; press_fraction 1 displaces all of it around
+  // the contact, 0.5 half of that 70 %
+  Scene lowering = scoop(0.015, 0.0, 80.0, 0.15, 1);
+  lowering.time.duration_s = 0.2;
+  const Checked none = run_checked(with_press(lowering, 0.0), "press 0");
+  const Checked half = run_checked(with_press(lowering, 0.5), "press 0.5");
+  const Checked all = run_checked(with_press(lowering, 1.0), "press 1");
+  const double compressed_m3 = none.state.ground.ledger.compressed_m3;
+  EXPECT_GT(compressed_m3, 1e-6);
+  EXPECT_NEAR(all.state.ground.ledger.compressed_m3, 0.0, 1e-12 * compressed_m3);
+  EXPECT_GT(half.state.ground.ledger.compressed_m3, 0.3 * compressed_m3);
+  EXPECT_LT(half.state.ground.ledger.compressed_m3, 0.7 * compressed_m3);
+  // what is not compressed stays on the ground, around the bucket
+  EXPECT_NEAR(all.state.ground.height.volume_m3() + held_m3(all.state),
+              none.state.ground.height.volume_m3() + held_m3(none.state) + compressed_m3, 1e-9 * compressed_m3 + 1e-15);
+}
+
 TEST(HeightSpanStep, AScoopWithALipWedgeIsMirrorSymmetricAboutItsLineAndLaysItAhead) {
   Scene base = with_intake_layer(scoop(0.015, 0.06, 80.0, 0.15, 2), 0.004);
   const Checked c = run_checked(with_lip_wedge(base, 1.0), "mirror, lip wedge");
