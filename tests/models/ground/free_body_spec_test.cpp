@@ -8,42 +8,34 @@
 
 #include "experiments/solvers/solver_registry.h"
 #include "models/core/config/scene_loader.h"
+#include "tests/support/refused_field.h"
 
 namespace repose {
 namespace {
 
-std::string field_of(const FreeBodySpec& f) {
-  try {
-    validate(f);
-  } catch (const FieldError& e) {
-    return e.field();
-  }
-  return "none";
-}
-
 TEST(FreeBodySpec, ValidateNamesTheField) {
-  EXPECT_EQ(field_of(FreeBodySpec{}), "none");
+  EXPECT_EQ(testing::refused_field(FreeBodySpec{}), "");
   FreeBodySpec f;
   f.ode_step_s = 0.0;
-  EXPECT_EQ(field_of(f), "ode_step_s");
+  EXPECT_EQ(testing::refused_field(f), "ode_step_s");
   f = FreeBodySpec{};
   f.solver_iterations = 0;
-  EXPECT_EQ(field_of(f), "solver_iterations");
+  EXPECT_EQ(testing::refused_field(f), "solver_iterations");
   f = FreeBodySpec{};
   f.erp = 1.5;
-  EXPECT_EQ(field_of(f), "erp");
+  EXPECT_EQ(testing::refused_field(f), "erp");
   f = FreeBodySpec{};
   f.cfm = -1e-9;
-  EXPECT_EQ(field_of(f), "cfm");
+  EXPECT_EQ(testing::refused_field(f), "cfm");
   f = FreeBodySpec{};
   f.friction = -0.1;
-  EXPECT_EQ(field_of(f), "friction");
+  EXPECT_EQ(testing::refused_field(f), "friction");
   f = FreeBodySpec{};
   f.gravity_m_s2 = 1e3;
-  EXPECT_EQ(field_of(f), "gravity_m_s2");
+  EXPECT_EQ(testing::refused_field(f), "gravity_m_s2");
   f = FreeBodySpec{};
   f.bearing.exponent_n = -1;
-  EXPECT_EQ(field_of(f), "exponent_n");
+  EXPECT_EQ(testing::refused_field(f), "exponent_n");
 }
 
 TEST(FreeBodySpec, SceneRefusesMalformedValuesNamingTheKey) {

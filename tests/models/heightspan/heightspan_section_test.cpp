@@ -6,6 +6,7 @@
 #include "models/core/config/fields.h"
 #include "models/core/config/scene_loader.h"
 #include "models/ground/ground_section.h"
+#include "tests/support/refused_field.h"
 
 namespace repose {
 namespace {
@@ -18,16 +19,6 @@ objects:
   - {name: plate, shape: box, half_extents_m: [0.02, 0.02, 0.005], motion: [{time_s: 0, position_m: [0.05, 0.05, 0.05]}]}
 heightspan: {near_ground_cells: 2, holds_material: {plate: true}}
 )";
-
-// The field validate() names in refusing `spec`; "(accepted)" when it accepts it.
-std::string refused_field(const HeightSpanSpec& spec) {
-  try {
-    validate(spec);
-  } catch (const FieldError& e) {
-    return e.field();
-  }
-  return "(accepted)";
-}
 
 Scene load(const std::string& text) {
   return load_scene_from_string(text, "/tmp/t.yaml", {ground_model_section_type(), heightspan_section_type()});
@@ -58,7 +49,7 @@ TEST(HeightSpanSection, RefusesUnknownObjectsAndKeysAndBadValues) {
 TEST(HeightSpanSection, ValidateNamesTheField) {
   HeightSpanSpec spec;
   spec.bulk_density_kg_m3 = -1.0;
-  EXPECT_EQ(refused_field(spec), "bulk_density_kg_m3");
+  EXPECT_EQ(testing::refused_field(spec), "bulk_density_kg_m3");
   spec = {};
   spec.max_substep_angle_rad = 0.0;
   EXPECT_THROW(validate(spec), FieldError);
@@ -67,12 +58,12 @@ TEST(HeightSpanSection, ValidateNamesTheField) {
   EXPECT_THROW(validate(spec), FieldError);
   spec = {};
   spec.intake_layer_m = 0.0;  // a lip that takes in nothing would never fill: refused
-  EXPECT_EQ(refused_field(spec), "intake_layer_m");
+  EXPECT_EQ(testing::refused_field(spec), "intake_layer_m");
   EXPECT_EQ(HeightSpanSpec{}.intake_layer_m, 1e6);  // the default: no limit
   for (const double fraction : {-0.1, 1.1, std::nan("")}) {
     spec = {};
     spec.wedge_fraction = fraction;
-    EXPECT_EQ(refused_field(spec), "wedge_fraction") << fraction;
+    EXPECT_EQ(testing::refused_field(spec), "wedge_fraction") << fraction;
   }
   EXPECT_EQ(HeightSpanSpec{}.wedge_fraction, 0.0);  // the default: compressed, as the ground model does
   EXPECT_EQ(HeightSpanSpec{}.wedge_source, HeightSpanSpec::WedgeSource::kCompression);  // as session 17's
@@ -83,14 +74,14 @@ TEST(HeightSpanSection, RefusesALipWedgeFractionOutsideItsRangeOrWithoutTheSplit
   spec.wedge_source = HeightSpanSpec::WedgeSource::kSplit;
   for (const double fraction : {-0.1, 1.1, std::nan("")}) {
     spec.lip_wedge_fraction = fraction;
-    EXPECT_EQ(refused_field(spec), "lip_wedge_fraction") << fraction;
+    EXPECT_EQ(testing::refused_field(spec), "lip_wedge_fraction") << fraction;
   }
   spec.lip_wedge_fraction = 0.4;
   EXPECT_NO_THROW(validate(spec));
   for (const auto source : {HeightSpanSpec::WedgeSource::kCompression, HeightSpanSpec::WedgeSource::kLip,
                             HeightSpanSpec::WedgeSource::kBoth}) {
     spec.wedge_source = source;  // the others take wedge_fraction: a lip fraction there would be ignored
-    EXPECT_EQ(refused_field(spec), "lip_wedge_fraction");
+    EXPECT_EQ(testing::refused_field(spec), "lip_wedge_fraction");
   }
   spec.lip_wedge_fraction = 0.0;
   EXPECT_NO_THROW(validate(spec));
@@ -101,7 +92,7 @@ TEST(HeightSpanSection, RefusesAPressFractionOutsideItsRange) {
   for (const double fraction : {-0.1, 1.1, std::nan("")}) {
     HeightSpanSpec spec;
     spec.press_fraction = fraction;
-    EXPECT_EQ(refused_field(spec), "press_fraction") << fraction;
+    EXPECT_EQ(testing::refused_field(spec), "press_fraction") << fraction;
   }
   EXPECT_EQ(HeightSpanSpec{}.press_fraction, 0.0);  // the default: compressed, as the ground model does
 }

@@ -8,6 +8,7 @@
 #include "experiments/solvers/solver_registry.h"
 #include "models/core/base/error.h"
 #include "models/core/config/scene_loader.h"
+#include "tests/support/refused_field.h"
 
 namespace repose {
 namespace {
@@ -23,28 +24,19 @@ Scene load(const std::string& objects) {
                                 solver_registry().sections());
 }
 
-std::string field_of(const DynamicBody& d) {
-  try {
-    validate(d);
-  } catch (const FieldError& e) {
-    return e.field();
-  }
-  return "";
-}
-
 TEST(DynamicBody, ValidateNamesTheFieldThatBreaksARule) {
   DynamicBody d;
-  EXPECT_EQ(field_of(d), "mass_kg");  // neither mass nor density
+  EXPECT_EQ(testing::refused_field(d), "mass_kg");  // neither mass nor density
   d.mass_kg = 2.0;
-  EXPECT_EQ(field_of(d), "");
+  EXPECT_EQ(testing::refused_field(d), "");
   d.density_kg_m3 = 1000.0;
-  EXPECT_EQ(field_of(d), "density_kg_m3");  // both
+  EXPECT_EQ(testing::refused_field(d), "density_kg_m3");  // both
   d.density_kg_m3 = 0.0;
   d.velocity_m_s.x() = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(field_of(d), "velocity_m_s");
+  EXPECT_EQ(testing::refused_field(d), "velocity_m_s");
   d.velocity_m_s.x() = 0.0;
   d.torque_n_m.y() = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(field_of(d), "torque_n_m");
+  EXPECT_EQ(testing::refused_field(d), "torque_n_m");
 }
 
 TEST(DynamicBody, AWheelsTorqueIsReadInWorldAxes) {
