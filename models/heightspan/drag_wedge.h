@@ -45,7 +45,9 @@
 // heightspan.lip_wedge_fraction the lip's, so a fit can keep the wall
 // band's compression whole and as much of the lip's push-ahead as the
 // depth's trend asks. Fitted to the deep and middle scoops, it keeps none of
-// the lip's (experiments/heightspan_scoop_fit_two_depths_wedge_split.yaml).
+// the lip's (experiments/heightspan_scoop_fit_two_depths_wedge_split.yaml),
+// and cross-validated between those two depths 0 predicts better than 0.2
+// (experiments/heightspan_scoop_lip_cv_*.yaml).
 //
 // Pressing (heightspan.press_fraction, default 0): lowering the bucket into
 // the bed compresses (1 - alpha) of what its underside meets, as the ground
