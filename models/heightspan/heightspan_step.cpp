@@ -62,9 +62,10 @@ std::optional<GroundParams> pressing_params(const HeightSpanSpec& o, const Groun
   return p;
 }
 
-void substep(const HeightSpanModel& model, const GroundParams& params, UndersideRenderer& renderer,
-             const std::vector<Pose>& from, const std::vector<Pose>& to, double dt_s, HeightSpanState* state,
-             HeightSpanStepReport* report) {
+// pressing: pressing_params(model.options, params), made once per step (none when press_fraction is 0).
+void substep(const HeightSpanModel& model, const GroundParams& params, const std::optional<GroundParams>& pressing,
+             UndersideRenderer& renderer, const std::vector<Pose>& from, const std::vector<Pose>& to, double dt_s,
+             HeightSpanState* state, HeightSpanStepReport* report) {
   const GroundModel& ground = model.ground;
   Ceiling ceiling;
   std::vector<Eigen::Vector3d> motions;
@@ -89,7 +90,6 @@ void substep(const HeightSpanModel& model, const GroundParams& params, Underside
     ceiling.undersides.push_back(std::move(u));
     motions.push_back(to[o].position_m - from[o].position_m);
   }
-  const std::optional<GroundParams> pressing = pressing_params(model.options, params);
   for (std::size_t k = 0; k < ceiling.undersides.size(); ++k) {
     const double compressed_before_m3 = state->ground.ledger.compressed_m3;
     const bool presses = k < model.held.size() && pressing && !drags(ground, motions[k]);
@@ -146,12 +146,13 @@ HeightSpanStepReport step(const HeightSpanModel& model, const GroundParams& para
   const int substeps = heightspan_substeps(model, state->ground.previous_poses, end, state->ground.step_index);
   report.substeps = substeps;
   std::vector<Pose> poses = state->ground.previous_poses;
+  const std::optional<GroundParams> pressing = pressing_params(model.options, params);
   for (int s = 1; s <= substeps; ++s) {
     std::vector<Pose> to(n_objects);
     for (std::size_t o = 0; o < n_objects; ++o) {
       to[o] = s == substeps ? end[o] : ground.objects[o].pose_at(t0 + dt * s / substeps);
     }
-    substep(model, params, renderer, poses, to, dt / substeps, state, &report);
+    substep(model, params, pressing, renderer, poses, to, dt / substeps, state, &report);
     poses = to;
   }
   const std::vector<double> max_dh = max_height_differences(ground, params);
