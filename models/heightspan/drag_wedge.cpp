@@ -52,11 +52,7 @@ double keep_in_wedge(const GroundModel& model, double compressed_m3, double frac
   const double kept = fraction * compressed_m3;
   state->ledger.compressed_m3 -= kept;
   wedge->volume_m3 += kept;
-  if (std::abs(motion_m.x()) >= std::abs(motion_m.y())) {
-    wedge->back = {motion_m.x() > 0.0 ? -1 : 1, 0};
-  } else {
-    wedge->back = {0, motion_m.y() > 0.0 ? -1 : 1};
-  }
+  wedge->back = back_step(motion_m);  // not {0, 0}: a drag moves sideways
   return kept;
 }
 

@@ -41,15 +41,13 @@ Underside underside_of(const SpanMap& map, const Grid& ground, double top_m) {
   return u;
 }
 
-namespace {
-
-// The cell step opposite to the object's horizontal motion along its main
-// axis (0, 0 when it does not move sideways).
 std::array<int, 2> back_step(const Eigen::Vector3d& motion_m) {
   if (!(std::max(std::abs(motion_m.x()), std::abs(motion_m.y())) > 0.0)) return {0, 0};
   if (std::abs(motion_m.x()) >= std::abs(motion_m.y())) return {motion_m.x() > 0.0 ? -1 : 1, 0};
   return {0, motion_m.y() > 0.0 ? -1 : 1};
 }
+
+namespace {
 
 // Puts `amount` (m of height) scooped at map cell (i, j) onto its span k
 // with its surface at most `level`: it is pushed back into the object, away

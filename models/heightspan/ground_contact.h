@@ -36,6 +36,7 @@
 // within half a cell of the ground's (the map moves with the object); each
 // map cell stands for the ground cell holding its centre.
 
+#include <array>
 #include <limits>
 
 #include "models/ground/collision.h"
@@ -59,6 +60,10 @@ struct CellOffset {
   int di = 0, dj = 0;
 };
 CellOffset ground_offset(const Grid& map, const Grid& ground);
+
+// The cell step opposite to the object's horizontal motion along its main
+// axis, x or y ({0, 0} when it does not move sideways).
+std::array<int, 2> back_step(const Eigen::Vector3d& motion_m);
 
 // The lowest span bottoms over the ground cells the map covers; empty when
 // the map has no span over the grid. top_m: the object's highest point.

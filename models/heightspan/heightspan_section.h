@@ -30,6 +30,10 @@
 //                                   # would compress that it displaces around its contact instead (as the
 //                                   # ground model displaces its alpha share); 0: compressed, as the ground
 //                                   # model does. Fitted as heightspan.press_fraction (drag_wedge.h)
+//     side_cut_m: 0                 # while a held object drags, the ground within this distance (m) beside
+//                                   # its outermost lanes is cut down to its side walls' lower edge where its
+//                                   # lip meets new ground, into its wedge (side_cut.h); 0: none. Fitted as
+//                                   # heightspan.side_cut_m
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
 //     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}
@@ -58,6 +62,7 @@ struct HeightSpanSpec {
   WedgeSource wedge_source = WedgeSource::kCompression;  // what wedge_fraction keeps (drag_wedge.h)
   double lip_wedge_fraction = 0.0;     // [0, 1]; above 0 only with kSplit (drag_wedge.h)
   double press_fraction = 0.0;         // [0, 1]; 0: the pressing's compression as the ground model's (drag_wedge.h)
+  double side_cut_m = 0.0;             // [0, 0.1] m; 0: none (side_cut.h)
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
   enum class SpanMaps { kCpu, kOsmesa };
   SpanMaps span_maps = SpanMaps::kCpu;
@@ -82,6 +87,7 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
                                                           {"split", W::kSplit}});
   v.number("lip_wedge_fraction", s.lip_wedge_fraction, Range::any());
   v.number("press_fraction", s.press_fraction, Range::any());
+  v.number("side_cut_m", s.side_cut_m, Range::any());
   v.number("frame_interval_s", s.frame_interval_s, Range::any());
   using M = HeightSpanSpec::SpanMaps;
   v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});

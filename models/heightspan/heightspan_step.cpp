@@ -14,6 +14,7 @@
 #include "models/heightspan/ground_contact.h"
 #include "models/heightspan/heightspan_model.h"
 #include "models/heightspan/heightspan_state.h"
+#include "models/heightspan/side_cut.h"
 #include "models/heightspan/span_motion.h"
 
 namespace repose {
@@ -79,7 +80,8 @@ void substep(const HeightSpanModel& model, const GroundParams& params, const std
     const double wedge_before_m3 = spans.wedge.volume_m3;
     report->taken_up_m3 += take_up_ground(ground, &spans.map, &state->ground, motion, model.options.intake_layer_m,
                                           lip_wedge(model.options, &spans.wedge));
-    report->wedge_kept_m3 += spans.wedge.volume_m3 - wedge_before_m3;  // wedge_source lip
+    report->side_cut_m3 += cut_beside(ground, spans.map, model.options.side_cut_m, motion, &spans.wedge, &state->ground);
+    report->wedge_kept_m3 += spans.wedge.volume_m3 - wedge_before_m3;  // the lip's wedge and the side cut
     ceiling.undersides.push_back(underside_of(spans.map, ground.grid, top_at(ground.objects[o], to[o])));
     motions.push_back(motion);
   }

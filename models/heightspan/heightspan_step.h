@@ -10,7 +10,8 @@
 //   1. every held object's span map follows it (span_motion.h);
 //   2. collision: the held objects' undersides from their maps, the others'
 //      from the ground model's Z-buffer (models/ground/collision.h); held
-//      objects take up the ground above their spans (ground_contact.h);
+//      objects take up the ground above their spans (ground_contact.h)
+//      and, while they drag, cut the ground beside them (side_cut.h);
 //   3. compression and displacement of what they intersect, object by
 //      object, by the ground model (models/ground/displacement.h; objects
 //      whose footprints touch are not merged into one region as the ground
@@ -35,6 +36,7 @@ struct HeightSpanStepReport {
   int contact_cells = 0;
   double taken_up_m3 = 0.0;  // ground scooped onto spans
   double wedge_kept_m3 = 0.0, wedge_laid_m3 = 0.0;  // into and out of the objects' wedges (drag_wedge.h)
+  double side_cut_m3 = 0.0;  // cut beside dragged objects, into their wedges (part of wedge_kept_m3; side_cut.h)
   int resampled = 0;         // object-substeps that turned (maps peeled again)
   ErosionResult ground_erosion;
   SpanErosionResult span_erosion;

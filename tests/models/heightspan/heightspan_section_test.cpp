@@ -97,6 +97,15 @@ TEST(HeightSpanSection, RefusesAPressFractionOutsideItsRange) {
   EXPECT_EQ(HeightSpanSpec{}.press_fraction, 0.0);  // the default: compressed, as the ground model does
 }
 
+TEST(HeightSpanSection, RefusesASideCutOutsideItsRange) {
+  for (const double width_m : {-0.001, 0.11, std::nan("")}) {
+    HeightSpanSpec spec;
+    spec.side_cut_m = width_m;
+    EXPECT_EQ(testing::refused_field(spec), "side_cut_m") << width_m;
+  }
+  EXPECT_EQ(HeightSpanSpec{}.side_cut_m, 0.0);  // the default: no cut beside the object
+}
+
 TEST(HeightSpanSection, ReadsTheWedgeSourceAndRefusesOtherWords) {
   std::string text = kScene;
   const std::string from = "near_ground_cells: 2";

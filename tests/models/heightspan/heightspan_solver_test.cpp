@@ -29,16 +29,17 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const Scene s = small_scoop();
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
-  // the ground's, then its own intake layer, wedge fractions and press fraction
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 4);
-  EXPECT_EQ(compiled->parameters().end()[-4].name, "intake_layer_m");
-  EXPECT_EQ(compiled->parameters().end()[-4].value_si, HeightSpanSpec{}.intake_layer_m);
-  EXPECT_EQ(compiled->parameters().end()[-3].name, "wedge_fraction");
-  EXPECT_EQ(compiled->parameters().end()[-3].value_si, HeightSpanSpec{}.wedge_fraction);
-  EXPECT_EQ(compiled->parameters().end()[-2].name, "lip_wedge_fraction");
-  EXPECT_EQ(compiled->parameters().end()[-2].value_si, HeightSpanSpec{}.lip_wedge_fraction);
-  EXPECT_EQ(compiled->parameters().back().name, "press_fraction");
-  EXPECT_EQ(compiled->parameters().back().value_si, HeightSpanSpec{}.press_fraction);
+  // the ground's, then its own intake layer, wedge fractions, press fraction and side cut
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 5);
+  const std::vector<std::pair<std::string, double>> own = {
+      {"intake_layer_m", HeightSpanSpec{}.intake_layer_m}, {"wedge_fraction", HeightSpanSpec{}.wedge_fraction},
+      {"lip_wedge_fraction", HeightSpanSpec{}.lip_wedge_fraction}, {"press_fraction", HeightSpanSpec{}.press_fraction},
+      {"side_cut_m", HeightSpanSpec{}.side_cut_m}};
+  for (std::size_t k = 0; k < own.size(); ++k) {
+    const ParameterInfo& p = compiled->parameters()[ground->parameters().size() + k];
+    EXPECT_EQ(p.name, own[k].first);
+    EXPECT_EQ(p.value_si, own[k].second) << p.name;
+  }
   for (std::size_t k = 0; k < ground->parameters().size(); ++k) {
     EXPECT_EQ(compiled->parameters()[k].name, ground->parameters()[k].name);
     EXPECT_EQ(compiled->parameters()[k].value_si, ground->parameters()[k].value_si);
@@ -105,6 +106,20 @@ TEST(HeightSpanSolver, AFittedPressFractionReachesTheRun) {
   EXPECT_LT(displaced.measure("volume.compressed_m3").value, compressed);
   EXPECT_LT(displaced.measure("ledger.max_relative_imbalance").value, 1e-12);
   values[compiled->parameter_index("press_fraction")] = -0.5;
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, AFittedSideCutReachesTheRun) {
+  // a drag that cuts beside its walls reports the cut (into the wedge, laid when the drag ends)
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  std::vector<double> values = compiled->default_values();
+  EXPECT_EQ(compiled->run(values, {}).measure("flows.side_cut_m3").value, 0.0);
+  values[compiled->parameter_index("side_cut_m")] = 0.005;
+  const repose::Run cut = compiled->run(values, {});
+  EXPECT_GT(cut.measure("flows.side_cut_m3").value, 0.0);
+  EXPECT_GE(cut.measure("flows.wedge_kept_m3").value, cut.measure("flows.side_cut_m3").value);
+  EXPECT_LT(cut.measure("ledger.max_relative_imbalance").value, 1e-12);
+  values[compiled->parameter_index("side_cut_m")] = -0.001;
   EXPECT_THROW(compiled->run(values, {}), InputError);
 }
 

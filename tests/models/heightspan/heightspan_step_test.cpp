@@ -298,6 +298,38 @@ TEST(HeightSpanStep, ABucketPressedIntoSandDisplacesItsPressFractionOfWhatItWoul
               none.state.ground.height.volume_m3() + held_m3(none.state) + compressed_m3, 1e-9 * compressed_m3 + 1e-15);
 }
 
+// heightspan.side_cut_m: up to 4 cells beside the dragged bucket's walls cut into its wedge (side_cut.h).
+Scene with_side_cut(Scene s, double fraction) {
+  HeightSpanSection section = heightspan_section(s);
+  section.options.side_cut_m = fraction * 0.02;
+  return with_heightspan(std::move(s), section);
+}
+
+TEST(HeightSpanStep, RandomScoopsThatCutBesideTheBucketConserveMaterialEveryStep) {
+  random_scoops_conserve(20261128, with_side_cut, "side cut");
+}
+
+TEST(HeightSpanStep, ASideCutDigsAWiderTrenchMirrorSymmetricallyAndLaysTheCutAhead) {
+  Scene base = with_intake_layer(scoop(0.015, 0.06, 80.0, 0.15, 2), 0.004);
+  HeightSpanSection section = heightspan_section(base);
+  section.options.particle_spread_m_s = 0.0;  // as AScoopAlongAnAxisIsMirrorSymmetricAboutIt
+  base = with_heightspan(base, section);
+  const Checked off = run_checked(base, "no side cut");
+  const Checked on = run_checked(with_side_cut(base, 0.5), "side cut 1 cm");
+  const ArrayXXdR& h = on.state.ground.height.heights();
+  ASSERT_EQ(h.rows(), 24);
+  double worst = 0.0;
+  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_EQ(wedge_m3(on.state), 0.0);  // laid when the lift began
+  // beside the bucket's path (its 16 rows are 4 .. 19; the drag's columns 12 .. 24) the ground is lower
+  auto beside_m3 = [](const HeightSpanState& st) {
+    const ArrayXXdR& g = st.ground.height.heights();
+    return (g.block(0, 12, 4, 13).sum() + g.block(20, 12, 4, 13).sum()) * 0.005 * 0.005;
+  };
+  EXPECT_LT(beside_m3(on.state), beside_m3(off.state) - 1e-6);
+}
+
 TEST(HeightSpanStep, AScoopWithALipWedgeIsMirrorSymmetricAboutItsLineAndLaysItAhead) {
   Scene base = with_intake_layer(scoop(0.015, 0.06, 80.0, 0.15, 2), 0.004);
   const Checked c = run_checked(with_lip_wedge(base, 1.0), "mirror, lip wedge");

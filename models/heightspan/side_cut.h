@@ -1,0 +1,35 @@
+#pragma once
+// The ground a dragged object's sides carry along (issue 12; departure from
+// the paper, an option: heightspan.side_cut_m, default 0).
+//
+// Behind the fitted bucket the LIGGGHTS trench is deeper across its whole
+// width, most on its flanks: averaged over the three beds of the deep scoop
+// (x 0.05-0.11 m), 3-4 mm lower than the model's at 5-30 mm from the side
+// walls and 1-2 mm at the centre, as if each flank were shifted outwards by
+// about a grain (4.5 mm). The DEM digs 21-24 cm^3 more than the model at every depth
+// and heaps 37-40 cm^3 more beyond x = 0.15 m (experiments/heightspan/
+// scoop_profiles.py). Grains in contact with a side wall are dragged along
+// by it and, with those resting on them, fail ahead of the lip with the
+// wedge; the height-span model's spans only meet the ground under their own
+// footprint.
+//
+// With side_cut_m w > 0, while a held object drags (drags(), drag_wedge.h),
+// the ground beside each of its two outermost lanes across the drag's main
+// axis (x or y), within w of the lane, is cut down to the object's lowest
+// span bottom (the depth its lip cuts to), in the ground column of the
+// lane's frontmost span, where the lip meets new ground. The cut goes into
+// the object's wedge (drag_wedge.h), laid ahead of the object when it stops
+// dragging. A cell partly within w is cut by the fraction within. Erosion
+// then settles the trench wall the cut leaves.
+
+#include "models/heightspan/drag_wedge.h"
+
+namespace repose {
+
+// Cuts the ground beside `map`'s sides (above) into `wedge` when `motion_m`
+// is a drag and width_m > 0; the cut cells join the erosion memory. Returns
+// the volume cut (m^3).
+double cut_beside(const GroundModel& model, const SpanMap& map, double width_m, const Eigen::Vector3d& motion_m,
+                  DragWedge* wedge, GroundState* state);
+
+}  // namespace repose
