@@ -8,12 +8,17 @@ reference's flank is the mean over three random beds. This runs the model at
 a calibration's fitted parameters on each LIGGGHTS seed's own initial bed
 (data/ref_scoop*/seedN/height_initial.npy), each with sigma scaled by
 1 + k 1e-4 for k = -5..5, and prints the flank's mean, standard deviation,
-standard error and per-bed means beside the seeds' own. Usage:
+standard error and per-bed means beside the seeds' own. It also prints the
+mass the bucket holds at the stages (filled, lifted, carried: 1.0, 1.3, 1.6 s)
+in the unjittered runs, averaged over the beds, against the seeds' mean (the
+issue's held-mass target). --seeds picks the LIGGGHTS seeds (default 1 2 3);
+a scoop uses those it has (data/ref_scoop_shallow has seeds 1-7, the deep
+scoop 1-3). Usage:
   /usr/bin/python3 experiments/heightspan/flank_ensemble.py runs/FIT/parameters.yaml --out runs/flank_FIT \
       [--deep scenes/ref_scoop.yaml] [--shallow scenes/ref_scoop_shallow.yaml] [--repose build/bin/repose] \
-      [--set KEY=VALUE ...]
+      [--set KEY=VALUE ...] [--seeds 1 2 3 4 5 6 7]
 (scenes relative to experiments/; --set is passed to every run, e.g. ground_model.heap_laying=one_pass;
-66 runs of about 0.2 s).
+11 runs of about 0.2 s per scoop and bed).
 """
 import argparse
 import os
@@ -29,6 +34,7 @@ sys.path.insert(0, HERE)
 import dump_flank  # noqa: E402
 
 SEEDS = (1, 2, 3)
+STAGES_S = (1.0, 1.3, 1.6)  # filled, lifted, carried (the calibrations' held-out stages)
 JITTER = [k * 1e-4 for k in range(-5, 6)]  # sigma's relative change
 
 
@@ -68,6 +74,20 @@ def summary(per_bed):
             "min": a.min(), "max": a.max()}
 
 
+def held_at(csv_path, times_s):
+    """The bucket's held mass (kg) at times_s, linear between the rows of a held_mass.csv
+    (the model's column bucket_mass_kg and LIGGGHTS' alike)."""
+    data = np.genfromtxt(csv_path, delimiter=",", names=True)
+    return np.interp(times_s, data["time_s"], data["bucket_mass_kg"])
+
+
+def held_error_percent(model_csvs, seed_csvs, times_s=STAGES_S):
+    """The beds' mean held mass against the seeds' mean at each stage, in % of the seeds' mean."""
+    model = np.mean([held_at(c, times_s) for c in model_csvs], axis=0)
+    seeds = np.mean([held_at(c, times_s) for c in seed_csvs], axis=0)
+    return 100.0 * (model - seeds) / seeds
+
+
 def run_flank(repose, scene, values, bed, out, extra=()):
     cmd = [repose, "run", os.path.join(ROOT, "experiments", scene), "--solver", "heightspan", *overrides(values),
            *[a for kv in extra for a in ("--set", kv)],
@@ -87,12 +107,15 @@ def main():
     p.add_argument("--shallow", default="scenes/ref_scoop_shallow.yaml")
     p.add_argument("--repose", default=os.path.join(ROOT, "build", "bin", "repose"))
     p.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="passed to every repose run")
+    p.add_argument("--seeds", type=int, nargs="+", default=list(SEEDS), help="LIGGGHTS seeds (those a scoop has)")
     args = p.parse_args()
     values = read_parameters(args.parameters)
+    unjittered = JITTER.index(0.0)
     for name, scene, data in (("deep", args.deep, "ref_scoop"), ("shallow", args.shallow, "ref_scoop_shallow")):
-        beds = [os.path.join(ROOT, "data", data, f"seed{s}") for s in SEEDS]
+        seed_list = [s for s in args.seeds if os.path.isdir(os.path.join(ROOT, "data", data, f"seed{s}"))]
+        beds = [os.path.join(ROOT, "data", data, f"seed{s}") for s in seed_list]
         per_bed = []
-        for s, bed in zip(SEEDS, beds):
+        for s, bed in zip(seed_list, beds):
             per_bed.append([run_flank(args.repose, scene, jittered(values, f), os.path.join(bed, "height_initial.npy"),
                                       os.path.join(args.out, name, f"bed{s}", f"{k}"), args.set)
                             for k, f in enumerate(JITTER)])
@@ -101,8 +124,12 @@ def main():
         m = summary(per_bed)
         print(f"{name}: model {m['mean']:.2f} +- {m['sd']:.2f} deg (sem {m['sem']:.2f}; per bed "
               + " / ".join(f"{x:.2f}" for x in m["per_bed"]) + f"; {m['min']:.1f}..{m['max']:.1f}) against the seeds' "
-              + " / ".join(f"{x:.1f}" for x in seeds) + f" (mean {np.mean(seeds):.2f}, sd {np.std(seeds, ddof=1):.2f})",
-              flush=True)
+              + " / ".join(f"{x:.1f}" for x in seeds) + f" (mean {np.mean(seeds):.2f}, sd {np.std(seeds, ddof=1):.2f}; "
+              + f"seeds {' '.join(map(str, seed_list))})", flush=True)
+        errors = held_error_percent([os.path.join(args.out, name, f"bed{s}", f"{unjittered}", "held_mass.csv")
+                                     for s in seed_list], [os.path.join(bed, "held_mass.csv") for bed in beds])
+        print(f"{name}: held at " + " / ".join(f"{t:g}" for t in STAGES_S) + " s: "
+              + " / ".join(f"{e:+.1f}" for e in errors) + " % of the seeds' mean", flush=True)
 
 
 if __name__ == "__main__":

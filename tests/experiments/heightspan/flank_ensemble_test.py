@@ -43,6 +43,23 @@ class FlankEnsemble(unittest.TestCase):
         self.assertAlmostEqual(s["sem"], s["sd"] / np.sqrt(6))
         self.assertTrue(np.allclose(s["per_bed"], [16.0, 17.0, 15.0]))
 
+    def test_held_mass_is_read_between_rows_and_compared_with_the_seeds_mean(self):
+        with tempfile.TemporaryDirectory() as d:
+            def csv(name, text):
+                path = os.path.join(d, name)
+                with open(path, "w") as f:
+                    f.write(text)
+                return path
+            model = csv("model.csv", "time_s,bucket_volume_m3,bucket_mass_kg,in_flight_m3\n"
+                                     "0.9,0,0.10,0\n1.1,0,0.12,0\n1.4,0,0.08,0\n1.7,0,0.08,0\n")
+            seed_a = csv("a.csv", "time_s,bucket_mass_kg\n0,0\n1.0,0.10\n2.0,0.10\n")
+            seed_b = csv("b.csv", "time_s,bucket_mass_kg\n0,0\n1.0,0.12\n2.0,0.06\n")
+            self.assertTrue(np.allclose(flank_ensemble.held_at(model, [1.0, 1.25, 1.6]), [0.11, 0.10, 0.08]))
+            # seeds' mean at 1.0 / 1.3 / 1.6 s: 0.11, 0.101, 0.092
+            errors = flank_ensemble.held_error_percent([model], [seed_a, seed_b])
+            expected = 100.0 * (np.array([0.11, 0.12 - 0.04 * 0.2 / 0.3, 0.08]) / np.array([0.11, 0.101, 0.092]) - 1.0)
+            self.assertTrue(np.allclose(errors, expected))
+
 
 if __name__ == "__main__":
     unittest.main()
