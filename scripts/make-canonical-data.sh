@@ -82,6 +82,13 @@ for seed in "${seeds[@]}"; do
 done
 for seed in "${seeds[@]}"; do order+=("ref_scoop_shallow/seed$seed" "ref_scoop_bullet/seed$seed"); done
 for seed in "${seeds[@]}"; do order+=("ref_scoop_medium/seed$seed"); done
+# the held-out shallow scoop on four more beds (seeds 4-7): the scatter of its
+# dumped heap's flank, the held-out flank target's yardstick, from seven
+# beds rather than three (issue 12)
+for seed in 4 5 6 7; do
+  scenes[ref_scoop_shallow/seed$seed]=experiments/scenes/ref_scoop_shallow.yaml
+  order+=("ref_scoop_shallow/seed$seed")
+done
 # the coarse-grain rungs of the scoop's ladder (grains 1.5 times larger): one bed per engine
 scenes[ref_scoop_coarse/seed1]=experiments/scenes/ref_scoop_coarse.yaml
 scenes[ref_scoop_coarse_bullet/seed1]=experiments/scenes/ref_scoop_coarse.yaml
