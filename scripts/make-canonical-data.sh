@@ -82,12 +82,14 @@ for seed in "${seeds[@]}"; do
 done
 for seed in "${seeds[@]}"; do order+=("ref_scoop_shallow/seed$seed" "ref_scoop_bullet/seed$seed"); done
 for seed in "${seeds[@]}"; do order+=("ref_scoop_medium/seed$seed"); done
-# the held-out shallow scoop on four more beds (seeds 4-7): the scatter of its
-# dumped heap's flank, the held-out flank target's yardstick, from seven
-# beds rather than three (issue 12)
+# the LIGGGHTS scoops at the three depths on four more beds (seeds 4-7): the
+# seed-to-seed scatter of the held mass and the dumped heap's flank, the
+# held-out targets' yardsticks, from seven beds rather than three (issue 12)
 for seed in 4 5 6 7; do
-  scenes[ref_scoop_shallow/seed$seed]=experiments/scenes/ref_scoop_shallow.yaml
-  order+=("ref_scoop_shallow/seed$seed")
+  for scene in ref_scoop_shallow ref_scoop ref_scoop_medium; do
+    scenes[$scene/seed$seed]=experiments/scenes/$scene.yaml
+    order+=("$scene/seed$seed")
+  done
 done
 # the coarse-grain rungs of the scoop's ladder (grains 1.5 times larger): one bed per engine
 scenes[ref_scoop_coarse/seed1]=experiments/scenes/ref_scoop_coarse.yaml
