@@ -11,9 +11,9 @@ a calibration's fitted parameters on each LIGGGHTS seed's own initial bed
 standard error and per-bed means beside the seeds' own. It also prints the
 mass the bucket holds at the stages (filled, lifted, carried: 1.0, 1.3, 1.6 s)
 in the unjittered runs, averaged over the beds, against the seeds' mean (the
-issue's held-mass target). --seeds picks the LIGGGHTS seeds (default 1 2 3);
-a scoop uses those it has (data/ref_scoop_shallow has seeds 1-7, the deep
-scoop 1-3). Usage:
+issue's held-mass target). --seeds picks the LIGGGHTS seeds (default 1 2 3,
+the calibrations' references); a scoop uses those it has (data/ref_scoop*
+hold seeds 1-7). Usage:
   /usr/bin/python3 experiments/heightspan/flank_ensemble.py runs/FIT/parameters.yaml --out runs/flank_FIT \
       [--deep scenes/ref_scoop.yaml] [--shallow scenes/ref_scoop_shallow.yaml] [--repose build/bin/repose] \
       [--set KEY=VALUE ...] [--seeds 1 2 3 4 5 6 7]
