@@ -3,30 +3,15 @@
 #include <gtest/gtest.h>
 
 #include "heightspan_fixtures.h"
-#include "models/core/config/initial_height.h"
 
 namespace repose {
 namespace {
 
-using testing::bed_scene;
-using testing::bucket_mesh;
-using testing::key;
-using testing::mesh_object;
-
-// An upright bucket (8 cm: 16 cells of 5 mm) standing at x_m on a 40 x 40 grid.
-struct Standing {
-  HeightSpanModel model;
-  HeightSpanState state;
-};
-Standing standing_bucket(double x_m) {
-  Scene s = bed_scene(40, 40, 0.005, 0.01, {mesh_object("bucket", bucket_mesh(), {key(0.0, x_m, 0.1, 0.08)})}, 1);
-  Standing b{build_heightspan_model(s), {}};
-  b.state = make_heightspan_state(b.model, make_initial_height(s));
-  return b;
-}
+using testing::standing_bucket;
+using testing::StandingBucket;
 
 TEST(DragWedge, KeepsItsFractionOfWhatADragCompressesAndTheLedgerStillBalances) {
-  Standing b = standing_bucket(0.1);
+  StandingBucket b = standing_bucket(0.1);
   GroundState& g = b.state.ground;
   g.ledger.compressed_m3 = 1e-6;
   const double before = accounted_m3(b.state);
@@ -57,7 +42,7 @@ TEST(DragWedge, KeepsWhatTheLipPushedAheadAndRemembersTheWay) {
 }
 
 TEST(DragWedge, LaysItInEqualSharesJustAheadOfEveryLaneOfTheObjectOnceItStopsDragging) {
-  Standing b = standing_bucket(0.1);  // spans over ground cells 12 .. 27 in x and y
+  StandingBucket b = standing_bucket(0.1);  // spans over ground cells 12 .. 27 in x and y
   GroundState& g = b.state.ground;
   DragWedge& w = b.state.held[0].wedge;
   w = DragWedge{1.6e-5, {-1, 0}};  // driven towards +x
@@ -82,13 +67,13 @@ TEST(DragWedge, LaysItInEqualSharesJustAheadOfEveryLaneOfTheObjectOnceItStopsDra
 }
 
 TEST(DragWedge, WhatFindsNoCellAheadOnTheGridLeavesIt) {
-  Standing b = standing_bucket(0.1);
+  StandingBucket b = standing_bucket(0.1);
   GroundState& g = b.state.ground;
   DragWedge& w = b.state.held[0].wedge;
   w = DragWedge{1.6e-5, {0, 1}};  // driven towards -y: the cells ahead are row 11
   EXPECT_DOUBLE_EQ(lay_wedge(b.model.ground, b.state.held[0].map, Eigen::Vector3d::Zero(), &w, &g), 1.6e-5);
   EXPECT_GT(g.height.at(20, 11), 0.01);
-  Standing edge = standing_bucket(0.18);  // reaches past the grid's +x edge (0.2 m)
+  StandingBucket edge = standing_bucket(0.18);  // reaches past the grid's +x edge (0.2 m)
   GroundState& e = edge.state.ground;
   DragWedge& we = edge.state.held[0].wedge;
   we = DragWedge{1.6e-5, {-1, 0}};

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "models/core/config/initial_height.h"
 #include "models/core/config/scene.h"
 #include "models/core/io/mesh_io.h"
 #include "models/ground/ground_params.h"
@@ -68,6 +69,20 @@ inline Scene bed_scene(int nx, int ny, double h, double height_m, std::vector<Ob
   s.time.step_s = dt_s;
   s.time.duration_s = steps * dt_s;
   return s;
+}
+
+// An upright bucket (8 cm: 16 cells of 5 mm) standing at (x_m, 0.1 m) with its
+// centre 8 cm up (its floor's underside at 5.5 cm) on a 40 x 40 grid with a
+// bed of bed_m, at its first pose: its map and the ground, nothing stepped.
+struct StandingBucket {
+  HeightSpanModel model;
+  HeightSpanState state;
+};
+inline StandingBucket standing_bucket(double x_m, double bed_m = 0.01) {
+  Scene s = bed_scene(40, 40, 0.005, bed_m, {mesh_object("bucket", bucket_mesh(), {key(0.0, x_m, 0.1, 0.08)})}, 1);
+  StandingBucket b{build_heightspan_model(s), {}};
+  b.state = make_heightspan_state(b.model, make_initial_height(s));
+  return b;
 }
 
 // No span's material lies inside the object: it is >= 0 and its level is at

@@ -64,6 +64,15 @@ Scene scoop(double depth_m, double drag_m, double tilt_deg, double speed_m_s, st
   return s;
 }
 
+// The largest difference between the ground and its mirror image across the
+// scoop's line (between rows 11 and 12 of 24).
+double mirror_error(const ArrayXXdR& h) {
+  EXPECT_EQ(h.rows(), 24);
+  double worst = 0.0;
+  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
+  return worst;
+}
+
 TEST(HeightSpanStep, RandomScoopsConserveMaterialEveryStep) {
   std::mt19937_64 rng(20261122);
   std::uniform_real_distribution<double> depth(0.0, 0.025), drag(0.0, 0.08), tilt(0.0, 95.0), speed(0.05, 0.6);
@@ -172,10 +181,7 @@ TEST(HeightSpanStep, AScoopWithAWedgeIsMirrorSymmetricAboutItsLine) {
   const Checked c = run_checked(with_wedge(with_intake_layer(scoop(0.015, 0.06, 80.0, 0.15, 2), 0.004), 1.0),
                                 "mirror, wedge");
   const ArrayXXdR& h = c.state.ground.height.heights();
-  ASSERT_EQ(h.rows(), 24);
-  double worst = 0.0;
-  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
-  EXPECT_LT(worst, 1e-12);
+  EXPECT_LT(mirror_error(h), 1e-12);
   EXPECT_GT(h.rightCols(40 - 30).maxCoeff(), 0.03 + 2e-3);  // a heap in front of the drag's end
 }
 
@@ -317,10 +323,7 @@ TEST(HeightSpanStep, ASideCutDigsAWiderTrenchMirrorSymmetricallyAndLaysTheCutAhe
   const Checked off = run_checked(base, "no side cut");
   const Checked on = run_checked(with_side_cut(base, 0.5), "side cut 1 cm");
   const ArrayXXdR& h = on.state.ground.height.heights();
-  ASSERT_EQ(h.rows(), 24);
-  double worst = 0.0;
-  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
-  EXPECT_LT(worst, 1e-12);
+  EXPECT_LT(mirror_error(h), 1e-12);
   EXPECT_EQ(wedge_m3(on.state), 0.0);  // laid when the lift began
   // beside the bucket's path (its 16 rows are 4 .. 19; the drag's columns 12 .. 24) the ground is lower
   auto beside_m3 = [](const HeightSpanState& st) {
@@ -335,10 +338,7 @@ TEST(HeightSpanStep, AScoopWithALipWedgeIsMirrorSymmetricAboutItsLineAndLaysItAh
   const Checked c = run_checked(with_lip_wedge(base, 1.0), "mirror, lip wedge");
   const Checked off = run_checked(with_wedge(base, 0.0), "mirror, no wedge");
   const ArrayXXdR& h = c.state.ground.height.heights();
-  ASSERT_EQ(h.rows(), 24);
-  double worst = 0.0;
-  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
-  EXPECT_LT(worst, 1e-12);
+  EXPECT_LT(mirror_error(h), 1e-12);
   EXPECT_EQ(wedge_m3(c.state), 0.0);  // laid when the lift began
   EXPECT_NE(h.matrix(), off.state.ground.height.heights().matrix());  // the option changed the scoop
 }
@@ -358,10 +358,7 @@ TEST(HeightSpanStep, AScoopAlongAnAxisIsMirrorSymmetricAboutIt) {
   section.options.particle_spread_m_s = 0.0;
   const Checked c = run_checked(with_heightspan(s, section), "mirror");
   const ArrayXXdR& h = c.state.ground.height.heights();
-  ASSERT_EQ(h.rows(), 24);
-  double worst = 0.0;
-  for (int j = 0; j < 12; ++j) worst = std::max(worst, (h.row(j) - h.row(23 - j)).abs().maxCoeff());
-  EXPECT_LT(worst, 1e-12);
+  EXPECT_LT(mirror_error(h), 1e-12);
   EXPECT_GT((h - 0.03).abs().maxCoeff(), 1e-3);  // it did dig
 }
 

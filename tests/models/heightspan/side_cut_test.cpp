@@ -5,28 +5,15 @@
 #include <gtest/gtest.h>
 
 #include "heightspan_fixtures.h"
-#include "models/core/config/initial_height.h"
 
 namespace repose {
 namespace {
 
-using testing::bed_scene;
-using testing::bucket_mesh;
-using testing::key;
-using testing::mesh_object;
+using testing::standing_bucket;
+using testing::StandingBucket;
 
-// An upright bucket (8 cm: 16 cells of 5 mm, over ground cells 12 .. 27 in x and y) standing
-// with its floor 5 mm deep in a 6 cm bed on a 40 x 40 grid, at its first pose.
-struct Standing {
-  HeightSpanModel model;
-  HeightSpanState state;
-};
-Standing sunk_bucket() {
-  Scene s = bed_scene(40, 40, 0.005, 0.06, {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.1, 0.1, 0.08)})}, 1);
-  Standing b{build_heightspan_model(s), {}};
-  b.state = make_heightspan_state(b.model, make_initial_height(s));
-  return b;
-}
+// The bucket of standing_bucket over ground cells 12 .. 27 in x and y, its floor 5 mm deep in a 6 cm bed.
+StandingBucket sunk_bucket() { return standing_bucket(0.1, 0.06); }
 
 // The lowest span bottom of the bucket's map: its flat floor's underside.
 double floor_bottom_m(const SpanMap& map) {
@@ -45,7 +32,7 @@ struct Cut {
 // Cuts with `motion_m` and checks that exactly `cells` changed, by their fractions, that
 // the wedge holds what they lost, and that the ledger still balances.
 void expect_cut(const Eigen::Vector3d& motion_m, const std::vector<Cut>& cells, std::array<int, 2> back) {
-  Standing b = sunk_bucket();
+  StandingBucket b = sunk_bucket();
   const SpanMap& map = b.state.held[0].map;
   const double level_m = floor_bottom_m(map), area_m2 = 0.005 * 0.005;
   ASSERT_LT(level_m, 0.06 - 0.004);
@@ -86,7 +73,7 @@ TEST(SideCut, FollowsTheDragsMainAxisAndDirection) {
 }
 
 TEST(SideCut, CutsNothingWhenPressingOrSwitchedOffOrAboveTheGround) {
-  Standing b = sunk_bucket();
+  StandingBucket b = sunk_bucket();
   const SpanMap& map = b.state.held[0].map;
   DragWedge& wedge = b.state.held[0].wedge;
   GroundState& g = b.state.ground;
@@ -101,7 +88,7 @@ TEST(SideCut, CutsNothingWhenPressingOrSwitchedOffOrAboveTheGround) {
 
 TEST(SideCut, StopsAtTheGridsEdge) {
   // 10 cm: 20 cells beside each wall, of which 12 lie on the grid on each side
-  Standing b = sunk_bucket();
+  StandingBucket b = sunk_bucket();
   const double cut_m3 = cut_beside(b.model.ground, b.state.held[0].map, 0.1, {0.001, 0.0, 0.0},
                                    &b.state.held[0].wedge, &b.state.ground);
   EXPECT_NEAR(cut_m3, 24 * (0.06 - floor_bottom_m(b.state.held[0].map)) * 0.005 * 0.005, 1e-18);
