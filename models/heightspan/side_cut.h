@@ -23,14 +23,13 @@
 // dragging. A cell partly within w is cut by the fraction within. Erosion
 // then settles the trench wall the cut leaves.
 //
-// Fitted with the compression wedge to the deep and middle scoops on each bed
-// (experiments/heightspan_scoop_fit_two_depths_side_cut*.yaml, three starts),
-// the cut is 2.2-4.1 mm, and the lowest cost of the two-depth fits
-// (1.697e-5) keeps 2.9 mm; cross-validated between those two depths the
-// cut predicts the left-out depth's masses and ground better than none
-// (experiments/heightspan_scoop_side_cut_cv_*.yaml). On the held-out shallow
-// scoop every start keeps the masses within 6 %; the dumped heap's flank is
-// 17.5 deg at the lowest cost, 0.2 deg above the seeds' range.
+// Fitted with the compression wedge to the deep and middle scoops on each of
+// their first three LIGGGHTS beds (experiments/heightspan_scoop_fit_two_depths_
+// side_cut*.yaml, four starts) the cut is 2.1-4.1 mm, the lowest cost keeps
+// 2.9 mm, and cross-validated between those two depths the cut predicts the
+// left-out depth better than none (experiments/heightspan_scoop_side_cut_cv_*.yaml).
+// On all seven beds per depth the fit keeps 0.6 mm at the cost without it
+// (..._side_cut_seven_beds_nested.yaml): seven beds do not select the cut.
 
 #include "models/heightspan/drag_wedge.h"
 
