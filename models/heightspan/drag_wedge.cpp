@@ -1,5 +1,6 @@
 #include "models/heightspan/drag_wedge.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -8,6 +9,7 @@
 #include "models/ground/ground_model.h"
 #include "models/ground/ground_state.h"
 #include "models/heightspan/ground_contact.h"
+#include "models/heightspan/span_lanes.h"
 
 namespace repose {
 
@@ -23,22 +25,13 @@ namespace {
 std::vector<std::array<int, 2>> cells_ahead(const SpanMap& map, const Grid& ground, std::array<int, 2> back,
                                             int* off_grid) {
   const CellOffset off = ground_offset(map.grid, ground);
-  const bool along_x = back[0] != 0;
-  const int lanes = along_x ? map.grid.ny : map.grid.nx, length = along_x ? map.grid.nx : map.grid.ny;
-  const int ahead = along_x ? -back[0] : -back[1];  // +1 or -1 along the axis
   std::vector<std::array<int, 2>> cells;
-  for (int l = 0; l < lanes; ++l) {
-    for (int s = 0; s < length; ++s) {
-      const int a = ahead > 0 ? length - 1 - s : s;  // from the front end backwards
-      const int i = along_x ? a : l, j = along_x ? l : a;
-      if (map.count(map.cell(i, j)) == 0) continue;
-      const int gi = i + off.di + (along_x ? ahead : 0), gj = j + off.dj + (along_x ? 0 : ahead);
-      if (ground.contains(gi, gj)) {
-        cells.push_back({gi, gj});
-      } else {
-        ++*off_grid;
-      }
-      break;
+  for (const LaneFront& f : lane_fronts(map, back)) {
+    const int gi = f.i + off.di - back[0], gj = f.j + off.dj - back[1];
+    if (ground.contains(gi, gj)) {
+      cells.push_back({gi, gj});
+    } else {
+      ++*off_grid;
     }
   }
   return cells;
@@ -60,6 +53,22 @@ void keep_pushed_ahead(double volume_m3, std::array<int, 2> back, DragWedge* wed
   REPOSE_DEMAND(back[0] != 0 || back[1] != 0);  // pushed ahead only while moving sideways
   wedge->volume_m3 += volume_m3;
   wedge->back = back;
+}
+
+double feed_over_lip(const Grid& ground, double kept_m3, double fraction, DragWedge* wedge, SpanMap* map) {
+  if (!(fraction > 0.0) || !(kept_m3 > 0.0)) return 0.0;
+  REPOSE_DEMAND(wedge->back[0] != 0 || wedge->back[1] != 0);  // kept only while dragging
+  const std::vector<LaneFront> fronts = lane_fronts(*map, wedge->back);
+  if (fronts.empty()) return 0.0;
+  const double fed_m3 = std::min(fraction * kept_m3, wedge->volume_m3);
+  const double share_m = fed_m3 / static_cast<double>(fronts.size()) / ground.cell_area_m2();
+  for (const LaneFront& f : fronts) {
+    const std::int64_t c = map->cell(f.i, f.j);
+    map->begin(c)[0].material_m += share_m;
+    push_overflow_up(map, c);
+  }
+  wedge->volume_m3 -= fed_m3;
+  return fed_m3;
 }
 
 double lay_wedge(const GroundModel& model, const SpanMap& map, const Eigen::Vector3d& motion_m, DragWedge* wedge,

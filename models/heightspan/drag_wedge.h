@@ -58,6 +58,17 @@
 // contact instead, so the drag then meets it again. Fitted with the wedge
 // to two depths it is 0.25, and neither held-out target is met
 // (experiments/heightspan_scoop_fit_two_depths_press.yaml).
+//
+// Over the lip (heightspan.over_lip_fraction, default 0): the DEM's bucket
+// fills at a rate that falls with the cut's depth more slowly than the
+// model's (from the deep to the shallow scoop, 58 -> 40 g per 0.4 s of drag
+// against the two-depth fit's 50 -> 27 g): grains that the lip's face drives
+// ahead climb the wedge and roll over the lip into the mouth, whatever the
+// depth. With over_lip_fraction g > 0, that fraction of what the drag's
+// compression keeps in the wedge each substep (keep_in_wedge) goes into the
+// object instead, in equal shares onto the lowest span of every lane's
+// frontmost cell (span_lanes.h: where the lip meets new ground); span
+// erosion carries it in from there, as it does the take-up.
 
 #include <array>
 
@@ -85,6 +96,11 @@ bool drags(const GroundModel& model, const Eigen::Vector3d& motion_m);
 // drag's direction. Returns the volume kept.
 double keep_in_wedge(const GroundModel& model, double compressed_m3, double fraction, const Eigen::Vector3d& motion_m,
                      DragWedge* wedge, GroundState* state);
+
+// Over the lip (above): moves `fraction` of `kept_m3`, what keep_in_wedge
+// kept this substep, from the wedge onto the map's lane fronts. Returns the
+// volume moved.
+double feed_over_lip(const Grid& ground, double kept_m3, double fraction, DragWedge* wedge, SpanMap* map);
 
 // wedge_source lip: keeps `volume_m3` that the object's lip pushed ahead
 // while moving against the cell step `back` (not {0, 0}) in the wedge.

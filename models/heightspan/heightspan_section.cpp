@@ -48,6 +48,13 @@ void validate(const HeightSpanSpec& s) {
   if (!(s.side_cut_m >= 0.0 && s.side_cut_m <= 0.1)) {
     throw FieldError("side_cut_m", "a width in [0, 0.1] m (0: none)", yaml_number(s.side_cut_m));
   }
+  if (!(s.over_lip_fraction >= 0.0 && s.over_lip_fraction <= 1.0)) {
+    throw FieldError("over_lip_fraction", "a fraction in [0, 1] (0: none)", yaml_number(s.over_lip_fraction));
+  }
+  if (s.over_lip_fraction > 0.0 && !(s.wedge_fraction > 0.0)) {
+    throw FieldError("over_lip_fraction", "a share of the wedge kept by wedge_fraction, which is 0: set "
+                     "wedge_fraction above 0 or this to 0", yaml_number(s.over_lip_fraction));
+  }
   if (s.lip_wedge_fraction > 0.0 && s.wedge_source != HeightSpanSpec::WedgeSource::kSplit) {
     throw FieldError("lip_wedge_fraction", "read only with wedge_source: split (the other sources take "
                      "wedge_fraction); 0 or set wedge_source: split", yaml_number(s.lip_wedge_fraction));

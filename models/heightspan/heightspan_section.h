@@ -34,6 +34,9 @@
 //                                   # its outermost lanes is cut down to its side walls' lower edge where its
 //                                   # lip meets new ground, into its wedge (side_cut.h); 0: none. Fitted as
 //                                   # heightspan.side_cut_m
+//     over_lip_fraction: 0          # the fraction of what a held object's drag keeps in its wedge from the
+//                                   # compression that rolls over its lip into it instead (drag_wedge.h);
+//                                   # 0: none. Needs wedge_fraction > 0. Fitted as heightspan.over_lip_fraction
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
 //     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}
@@ -63,6 +66,7 @@ struct HeightSpanSpec {
   double lip_wedge_fraction = 0.0;     // [0, 1]; above 0 only with kSplit (drag_wedge.h)
   double press_fraction = 0.0;         // [0, 1]; 0: the pressing's compression as the ground model's (drag_wedge.h)
   double side_cut_m = 0.0;             // [0, 0.1] m; 0: none (side_cut.h)
+  double over_lip_fraction = 0.0;      // [0, 1]; 0: none (drag_wedge.h)
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
   enum class SpanMaps { kCpu, kOsmesa };
   SpanMaps span_maps = SpanMaps::kCpu;
@@ -88,6 +92,7 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
   v.number("lip_wedge_fraction", s.lip_wedge_fraction, Range::any());
   v.number("press_fraction", s.press_fraction, Range::any());
   v.number("side_cut_m", s.side_cut_m, Range::any());
+  v.number("over_lip_fraction", s.over_lip_fraction, Range::any());
   v.number("frame_interval_s", s.frame_interval_s, Range::any());
   using M = HeightSpanSpec::SpanMaps;
   v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});

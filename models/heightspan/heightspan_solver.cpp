@@ -90,6 +90,7 @@ void add_measures(const HeightSpanModel& model, const HeightSpanRun& r, Run* run
   run->set("flows.wedge_kept_m3", r.wedge_kept_m3, "m^3");
   run->set("flows.wedge_laid_m3", r.wedge_laid_m3, "m^3");
   run->set("flows.side_cut_m3", r.side_cut_m3, "m^3");
+  run->set("flows.over_lip_m3", r.over_lip_m3, "m^3");
   run->set("volume.wedge_final_m3", r.wedge_final_m3, "m^3");
   run->set("flows.span_to_ground_m3", r.span_to_ground_m3, "m^3");
   run->set("flows.ground_to_span_m3", r.ground_to_span_m3, "m^3");
@@ -120,7 +121,7 @@ void write_held_csv(const HeightSpanModel& model, const HeightSpanRun& r, const 
 
 class CompiledHeightSpan final : public CompiledSolver {
  public:
-  static constexpr std::ptrdiff_t kOwnParameters = 5;
+  static constexpr std::ptrdiff_t kOwnParameters = 6;
 
   explicit CompiledHeightSpan(const Scene& scene)
       : model_(build_heightspan_model(scene)), initial_(make_initial_height(scene)), parameters_(model_.ground) {
@@ -141,6 +142,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     infos_.push_back({"side_cut_m", "m", 1.0, 0.0, 0.1, model_.options.side_cut_m,
                       "the width beside a dragged held object's sides cut into its wedge where its lip meets new "
                       "ground (heightspan.side_cut_m; side_cut.h)"});
+    infos_.push_back({"over_lip_fraction", "1", 1.0, 0.0, 1.0, model_.options.over_lip_fraction,
+                      "the fraction of what a held object's drag keeps in its wedge from the compression that "
+                      "rolls over its lip into it instead (heightspan.over_lip_fraction; drag_wedge.h)"});
   }
 
   const std::vector<ParameterInfo>& parameters() const override { return infos_; }
@@ -151,11 +155,12 @@ class CompiledHeightSpan final : public CompiledSolver {
     const std::vector<double> material(values_si.begin(), values_si.end() - kOwnParameters);
     const GroundParams params = parameters_.params_for(model_.ground, material);
     HeightSpanModel model = model_;
-    model.options.intake_layer_m = values_si.end()[-5];
-    model.options.wedge_fraction = values_si.end()[-4];
-    model.options.lip_wedge_fraction = values_si.end()[-3];
-    model.options.press_fraction = values_si.end()[-2];
-    model.options.side_cut_m = values_si.back();
+    model.options.intake_layer_m = values_si.end()[-6];
+    model.options.wedge_fraction = values_si.end()[-5];
+    model.options.lip_wedge_fraction = values_si.end()[-4];
+    model.options.press_fraction = values_si.end()[-3];
+    model.options.side_cut_m = values_si.end()[-2];
+    model.options.over_lip_fraction = values_si.back();
     validate(model.options);
     Run run;
     run.solver = "heightspan";
@@ -220,7 +225,7 @@ class CompiledHeightSpan final : public CompiledSolver {
   HeightField initial_;
   MaterialParameters parameters_;
   // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, wedge_fraction,
-  // lip_wedge_fraction, press_fraction, side_cut_m
+  // lip_wedge_fraction, press_fraction, side_cut_m, over_lip_fraction
   std::vector<ParameterInfo> infos_;
 };
 

@@ -100,9 +100,13 @@ void substep(const HeightSpanModel& model, const GroundParams& params, const std
                                  .contact_cells;
     if (k < model.held.size()) {
       const double compressed_m3 = state->ground.ledger.compressed_m3 - compressed_before_m3;
-      report->wedge_kept_m3 += keep_in_wedge(ground, compressed_m3, compression_wedge_fraction(model.options),
-                                             motions[k], &state->held[k].wedge, &state->ground);
-      report->wedge_laid_m3 += lay_wedge(ground, state->held[k].map, motions[k], &state->held[k].wedge, &state->ground);
+      ObjectSpans& spans = state->held[k];
+      const double kept_m3 = keep_in_wedge(ground, compressed_m3, compression_wedge_fraction(model.options), motions[k],
+                                           &spans.wedge, &state->ground);
+      report->wedge_kept_m3 += kept_m3;
+      report->over_lip_m3 +=
+          feed_over_lip(ground.grid, kept_m3, model.options.over_lip_fraction, &spans.wedge, &spans.map);
+      report->wedge_laid_m3 += lay_wedge(ground, spans.map, motions[k], &spans.wedge, &state->ground);
     }
   }
   accumulate(erode(ground, params, ceiling, &state->ground), &report->ground_erosion);

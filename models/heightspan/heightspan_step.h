@@ -15,7 +15,9 @@
 //   3. compression and displacement of what they intersect, object by
 //      object, by the ground model (models/ground/displacement.h; objects
 //      whose footprints touch are not merged into one region as the ground
-//      model's step merges them: a departure);
+//      model's step merges them: a departure); what a drag compresses goes
+//      partly into the object's wedge and from there partly over its lip
+//      into it (drag_wedge.h);
 //   4. ground erosion (models/ground/erosion.h), capped by all undersides;
 //   5. erosion on the spans (span_erosion.h);
 //   6. the particles in the air fall and land (particles.h).
@@ -37,6 +39,7 @@ struct HeightSpanStepReport {
   double taken_up_m3 = 0.0;  // ground scooped onto spans
   double wedge_kept_m3 = 0.0, wedge_laid_m3 = 0.0;  // into and out of the objects' wedges (drag_wedge.h)
   double side_cut_m3 = 0.0;  // cut beside dragged objects, into their wedges (part of wedge_kept_m3; side_cut.h)
+  double over_lip_m3 = 0.0;  // out of the wedges over the objects' lips into them (drag_wedge.h: feed_over_lip)
   int resampled = 0;         // object-substeps that turned (maps peeled again)
   ErosionResult ground_erosion;
   SpanErosionResult span_erosion;

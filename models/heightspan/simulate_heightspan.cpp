@@ -25,6 +25,7 @@ void record(const HeightSpanStepReport& r, HeightSpanRun* run) {
   run->wedge_kept_m3 += r.wedge_kept_m3;
   run->wedge_laid_m3 += r.wedge_laid_m3;
   run->side_cut_m3 += r.side_cut_m3;
+  run->over_lip_m3 += r.over_lip_m3;
   run->span_to_ground_m3 += r.span_erosion.to_ground_m3;
   run->ground_to_span_m3 += r.span_erosion.from_ground_m3;
   run->span_to_particles_m3 += r.span_erosion.to_particles_m3;

@@ -35,6 +35,7 @@ struct HeightSpanRun {
   double taken_up_m3 = 0.0;
   double wedge_kept_m3 = 0.0, wedge_laid_m3 = 0.0, wedge_final_m3 = 0.0;
   double side_cut_m3 = 0.0;  // part of wedge_kept_m3 (side_cut.h)
+  double over_lip_m3 = 0.0;  // out of the wedges into the objects over their lips (drag_wedge.h)
   double span_to_ground_m3 = 0.0, ground_to_span_m3 = 0.0, span_to_particles_m3 = 0.0;
   long long particles_released = 0, particles_on_spans = 0, particles_on_ground = 0, particles_left_grid = 0;
   bool particles_built = false;

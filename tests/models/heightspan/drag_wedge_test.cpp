@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "heightspan_fixtures.h"
+#include "models/heightspan/ground_contact.h"
 
 namespace repose {
 namespace {
@@ -81,6 +82,33 @@ TEST(DragWedge, WhatFindsNoCellAheadOnTheGridLeavesIt) {
   EXPECT_EQ(lay_wedge(edge.model.ground, edge.state.held[0].map, Eigen::Vector3d::Zero(), &we, &e), 0.0);
   EXPECT_DOUBLE_EQ(e.ledger.left_grid_m3, 1.6e-5);
   EXPECT_NEAR(accounted_m3(edge.state), before, 1e-18);
+}
+
+TEST(DragWedge, SendsItsShareOfWhatADragKeptOverTheLipInEqualSharesOntoEveryLanesFront) {
+  StandingBucket b = standing_bucket(0.1);  // spans over ground cells 12 .. 27 in x and y
+  SpanMap& map = b.state.held[0].map;
+  DragWedge& w = b.state.held[0].wedge;
+  w = DragWedge{2e-5, {-1, 0}};  // 1.6e-5 of it kept this substep, driven towards +x
+  const double before = accounted_m3(b.state), on_spans = map.material_m3();
+  EXPECT_DOUBLE_EQ(feed_over_lip(b.model.ground.grid, 1.6e-5, 0.25, &w, &map), 4e-6);
+  EXPECT_DOUBLE_EQ(w.volume_m3, 1.6e-5);
+  EXPECT_NEAR(map.material_m3() - on_spans, 4e-6, 1e-18);
+  EXPECT_NEAR(accounted_m3(b.state), before, 1e-18);
+  // 2.5e-7 m^3 onto the lowest span of each of the 16 lanes' front cell (ground column 27)
+  const CellOffset off = ground_offset(map.grid, b.model.ground.grid);
+  const double share_m = 2.5e-7 / (0.005 * 0.005);
+  for (int j = 0; j < map.grid.ny; ++j) {
+    for (int i = 0; i < map.grid.nx; ++i) {
+      const std::int64_t c = map.cell(i, j);
+      if (map.count(c) == 0) continue;
+      const bool front = i + off.di == 27;
+      EXPECT_NEAR(map.begin(c)[0].material_m, front ? share_m : 0.0, 1e-15) << i << ", " << j;
+    }
+  }
+  // nothing with the option off or nothing kept
+  EXPECT_EQ(feed_over_lip(b.model.ground.grid, 1.6e-5, 0.0, &w, &map), 0.0);
+  EXPECT_EQ(feed_over_lip(b.model.ground.grid, 0.0, 0.5, &w, &map), 0.0);
+  EXPECT_DOUBLE_EQ(w.volume_m3, 1.6e-5);
 }
 
 }  // namespace

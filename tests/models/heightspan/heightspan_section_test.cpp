@@ -106,6 +106,21 @@ TEST(HeightSpanSection, RefusesASideCutOutsideItsRange) {
   EXPECT_EQ(HeightSpanSpec{}.side_cut_m, 0.0);  // the default: no cut beside the object
 }
 
+TEST(HeightSpanSection, RefusesAnOverLipShareOutsideItsRangeOrWithoutAWedge) {
+  for (const double fraction : {-0.1, 1.1, std::nan("")}) {
+    HeightSpanSpec spec;
+    spec.wedge_fraction = 1.0;
+    spec.over_lip_fraction = fraction;
+    EXPECT_EQ(testing::refused_field(spec), "over_lip_fraction") << fraction;
+  }
+  HeightSpanSpec no_wedge;  // a share of nothing: the user meant something else
+  no_wedge.over_lip_fraction = 0.2;
+  EXPECT_EQ(testing::refused_field(no_wedge), "over_lip_fraction");
+  no_wedge.wedge_fraction = 0.5;
+  EXPECT_NO_THROW(validate(no_wedge));
+  EXPECT_EQ(HeightSpanSpec{}.over_lip_fraction, 0.0);  // the default: none
+}
+
 TEST(HeightSpanSection, ReadsTheWedgeSourceAndRefusesOtherWords) {
   std::string text = kScene;
   const std::string from = "near_ground_cells: 2";

@@ -29,12 +29,12 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const Scene s = small_scoop();
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
-  // the ground's, then its own intake layer, wedge fractions, press fraction and side cut
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 5);
+  // the ground's, then its own intake layer, wedge fractions, press fraction, side cut and over-lip share
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 6);
   const std::vector<std::pair<std::string, double>> own = {
       {"intake_layer_m", HeightSpanSpec{}.intake_layer_m}, {"wedge_fraction", HeightSpanSpec{}.wedge_fraction},
       {"lip_wedge_fraction", HeightSpanSpec{}.lip_wedge_fraction}, {"press_fraction", HeightSpanSpec{}.press_fraction},
-      {"side_cut_m", HeightSpanSpec{}.side_cut_m}};
+      {"side_cut_m", HeightSpanSpec{}.side_cut_m}, {"over_lip_fraction", HeightSpanSpec{}.over_lip_fraction}};
   for (std::size_t k = 0; k < own.size(); ++k) {
     const ParameterInfo& p = compiled->parameters()[ground->parameters().size() + k];
     EXPECT_EQ(p.name, own[k].first);
@@ -120,6 +120,23 @@ TEST(HeightSpanSolver, AFittedSideCutReachesTheRun) {
   EXPECT_GE(cut.measure("flows.wedge_kept_m3").value, cut.measure("flows.side_cut_m3").value);
   EXPECT_LT(cut.measure("ledger.max_relative_imbalance").value, 1e-12);
   values[compiled->parameter_index("side_cut_m")] = -0.001;
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, AFittedOverLipShareReachesTheRun) {
+  // a drag with a wedge sends that share of it into the bucket and reports it
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  std::vector<double> values = compiled->default_values();
+  values[compiled->parameter_index("sand.alpha")] = 0.3;
+  values[compiled->parameter_index("wedge_fraction")] = 1.0;
+  EXPECT_EQ(compiled->run(values, {}).measure("flows.over_lip_m3").value, 0.0);
+  values[compiled->parameter_index("over_lip_fraction")] = 0.4;
+  const repose::Run fed = compiled->run(values, {});
+  EXPECT_GT(fed.measure("flows.over_lip_m3").value, 0.0);
+  EXPECT_NEAR(fed.measure("flows.over_lip_m3").value, 0.4 * fed.measure("flows.wedge_kept_m3").value,
+              1e-9 * fed.measure("flows.wedge_kept_m3").value);
+  EXPECT_LT(fed.measure("ledger.max_relative_imbalance").value, 1e-12);
+  values[compiled->parameter_index("wedge_fraction")] = 0.0;  // a share of no wedge
   EXPECT_THROW(compiled->run(values, {}), InputError);
 }
 

@@ -84,10 +84,15 @@ TEST(HeightSpanStep, RandomScoopsConserveMaterialEveryStep) {
   }
 }
 
-Scene with_intake_layer(Scene s, double layer_m) {
+// The scene with its height-span options changed by `set`.
+Scene with_options(Scene s, const std::function<void(HeightSpanSpec&)>& set) {
   HeightSpanSection section = heightspan_section(s);
-  section.options.intake_layer_m = layer_m;
+  set(section.options);
   return with_heightspan(std::move(s), section);
+}
+
+Scene with_intake_layer(Scene s, double layer_m) {
+  return with_options(std::move(s), [&](HeightSpanSpec& o) { o.intake_layer_m = layer_m; });
 }
 
 TEST(HeightSpanStep, RandomScoopsWithAnIntakeLayerConserveMaterialEveryStep) {
@@ -123,11 +128,10 @@ TEST(HeightSpanStep, AThinnerIntakeLayerHoldsLessAndLeavesMoreAheadOfTheBucket) 
 Scene with_wedge(Scene s, double fraction) {
   Material m = ground_model_section(s).material("sand");
   m.alpha = 0.3;
-  s = with_material(std::move(s), m);
-  HeightSpanSection section = heightspan_section(s);
-  section.options.wedge_fraction = fraction;
-  section.options.particle_spread_m_s = 0.0;  // no random spread: mirror images stay mirror images
-  return with_heightspan(std::move(s), section);
+  return with_options(with_material(std::move(s), m), [&](HeightSpanSpec& o) {
+    o.wedge_fraction = fraction;
+    o.particle_spread_m_s = 0.0;  // no random spread: mirror images stay mirror images
+  });
 }
 
 // Eight random scoops, each with a wedge of random fraction made by
@@ -164,6 +168,30 @@ TEST(HeightSpanStep, TheWedgeKeepsWhatTheDragCompressedInFrontOfTheBucketWithout
   EXPECT_NEAR(wedge_m3(on.state), kept_m3, 1e-12 * kept_m3);
 }
 
+// heightspan.over_lip_fraction: that share of what the wedge keeps rolls over the lip into the bucket.
+Scene with_over_lip(Scene s, double fraction) {
+  return with_options(with_wedge(std::move(s), 1.0), [&](HeightSpanSpec& o) { o.over_lip_fraction = fraction; });
+}
+
+TEST(HeightSpanStep, RandomScoopsThatFeedTheWedgeOverTheLipConserveMaterialEveryStep) {
+  random_scoops_conserve(20261131, with_over_lip, "over lip");
+}
+
+TEST(HeightSpanStep, WhatRollsOverTheLipFillsTheBucketFromTheWedgeMirrorSymmetrically) {
+  Scene base = with_intake_layer(scoop(0.015, 0.08, 80.0, 0.15, 1), 0.004);
+  base.time.duration_s = 21.0 / 30.0;  // up to the drag's end: the wedge still carried
+  const Checked none = run_checked(with_over_lip(base, 0.0), "over lip 0");
+  const Checked some = run_checked(with_over_lip(base, 0.25), "over lip 0.25");
+  const Checked more = run_checked(with_over_lip(base, 0.5), "over lip 0.5");
+  EXPECT_GT(held_m3(some.state), held_m3(none.state) + 1e-7);
+  EXPECT_GT(held_m3(more.state), held_m3(some.state) + 1e-7);
+  EXPECT_LT(wedge_m3(more.state), wedge_m3(some.state));
+  EXPECT_LT(wedge_m3(some.state), wedge_m3(none.state));
+  Scene mirror = with_intake_layer(scoop(0.015, 0.06, 80.0, 0.15, 2), 0.004);
+  EXPECT_LT(mirror_error(run_checked(with_over_lip(mirror, 0.5), "mirror, over lip").state.ground.height.heights()),
+            1e-12);
+}
+
 TEST(HeightSpanStep, TheWedgeIsLaidAheadOfTheLipWhenTheDragEnds) {
   const Scene base = with_intake_layer(scoop(0.015, 0.08, 80.0, 0.15, 1), 0.004);
   const Checked off = run_checked(with_wedge(base, 0.0), "no wedge");
@@ -187,10 +215,8 @@ TEST(HeightSpanStep, AScoopWithAWedgeIsMirrorSymmetricAboutItsLine) {
 
 // With the wedge taken from what the lip pushes ahead (heightspan.wedge_source: lip).
 Scene with_lip_wedge(Scene s, double fraction) {
-  s = with_wedge(std::move(s), fraction);
-  HeightSpanSection section = heightspan_section(s);
-  section.options.wedge_source = HeightSpanSpec::WedgeSource::kLip;
-  return with_heightspan(std::move(s), section);
+  return with_options(with_wedge(std::move(s), fraction),
+                      [](HeightSpanSpec& o) { o.wedge_source = HeightSpanSpec::WedgeSource::kLip; });
 }
 
 TEST(HeightSpanStep, RandomScoopsWithALipWedgeConserveMaterialEveryStep) {
@@ -235,11 +261,10 @@ TEST(HeightSpanStep, TheWholeWedgeIsTheLipsPlusWhatTheDragWouldCompress) {
 
 // wedge_source split: the drag's compression kept by `compression`, the lip's push-ahead by `lip`.
 Scene with_split_wedge(Scene s, double compression, double lip) {
-  s = with_wedge(std::move(s), compression);
-  HeightSpanSection section = heightspan_section(s);
-  section.options.wedge_source = HeightSpanSpec::WedgeSource::kSplit;
-  section.options.lip_wedge_fraction = lip;
-  return with_heightspan(std::move(s), section);
+  return with_options(with_wedge(std::move(s), compression), [&](HeightSpanSpec& o) {
+    o.wedge_source = HeightSpanSpec::WedgeSource::kSplit;
+    o.lip_wedge_fraction = lip;
+  });
 }
 
 TEST(HeightSpanStep, RandomScoopsWithASplitWedgeConserveMaterialEveryStep) {
@@ -275,10 +300,7 @@ TEST(HeightSpanStep, ASplitWedgeIsBothWithEqualFractionsAndEachSourceWithTheOthe
 
 // heightspan.press_fraction: that fraction of what the bucket's pressing would compress displaced instead.
 Scene with_press(Scene s, double fraction) {
-  s = with_wedge(std::move(s), 0.0);
-  HeightSpanSection section = heightspan_section(s);
-  section.options.press_fraction = fraction;
-  return with_heightspan(std::move(s), section);
+  return with_options(with_wedge(std::move(s), 0.0), [&](HeightSpanSpec& o) { o.press_fraction = fraction; });
 }
 
 TEST(HeightSpanStep, RandomScoopsThatDisplaceWhatTheyPressConserveMaterialEveryStep) {
@@ -306,9 +328,7 @@ TEST(HeightSpanStep, ABucketPressedIntoSandDisplacesItsPressFractionOfWhatItWoul
 
 // heightspan.side_cut_m: up to 4 cells beside the dragged bucket's walls cut into its wedge (side_cut.h).
 Scene with_side_cut(Scene s, double fraction) {
-  HeightSpanSection section = heightspan_section(s);
-  section.options.side_cut_m = fraction * 0.02;
-  return with_heightspan(std::move(s), section);
+  return with_options(std::move(s), [&](HeightSpanSpec& o) { o.side_cut_m = fraction * 0.02; });
 }
 
 TEST(HeightSpanStep, RandomScoopsThatCutBesideTheBucketConserveMaterialEveryStep) {
