@@ -68,7 +68,12 @@
 // compression keeps in the wedge each substep (keep_in_wedge) goes into the
 // object instead, in equal shares onto the lowest span of every lane's
 // frontmost cell (span_lanes.h: where the lip meets new ground); span
-// erosion carries it in from there, as it does the take-up.
+// erosion carries it in from there, as it does the take-up. Fitted with
+// the rest to the deep and middle scoops on seven beds each (nested in the
+// fit without it), the share is small but determined, 0.030 +- 0.007, and
+// lowers the cost by 0.9 %; the held-out shallow scoop's masses move 0.6-0.7
+// points closer to the DEM's mean (experiments/heightspan_scoop_fit_two_depths_over_lip_nested.yaml).
+// Two other starts (0.1, 0.3) end in higher minima.
 
 #include <array>
 
