@@ -51,9 +51,11 @@ void validate(const HeightSpanSpec& s) {
   if (!(s.over_lip_fraction >= 0.0 && s.over_lip_fraction <= 1.0)) {
     throw FieldError("over_lip_fraction", "a fraction in [0, 1] (0: none)", yaml_number(s.over_lip_fraction));
   }
-  if (s.over_lip_fraction > 0.0 && !(s.wedge_fraction > 0.0)) {
-    throw FieldError("over_lip_fraction", "a share of the wedge kept by wedge_fraction, which is 0: set "
-                     "wedge_fraction above 0 or this to 0", yaml_number(s.over_lip_fraction));
+  if (s.over_lip_fraction > 0.0 &&
+      (!(s.wedge_fraction > 0.0) || s.wedge_source == HeightSpanSpec::WedgeSource::kLip)) {
+    throw FieldError("over_lip_fraction", "a share of what the wedge keeps of the drag's compression, which is "
+                     "nothing here (wedge_fraction 0 or wedge_source lip): set wedge_fraction above 0 with "
+                     "wedge_source compression, both or split, or this to 0", yaml_number(s.over_lip_fraction));
   }
   if (s.lip_wedge_fraction > 0.0 && s.wedge_source != HeightSpanSpec::WedgeSource::kSplit) {
     throw FieldError("lip_wedge_fraction", "read only with wedge_source: split (the other sources take "

@@ -36,7 +36,8 @@
 //                                   # heightspan.side_cut_m
 //     over_lip_fraction: 0          # the fraction of what a held object's drag keeps in its wedge from the
 //                                   # compression that rolls over its lip into it instead (drag_wedge.h);
-//                                   # 0: none. Needs wedge_fraction > 0. Fitted as heightspan.over_lip_fraction
+//                                   # 0: none. Needs wedge_fraction > 0 and a wedge_source other than lip.
+//                                   # Fitted as heightspan.over_lip_fraction
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
 //     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}

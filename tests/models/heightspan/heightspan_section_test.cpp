@@ -118,6 +118,8 @@ TEST(HeightSpanSection, RefusesAnOverLipShareOutsideItsRangeOrWithoutAWedge) {
   EXPECT_EQ(testing::refused_field(no_wedge), "over_lip_fraction");
   no_wedge.wedge_fraction = 0.5;
   EXPECT_NO_THROW(validate(no_wedge));
+  no_wedge.wedge_source = HeightSpanSpec::WedgeSource::kLip;  // that wedge keeps none of the compression
+  EXPECT_EQ(testing::refused_field(no_wedge), "over_lip_fraction");
   EXPECT_EQ(HeightSpanSpec{}.over_lip_fraction, 0.0);  // the default: none
 }
 
