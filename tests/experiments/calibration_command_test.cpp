@@ -63,6 +63,37 @@ TEST(CalibrationCommand, WritesTheRunFolder) {
   }
 }
 
+// Cross-validation's folds in the run folder: per fold its values and what
+// it predicts for the scenes it did not fit, series included
+// (tests/data/calibration/scoop_cv.yaml: two scoops fitted, one held out).
+TEST(CalibrationCommand, WritesWhatEachFoldPredictsWithItsSeries) {
+  const test_support::TempDir temp;
+  const fs::path out = temp.path / "out";
+  ASSERT_EQ(run("calibrate " + kDir + "/scoop_cv.yaml --out " + out.string()), 0);
+  const nlohmann::json folds = nlohmann::json::parse(read(out / "calibration.json"))["cross_validation"];
+  ASSERT_EQ(folds.size(), 2u);
+  for (const nlohmann::json& fold : folds) {
+    EXPECT_TRUE(fold["values"].contains("heightspan.sand.repose_angle_deg"));
+    EXPECT_GT(fold["iterations"].get<int>(), 0);
+    EXPECT_FALSE(fold["termination"].get<std::string>().empty());
+    ASSERT_EQ(fold["predicted"].size(), 2u) << "the left-out scoop and the held-out one";
+    EXPECT_EQ(fold["predicted"][0]["name"], fold["left_out"]);
+    EXPECT_EQ(fold["predicted"][0]["role"], "left_out");
+    EXPECT_EQ(fold["predicted"][1]["name"], "scoop_held");
+    EXPECT_EQ(fold["predicted"][1]["role"], "held_out");
+    for (const nlohmann::json& p : fold["predicted"]) {
+      ASSERT_EQ(p["series"].size(), 1u);
+      EXPECT_EQ(p["series"][0]["name"], "mass_held_kg.bucket");
+      EXPECT_EQ(p["series"][0]["fitted_relative_error"].size(), 3u);
+      EXPECT_TRUE(p["scores"].contains("rmse_m"));
+    }
+  }
+  const std::string report = read(out / "report.md");
+  EXPECT_NE(report.find("## Cross-validation: what each fold predicts"), std::string::npos);
+  const std::string iterations = std::to_string(folds[1]["iterations"].get<int>());
+  EXPECT_NE(report.find("| scoop_b | " + iterations + " | scoop_held | held out |"), std::string::npos) << report;
+}
+
 TEST(CalibrationCommand, MalformedFileWritesNothingAndExitsTwo) {
   const test_support::TempDir temp;
   const fs::path out = temp.path / "out";

@@ -45,10 +45,24 @@ struct SceneError {
   std::optional<NoiseFloor> noise;       // the reference's seed-to-seed noise (2 or more seeds)
   ChangeFeatures reference_features, fitted_features;
   // Fit scenes, when there are two or more: the fit on the other fit scenes
-  // (leave one scene out), scored here (cross_validation.h).
+  // (leave one scene out), scored here (cross_validation.h; the fold's
+  // values and its series are in CalibrationFit::folds).
   std::optional<ChangeScores> cross_validated;
-  std::vector<double> cross_validated_values;  // every parameter (SI) of that fit
-  std::vector<SeriesComparison> series;        // its series observables (series_comparison.h)
+  std::vector<SeriesComparison> series;  // its series observables (series_comparison.h)
+};
+
+// One leave-one-scene-out fold (cross_validation.h): the fit without one fit
+// scene, and every scene's errors at the fold's values. The left-out scene's
+// and the held-out scenes' are predictions: their series' `fitted` are what
+// the fold predicts (a scoop's held mass at each stage).
+// A fold whose fit stopped at its start (0 iterations) predicts with the
+// initial values: it says nothing about the fit.
+struct CrossValidationFold {
+  std::size_t left_out = 0;        // index into the calibration's scenes
+  std::vector<double> values;      // every parameter (SI) of the fold's fit
+  int iterations = 0;              // of the fold's best start
+  std::string termination;         // ... and why it stopped (Ceres)
+  std::vector<SceneError> scenes;  // in the calibration's order
 };
 
 struct CalibrationFit {
@@ -61,6 +75,7 @@ struct CalibrationFit {
   std::size_t residual_count = 0;
   CalibrationUncertainty uncertainty;  // over the free parameters
   std::vector<SceneError> scenes;      // in the calibration's order
+  std::vector<CrossValidationFold> folds;  // empty unless cross-validated (cross_validation.h)
   long long heuristic_runs = 0;
   double wall_time_s = 0.0;
 };

@@ -87,29 +87,40 @@ json folders_json(const ReferenceSpec& r) {
   return folders;
 }
 
-// The cross-validated parameter values per left-out scene, in the parameters' units.
-json cross_validation_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
-  json folds = json::array();
-  for (const SceneError& e : fit.scenes) {
-    if (!e.cross_validated) continue;
-    json values = json::object();
-    for (std::size_t p = 0; p < problem.spec().parameters.size(); ++p) {
-      const ParameterSpec& spec = problem.spec().parameters[p];
-      values[spec.label()] = spec.in_file_units(e.cross_validated_values[p]);
-    }
-    folds.push_back({{"left_out", e.name}, {"values", values}, {"scores", scores_json(*e.cross_validated)}});
-  }
-  return folds;
-}
-
 json series_json(const std::vector<SeriesComparison>& series) {
   json out = json::array();
   for (const SeriesComparison& c : series) {
     out.push_back({{"name", c.series}, {"unit", c.unit}, {"times_s", c.times_s}, {"seeds", c.seeds},
                    {"reference", c.reference}, {"initial", c.initial}, {"fitted", c.fitted},
-                   {"fitted_relative_error", c.fitted_relative_error()}});
+                   {"fitted_relative_error", c.fitted_relative_error()}, {"fitted_per_bed", c.fitted_per_bed},
+                   {"paired_standard_error", c.paired_standard_error()}});
   }
   return out;
+}
+
+// Per fold: the left-out scene, the fold's parameter values in their units,
+// its scores there, and what it predicts for every scene it did not fit (the
+// left-out one and the held-out ones): ground scores and series.
+json cross_validation_json(const CalibrationProblem& problem, const CalibrationFit& fit) {
+  json folds = json::array();
+  for (const CrossValidationFold& fold : fit.folds) {
+    json values = json::object();
+    for (std::size_t p = 0; p < problem.spec().parameters.size(); ++p) {
+      const ParameterSpec& spec = problem.spec().parameters[p];
+      values[spec.label()] = spec.in_file_units(fold.values[p]);
+    }
+    json predicted = json::array();
+    for (std::size_t k = 0; k < fold.scenes.size(); ++k) {
+      const SceneError& e = fold.scenes[k];
+      if (k != fold.left_out && e.fit) continue;
+      predicted.push_back({{"name", e.name}, {"role", k == fold.left_out ? "left_out" : "held_out"},
+                           {"scores", scores_json(e.scores_fitted)}, {"series", series_json(e.series)}});
+    }
+    folds.push_back({{"left_out", fold.scenes[fold.left_out].name}, {"values", values},
+                     {"iterations", fold.iterations}, {"termination", fold.termination},
+                     {"scores", scores_json(fold.scenes[fold.left_out].scores_fitted)}, {"predicted", predicted}});
+  }
+  return folds;
 }
 
 json scenes_json(const CalibrationProblem& problem, const CalibrationFit& fit) {

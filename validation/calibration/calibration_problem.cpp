@@ -369,17 +369,24 @@ HeightField CalibrationProblem::mean_final(const PreparedScene& scene, const std
   return fields.size() == 1 ? fields.front() : mean_field(fields);
 }
 
-std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScene& scene, const std::vector<Run>& runs) const {
+std::vector<std::vector<std::vector<double>>> CalibrationProblem::observed_per_bed(const PreparedScene& scene,
+                                                                                  const std::vector<Run>& runs) const {
   REPOSE_DEMAND(runs.size() == scene.bed_count());
-  std::vector<std::vector<double>> out;
+  std::vector<std::vector<std::vector<double>>> out;
   for (const ObservableSpec& o : scene.entry.observables) {
     std::vector<std::vector<double>> per_bed;
     for (std::size_t bed = 0; bed < runs.size(); ++bed) {
       const Run& run = runs[bed];
       per_bed.push_back(observe(o, scene.bed_initial(bed), run.field(scene.entry.field), run.series, measure_values(run)));
     }
-    out.push_back(mean_values(per_bed));
+    out.push_back(std::move(per_bed));
   }
+  return out;
+}
+
+std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScene& scene, const std::vector<Run>& runs) const {
+  std::vector<std::vector<double>> out;
+  for (const std::vector<std::vector<double>>& per_bed : observed_per_bed(scene, runs)) out.push_back(mean_values(per_bed));
   return out;
 }
 

@@ -111,6 +111,10 @@ class CalibrationProblem {
   // Each observable's values in the runs (as reference_values): the mean over
   // the beds of each bed's values, each bed's change taken from its own start.
   std::vector<std::vector<double>> observed(const PreparedScene& scene, const std::vector<Run>& runs) const;
+  // ... before the mean: per observable, per bed (seed order; the one mean
+  // bed without beds: each), that bed's values.
+  std::vector<std::vector<std::vector<double>>> observed_per_bed(const PreparedScene& scene,
+                                                                 const std::vector<Run>& runs) const;
   // weight * (observed - reference) / sqrt(count), observable after observable.
   std::vector<double> weighted_residuals(const PreparedScene& scene, const std::vector<std::vector<double>>& observed) const;
   std::vector<double> residuals(const PreparedScene& scene, const std::vector<Run>& runs) const;

@@ -56,11 +56,13 @@ void write_series_table(std::ostream& out, const CalibrationFit& fit) {
   for (const SceneError& e : fit.scenes) any = any || !e.series.empty();
   if (!any) return;
   out << "\n## Series and measures per scene (reference: the seeds' mean)\n\n"
-         "| scene | role | series | t (s) | seeds | reference | initial | fitted | fitted − reference | relative |\n"
-         "|---|---|---|---|---|---|---|---|---|---|\n";
+         "Paired SE (beds: each): the standard error of the relative error that the number of beds leaves, from each "
+         "bed's own error (the solver on a seed's bed against that seed).\n\n"
+         "| scene | role | series | t (s) | seeds | reference | initial | fitted | fitted − reference | relative | paired SE |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const SceneError& e : fit.scenes) {
     for (const SeriesComparison& c : e.series) {
-      const std::vector<double> error = c.fitted_relative_error();
+      const std::vector<double> error = c.fitted_relative_error(), paired = c.paired_standard_error();
       for (std::size_t k = 0; k < c.reference.size(); ++k) {
         std::string seeds;
         for (const auto& seed : c.seeds) seeds += (seeds.empty() ? "" : ", ") + fmt::format("{:.4g}", seed[k]);
@@ -68,10 +70,47 @@ void write_series_table(std::ostream& out, const CalibrationFit& fit) {
         const std::string name = c.unit.empty() ? c.series : fmt::format("{} ({})", c.series, c.unit);
         // a reference of zero (the bucket emptied) has no relative error: the difference says it
         const std::string relative = c.reference[k] != 0.0 ? fmt::format("{:+.1f} %", 100.0 * error[k]) : "–";
-        out << fmt::format("| {} | {} | {} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:+.3g} | {} |\n",
+        const std::string se = k < paired.size() && std::isfinite(paired[k]) ? fmt::format("{:.1f} %", 100.0 * paired[k]) : "–";
+        out << fmt::format("| {} | {} | {} | {} | {} | {:.4g} | {:.4g} | {:.4g} | {:+.3g} | {} | {} |\n",
                            e.name, role_name(e.fit), name, time, seeds, c.reference[k],
-                           c.initial[k], c.fitted[k], c.fitted[k] - c.reference[k], relative);
+                           c.initial[k], c.fitted[k], c.fitted[k] - c.reference[k], relative, se);
       }
+    }
+  }
+}
+
+// A series' relative errors at its times, "+1.9 / -2.0 %" ("–" where the
+// reference is 0: the bucket emptied).
+std::string relative_errors(const SeriesComparison& c) {
+  const std::vector<double> error = c.fitted_relative_error();
+  std::string text;
+  for (std::size_t k = 0; k < error.size(); ++k) {
+    text += (k == 0 ? "" : " / ") + (c.reference[k] != 0.0 ? fmt::format("{:+.1f}", 100.0 * error[k]) : "–");
+  }
+  return text + " %";
+}
+
+// What each leave-one-scene-out fold predicts for the scenes it did not fit:
+// the left-out scene and the held-out ones, their ground error and their
+// series' relative errors (cross_validation.h).
+void write_cross_validation_table(std::ostream& out, const CalibrationFit& fit) {
+  if (fit.folds.empty()) return;
+  out << "\n## Cross-validation: what each fold predicts\n\n"
+         "Each fold is the fit without one fit scene; it predicts that scene and the held-out ones. Series: the "
+         "relative error against the seeds' mean at each of the series' times. A fold of 0 iterations stopped at "
+         "its start: it predicts with the initial values, not with a refit.\n\n"
+         "| fit without | iterations | scene | role | RMSE of Δh (mm) | skill | series: relative error at each time |\n"
+         "|---|---|---|---|---|---|---|\n";
+  for (const CrossValidationFold& fold : fit.folds) {
+    for (std::size_t k = 0; k < fold.scenes.size(); ++k) {
+      const SceneError& e = fold.scenes[k];
+      if (k != fold.left_out && e.fit) continue;
+      std::string series;
+      for (const SeriesComparison& c : e.series) series += (series.empty() ? "" : "; ") + c.series + ": " + relative_errors(c);
+      out << fmt::format("| {} | {} | {} | {} | {} | {:.2f} | {} |\n", fold.scenes[fold.left_out].name,
+                         fold.iterations, e.name,
+                         k == fold.left_out ? "left out" : "held out", mm(e.scores_fitted.rmse_m),
+                         e.scores_fitted.skill, series.empty() ? "-" : series);
     }
   }
 }
@@ -87,6 +126,23 @@ void write_beds_notes(std::ostream& out, const CalibrationProblem& problem) {
 }
 
 std::string ratio(double a, double b) { return b > 0.0 ? fmt::format("{:.2f}", a / b) : "-"; }
+
+// The speed/accuracy ladder: each rung's time and error beside the yardstick's noise floor.
+void write_ladder_table(std::ostream& out, const Ladder& l) {
+  out << fmt::format("\n## Speed/accuracy ladder ({}; yardstick: {}; its noise floor {})\n\n"
+                     "| rung | wall time (s) | RMSE of Δh (mm) | RMSE / noise floor |\n|---|---|---|---|\n",
+                     l.scene, l.yardstick, l.noise_floor_m ? mm(*l.noise_floor_m) + " mm" : "unknown (one seed)");
+  for (const LadderRung& r : l.rungs) {
+    out << fmt::format("| {} | {:.4g}{} | {} | {} |\n", r.label, r.wall_time_s,
+                       r.cpu_time_s ? fmt::format(" (CPU {:.4g})", *r.cpu_time_s) : "", mm(r.rmse_m),
+                       l.noise_floor_m ? ratio(r.rmse_m, *l.noise_floor_m) : "-");
+  }
+  if (l.liggghts_over_ground_time) {
+    out << fmt::format("\nLIGGGHTS / ground model time at the scene's resolution: {:.3g} (wall), {:.3g} (CPU "
+                       "time); target >= 1e5 by CPU time (issue 10).\n",
+                       *l.liggghts_over_ground_time, l.liggghts_over_ground_cpu_time.value_or(0.0));
+  }
+}
 
 // The table a report leads with: per scene, the reference's noise floor, the
 // error of doing nothing, the fitted model's error, R² and skill, and for fit
@@ -243,22 +299,8 @@ void write_calibration_report(const CalibrationOutputs& o, const std::vector<std
   }
   write_beds_notes(out, problem);
   write_series_table(out, fit);
-  if (o.ladder) {
-    const Ladder& l = *o.ladder;
-    out << fmt::format("\n## Speed/accuracy ladder ({}; yardstick: {}; its noise floor {})\n\n"
-                       "| rung | wall time (s) | RMSE of Δh (mm) | RMSE / noise floor |\n|---|---|---|---|\n",
-                       l.scene, l.yardstick, l.noise_floor_m ? mm(*l.noise_floor_m) + " mm" : "unknown (one seed)");
-    for (const LadderRung& r : l.rungs) {
-      out << fmt::format("| {} | {:.4g}{} | {} | {} |\n", r.label, r.wall_time_s,
-                         r.cpu_time_s ? fmt::format(" (CPU {:.4g})", *r.cpu_time_s) : "", mm(r.rmse_m),
-                         l.noise_floor_m ? ratio(r.rmse_m, *l.noise_floor_m) : "-");
-    }
-    if (l.liggghts_over_ground_time) {
-      out << fmt::format("\nLIGGGHTS / ground model time at the scene's resolution: {:.3g} (wall), {:.3g} (CPU "
-                         "time); target >= 1e5 by CPU time (issue 10).\n",
-                         *l.liggghts_over_ground_time, l.liggghts_over_ground_cpu_time.value_or(0.0));
-    }
-  }
+  write_cross_validation_table(out, fit);
+  if (o.ladder) write_ladder_table(out, *o.ladder);
   out << "\n## Figures\n\n";
   for (const std::string& f : figures) out << fmt::format("![{}]({})\n\n", f, f);
   if (!figure_note.empty()) out << figure_note << "\n";

@@ -20,9 +20,9 @@ int cross_validate(const CalibrationProblem& problem, CalibrationFit* fit, const
            fmt::format("cross-validation: fit without {}", left_out.entry.name));
     const CalibrationProblem fold = problem.holding_out(left_out.entry.name);
     const CalibrationFit fold_fit = fit_calibration(fold, {});
-    SceneError& e = fit->scenes[k];
-    e.cross_validated_values = fold_fit.values;
-    e.cross_validated = fold_fit.scenes[k].scores_fitted;
+    fit->scenes[k].cross_validated = fold_fit.scenes[k].scores_fitted;
+    const CalibrationStart& best = fold_fit.starts[fold_fit.best_start];
+    fit->folds.push_back({k, fold_fit.values, best.iterations, best.termination, fold_fit.scenes});
     ++folds;
   }
   report(progress, 1.0, "cross-validation done");

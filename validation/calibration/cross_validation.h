@@ -13,9 +13,11 @@
 
 namespace repose {
 
-// Fills fit->scenes[k].cross_validated (and _values) for every fit scene k;
-// leaves them empty when the calibration has fewer than two fit scenes.
-// Returns the number of folds run.
+// Fills fit->scenes[k].cross_validated for every fit scene k and appends its
+// fold to fit->folds (the fold's values, and every scene's errors at them:
+// the left-out and held-out scenes' series as the fold predicts them); leaves
+// them empty when the calibration has fewer than two fit scenes. Returns the
+// number of folds run.
 int cross_validate(const CalibrationProblem& problem, CalibrationFit* fit, const ProgressFn& progress = {});
 
 }  // namespace repose

@@ -88,8 +88,8 @@ TEST(CalibrationLoader, ReadsTheScoopCalibrationsSeriesObservables) {
   EXPECT_EQ(held.kind, ObservableSpec::Kind::kSeries);
   EXPECT_EQ(held.series, "mass_held_kg.bucket");
   EXPECT_EQ(held.times_s, (std::vector<double>{0.5, 0.8, 1.0, 1.3, 1.6, 2.3}));  // during the drag, then the stages
-  EXPECT_EQ(spec.scenes[1].role, CalibrationScene::Role::kHeldOut);
-  EXPECT_EQ(spec.scenes[1].observables[0].times_s, (std::vector<double>{1.0, 1.3, 1.6, 2.3}));  // the stages
+  EXPECT_EQ(spec.scenes.back().role, CalibrationScene::Role::kHeldOut);
+  EXPECT_EQ(spec.scenes.back().observables[0].times_s, (std::vector<double>{1.0, 1.3, 1.6, 2.3}));  // the stages
   // the dumped heap's flank, measured as experiments/heightspan/dump_flank.py does, on both scoops
   for (const CalibrationScene& scene : spec.scenes) {
     const ObservableSpec& flank = scene.observables.back();

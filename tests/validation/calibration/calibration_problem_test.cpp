@@ -255,10 +255,21 @@ TEST(CalibrationProblem, EachBedRunsTheSolverOnEverySeedsOwnBed) {
   ASSERT_EQ(r.size(), 1u + 16u * 16u);
   for (const double v : r) EXPECT_NEAR(v, 0.0, 1e-9);
   EXPECT_LT((each.mean_final(s, runs).heights() - s.reference_final.heights()).abs().maxCoeff(), 1e-12);
+  // each bed's flank is its seed's, so the paired error has no spread, and
+  // the beds' values average to the compared one
+  const SceneError e = scene_error(each, s, each.initial_values(), each.initial_values());
+  ASSERT_EQ(e.series.size(), 1u);
+  const SeriesComparison& flank = e.series[0];
+  ASSERT_EQ(flank.fitted_per_bed.size(), 2u);
+  for (std::size_t bed = 0; bed < 2; ++bed) EXPECT_NEAR(flank.fitted_per_bed[bed][0], flank.seeds[bed][0], 1e-9) << bed;
+  EXPECT_DOUBLE_EQ(flank.fitted[0], 0.5 * (flank.fitted_per_bed[0][0] + flank.fitted_per_bed[1][0]));
+  ASSERT_EQ(flank.paired_standard_error().size(), 1u);
+  EXPECT_NEAR(flank.paired_standard_error()[0], 0.0, 1e-9);
 
   const CalibrationProblem mean = problem_with("mean");
   const PreparedScene& m = mean.scenes().front();
   ASSERT_EQ(m.bed_count(), 1u);
+  EXPECT_TRUE(scene_error(mean, m, mean.initial_values(), mean.initial_values()).series[0].fitted_per_bed.empty());
   EXPECT_GT(std::abs(mean.residuals(m, mean.runs(m, mean.initial_values()))[0]), 3.0 * 0.02);
 }
 
