@@ -30,7 +30,7 @@
 // rather than by sigma's trickle, and at the tilt set by theta: the slope
 // rule alone left a 45-degree wall of a bucket tipped by 135 deg holding
 // sand for 0.4 s, where the DEM empties it in 0.25 s
-// (experiments/heightspan_scoop_fit.yaml). Material thinner than 1e-12 cell
+// (experiments/heightspan_scoop_fit_deep_mean_bed.yaml). Material thinner than 1e-12 cell
 // is round-off and stays put.
 // A surface gives at most what it has (a span its material, the ground its
 // height) and takes at most its room (up to the bottom of the span above
