@@ -118,7 +118,8 @@ TEST(CrossValidation, EachFoldPredictsTheHeldMassOfTheScoopsItDidNotFitAtItsOwnV
     ASSERT_EQ(predicted.series.size(), 1u) << predicted.name;
     // the prediction is the run at the fold's values
     const PreparedScene& scene = problem.scenes()[k];
-    const TimeSeries& held = problem.run_on_bed(scene, without_b.values, 0).series.at("mass_held_kg.bucket");
+    const repose::Run run = problem.run_on_bed(scene, without_b.values, 0);
+    const TimeSeries& held = run.series.at("mass_held_kg.bucket");
     const SeriesComparison& c = predicted.series[0];
     for (std::size_t t = 0; t < c.times_s.size(); ++t) EXPECT_DOUBLE_EQ(c.fitted[t], held.at(c.times_s[t])) << k;
   }
