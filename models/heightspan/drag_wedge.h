@@ -73,7 +73,11 @@
 // fit without it), the share is small but determined, 0.030 +- 0.007, and
 // lowers the cost by 0.9 %; the held-out shallow scoop's masses move 0.6-0.7
 // points closer to the DEM's mean (experiments/heightspan_scoop_fit_two_depths_over_lip_nested.yaml).
-// Two other starts (0.1, 0.3) end in higher minima.
+// Two other starts (0.1, 0.3) end in higher minima. With an intake fraction
+// instead of the intake layer (ground_contact.h: Intake) the fit has the
+// band's compression (alpha near 0: all of it) kept and about two thirds of
+// it rolling over the lip, the depth-independent part of the fill
+// (experiments/heightspan_scoop_fit.yaml).
 
 #include <array>
 

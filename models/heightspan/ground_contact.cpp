@@ -95,7 +95,7 @@ bool cell_ahead(const SpanMap& map, const Grid& ground, CellOffset off, int i, i
 }  // namespace
 
 double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state, const Eigen::Vector3d& motion_m,
-                      double intake_layer_m, LipWedge lip) {
+                      Intake intake, LipWedge lip) {
   const Grid& g = model.grid;
   const CellOffset off = ground_offset(map->grid, g);
   const std::array<int, 2> back = back_step(motion_m);
@@ -116,9 +116,10 @@ double take_up_ground(const GroundModel& model, SpanMap* map, GroundState* state
       for (int k = 0; k < n; ++k) {
         const double gap_top = k + 1 < n ? s[k + 1].bottom_m : std::numeric_limits<double>::infinity();
         double scooped = piece(s[k].top_m, gap_top);
-        if (k == 0 && scooped > intake_layer_m && cell_ahead(*map, g, off, i, j, back, &ai, &aj)) {
-          ahead = scooped - intake_layer_m;
-          scooped = intake_layer_m;
+        const double admitted = std::min(intake.fraction * scooped, intake.layer_m);
+        if (k == 0 && admitted < scooped && cell_ahead(*map, g, off, i, j, back, &ai, &aj)) {
+          ahead = scooped - admitted;
+          scooped = admitted;
         }
         if (scooped > 0.0) push_back_into(map, i, j, k, std::min(h, gap_top), scooped, back);
         if (k + 1 < n) s[k + 1].material_m += piece(s[k + 1].bottom_m, s[k + 1].top_m);  // out of the solid

@@ -36,6 +36,9 @@ void validate(const HeightSpanSpec& s) {
   if (!(s.intake_layer_m > 0.0 && s.intake_layer_m <= 1e6)) {
     throw FieldError("intake_layer_m", "a height in (0, 1e6] m (1e6: no limit)", yaml_number(s.intake_layer_m));
   }
+  if (!(s.intake_fraction > 0.0 && s.intake_fraction <= 1.0)) {
+    throw FieldError("intake_fraction", "a fraction in (0, 1] (1: all)", yaml_number(s.intake_fraction));
+  }
   if (!(s.wedge_fraction >= 0.0 && s.wedge_fraction <= 1.0)) {
     throw FieldError("wedge_fraction", "a fraction in [0, 1] (0: none)", yaml_number(s.wedge_fraction));
   }

@@ -15,6 +15,10 @@
 //                                   # cell it advances into while the object moves sideways; the ground above
 //                                   # it is pushed ahead of the object (the wedge ahead of a bucket's lip);
 //                                   # 1e6: no limit (every bit met goes in). Fitted as heightspan.intake_layer_m
+//     intake_fraction: 1            # the share of the ground above a span's top it takes in per cell it
+//                                   # advances into while the object moves sideways (before intake_layer_m's
+//                                   # limit); the rest is pushed ahead (ground_contact.h: Intake). 1: all.
+//                                   # Fitted as heightspan.intake_fraction
 //     wedge_fraction: 0             # the fraction of what a held object's drag compresses that it keeps as a
 //                                   # wedge ahead of it instead, laid in front of it when it stops dragging
 //                                   # (drag_wedge.h); 0: compressed, as the ground model does
@@ -61,6 +65,7 @@ struct HeightSpanSpec {
   double bulk_density_kg_m3 = 1600.0;  // (0, 1e5]
   double particle_spread_m_s = 0.02;   // [0, 100]
   double intake_layer_m = 1e6;         // (0, 1e6]; 1e6: no limit (ground_contact.h)
+  double intake_fraction = 1.0;        // (0, 1]; 1: all (ground_contact.h: Intake)
   double wedge_fraction = 0.0;         // [0, 1]; 0: none (drag_wedge.h)
   enum class WedgeSource { kCompression, kLip, kBoth, kSplit };
   WedgeSource wedge_source = WedgeSource::kCompression;  // what wedge_fraction keeps (drag_wedge.h)
@@ -85,6 +90,7 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
   v.number("bulk_density_kg_m3", s.bulk_density_kg_m3, Range::any());
   v.number("particle_spread_m_s", s.particle_spread_m_s, Range::any());
   v.number("intake_layer_m", s.intake_layer_m, Range::any());
+  v.number("intake_fraction", s.intake_fraction, Range::any());
   v.number("wedge_fraction", s.wedge_fraction, Range::any());
   using W = HeightSpanSpec::WedgeSource;
   v.choice("wedge_source", s.wedge_source,

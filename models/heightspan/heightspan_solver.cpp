@@ -121,7 +121,7 @@ void write_held_csv(const HeightSpanModel& model, const HeightSpanRun& r, const 
 
 class CompiledHeightSpan final : public CompiledSolver {
  public:
-  static constexpr std::ptrdiff_t kOwnParameters = 6;
+  static constexpr std::ptrdiff_t kOwnParameters = 7;
 
   explicit CompiledHeightSpan(const Scene& scene)
       : model_(build_heightspan_model(scene)), initial_(make_initial_height(scene)), parameters_(model_.ground) {
@@ -130,6 +130,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     infos_.push_back({"intake_layer_m", "m", 1.0, 1e-9, 1e6, model_.options.intake_layer_m,
                       "the thickest ground layer a span's top takes in per cell while moving sideways; the rest "
                       "is pushed ahead (heightspan.intake_layer_m; 1e6: no limit)"});
+    infos_.push_back({"intake_fraction", "1", 1.0, 1e-9, 1.0, model_.options.intake_fraction,
+                      "the share of the ground above a span's top it takes in per cell while moving sideways; the "
+                      "rest is pushed ahead (heightspan.intake_fraction; ground_contact.h: Intake)"});
     infos_.push_back({"wedge_fraction", "1", 1.0, 0.0, 1.0, model_.options.wedge_fraction,
                       "the fraction of what a held object's drag compresses (or its lip pushes, by "
                       "heightspan.wedge_source) kept as a wedge ahead of it (heightspan.wedge_fraction; drag_wedge.h)"});
@@ -155,12 +158,14 @@ class CompiledHeightSpan final : public CompiledSolver {
     const std::vector<double> material(values_si.begin(), values_si.end() - kOwnParameters);
     const GroundParams params = parameters_.params_for(model_.ground, material);
     HeightSpanModel model = model_;
-    model.options.intake_layer_m = values_si.end()[-6];
-    model.options.wedge_fraction = values_si.end()[-5];
-    model.options.lip_wedge_fraction = values_si.end()[-4];
-    model.options.press_fraction = values_si.end()[-3];
-    model.options.side_cut_m = values_si.end()[-2];
-    model.options.over_lip_fraction = values_si.back();
+    const double* own = values_si.data() + material.size();  // in infos_' order
+    model.options.intake_layer_m = own[0];
+    model.options.intake_fraction = own[1];
+    model.options.wedge_fraction = own[2];
+    model.options.lip_wedge_fraction = own[3];
+    model.options.press_fraction = own[4];
+    model.options.side_cut_m = own[5];
+    model.options.over_lip_fraction = own[6];
     validate(model.options);
     Run run;
     run.solver = "heightspan";
@@ -224,8 +229,8 @@ class CompiledHeightSpan final : public CompiledSolver {
   HeightSpanModel model_;
   HeightField initial_;
   MaterialParameters parameters_;
-  // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, wedge_fraction,
-  // lip_wedge_fraction, press_fraction, side_cut_m, over_lip_fraction
+  // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, intake_fraction,
+  // wedge_fraction, lip_wedge_fraction, press_fraction, side_cut_m, over_lip_fraction
   std::vector<ParameterInfo> infos_;
 };
 

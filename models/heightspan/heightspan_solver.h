@@ -4,7 +4,8 @@
 // the HeightSpanModel once; its parameters are the ground model's, by the
 // same names ("sand.alpha", "sand.repose_angle_deg", "sand.sigma";
 // models/ground/material_parameters.h), so a calibration fits them alike,
-// and its own "intake_layer_m" (heightspan.intake_layer_m, m; ground_contact.h)
+// and its own "intake_layer_m" (heightspan.intake_layer_m, m; ground_contact.h),
+// "intake_fraction" (heightspan.intake_fraction, 1; ground_contact.h: Intake)
 // and "wedge_fraction" (heightspan.wedge_fraction, 1; drag_wedge.h) and
 // "lip_wedge_fraction" (heightspan.lip_wedge_fraction, 1; with wedge_source split) and
 // "press_fraction" (heightspan.press_fraction, 1; drag_wedge.h) and "side_cut_m"

@@ -78,7 +78,8 @@ void substep(const HeightSpanModel& model, const GroundParams& params, const std
                                      &state->rng)
                              .resampled;
     const double wedge_before_m3 = spans.wedge.volume_m3;
-    report->taken_up_m3 += take_up_ground(ground, &spans.map, &state->ground, motion, model.options.intake_layer_m,
+    report->taken_up_m3 += take_up_ground(ground, &spans.map, &state->ground, motion,
+                                          {model.options.intake_layer_m, model.options.intake_fraction},
                                           lip_wedge(model.options, &spans.wedge));
     report->side_cut_m3 += cut_beside(ground, spans.map, model.options.side_cut_m, motion, &spans.wedge, &state->ground);
     report->wedge_kept_m3 += spans.wedge.volume_m3 - wedge_before_m3;  // the lip's wedge and the side cut

@@ -159,8 +159,9 @@ SceneError scene_error(const CalibrationProblem& problem, const PreparedScene& s
   const std::vector<Run> initial = problem.runs(scene, initial_values), fitted = problem.runs(scene, fitted_values);
   e.heuristic_initial_params = problem.mean_final(scene, initial);  // the entry's field, as the fit compares
   e.heuristic_fitted = problem.mean_final(scene, fitted);
-  e.series = compare_series(scene, problem.observed(scene, initial), problem.observed(scene, fitted),
-                            problem.observed_per_bed(scene, fitted), fitted.front());
+  const auto fitted_per_bed = problem.observed_per_bed(scene, fitted);
+  e.series = compare_series(scene, problem.observed(scene, initial), CalibrationProblem::mean_over_beds(fitted_per_bed),
+                            fitted_per_bed, fitted.front());
   e.rmse_initial_m = surface_rmse_m(e.heuristic_initial_params, scene.reference_final, region);
   e.rmse_fitted_m = surface_rmse_m(e.heuristic_fitted, scene.reference_final, region);
   e.scores_initial_params = score_change(scene.initial, e.heuristic_initial_params, scene.reference_final, region);

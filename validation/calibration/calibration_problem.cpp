@@ -384,10 +384,15 @@ std::vector<std::vector<std::vector<double>>> CalibrationProblem::observed_per_b
   return out;
 }
 
-std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScene& scene, const std::vector<Run>& runs) const {
+std::vector<std::vector<double>> CalibrationProblem::mean_over_beds(
+    const std::vector<std::vector<std::vector<double>>>& per_bed) {
   std::vector<std::vector<double>> out;
-  for (const std::vector<std::vector<double>>& per_bed : observed_per_bed(scene, runs)) out.push_back(mean_values(per_bed));
+  for (const std::vector<std::vector<double>>& values : per_bed) out.push_back(mean_values(values));
   return out;
+}
+
+std::vector<std::vector<double>> CalibrationProblem::observed(const PreparedScene& scene, const std::vector<Run>& runs) const {
+  return mean_over_beds(observed_per_bed(scene, runs));
 }
 
 std::vector<double> CalibrationProblem::weighted_residuals(const PreparedScene& scene,

@@ -115,6 +115,8 @@ class CalibrationProblem {
   // bed without beds: each), that bed's values.
   std::vector<std::vector<std::vector<double>>> observed_per_bed(const PreparedScene& scene,
                                                                  const std::vector<Run>& runs) const;
+  // observed() from observed_per_bed()'s values: each observable's mean over the beds.
+  static std::vector<std::vector<double>> mean_over_beds(const std::vector<std::vector<std::vector<double>>>& per_bed);
   // weight * (observed - reference) / sqrt(count), observable after observable.
   std::vector<double> weighted_residuals(const PreparedScene& scene, const std::vector<std::vector<double>>& observed) const;
   std::vector<double> residuals(const PreparedScene& scene, const std::vector<Run>& runs) const;

@@ -118,8 +118,8 @@ TEST(GroundContact, GroundScoopedWhileMovingSidewaysIsPushedToTheBackNeverAboveI
 }
 
 // Over the map cells whose lowest span's top is under the ground: the sum of
-// what each would take in, min(the ground above the top, the intake layer).
-double expected_intake_m3(const HeightSpanModel& model, const HeightSpanState& state, double layer_m) {
+// what each would take in, min(the intake fraction × the ground above the top, the intake layer).
+double expected_intake_m3(const HeightSpanModel& model, const HeightSpanState& state, Intake intake) {
   const SpanMap& map = state.held[0].map;
   const CellOffset off = ground_offset(map.grid, model.ground.grid);
   double sum = 0.0;
@@ -128,29 +128,29 @@ double expected_intake_m3(const HeightSpanModel& model, const HeightSpanState& s
       const std::int64_t c = map.cell(i, j);
       if (map.count(c) == 0 || !model.ground.grid.contains(i + off.di, j + off.dj)) continue;
       const double above = state.ground.height.at(i + off.di, j + off.dj) - map.begin(c)[0].top_m;
-      sum += std::clamp(above, 0.0, layer_m);
+      sum += std::clamp(intake.fraction * above, 0.0, intake.layer_m);
     }
   }
   return sum * model.ground.grid.cell_area_m2();
 }
 
 // An upright bucket (floor top at 2 cm, centre x = 0.1) in a flat bed `bed_m` deep,
-// moved 1 mm along +x (dx = 0: pressed) with the intake layer `layer_m`, keeping
+// moved 1 mm along +x (dx = 0: pressed) with `intake` (its layer and fraction), keeping
 // `wedge_fraction` of what its lip pushes ahead in its wedge (drag_wedge.h).
 struct Taken {
   double held_m3 = 0.0, expected_m3 = 0.0, ahead_gain_m3 = 0.0, balance_m3 = 0.0, wedge_m3 = 0.0;
   std::array<int, 2> wedge_back{0, 0};
 };
-Taken drag_through(double bed_m, double layer_m, double dx, double wedge_fraction = 0.0) {
+Taken drag_through(double bed_m, Intake intake, double dx, double wedge_fraction = 0.0) {
   Scene s = bed_scene(40, 40, 0.005, bed_m, {mesh_object("bucket", bucket_mesh(), {key(0.0, 0.1, 0.1, 0.04)})}, 1);
   const HeightSpanModel model = build_heightspan_model(s);
   HeightSpanState state = make_heightspan_state(model, make_initial_height(s));
   const double before = accounted_m3(state);
   Taken t;
-  t.expected_m3 = expected_intake_m3(model, state, dx == 0.0 ? 1e9 : layer_m);
+  t.expected_m3 = expected_intake_m3(model, state, dx == 0.0 ? Intake{} : intake);
   const HeightField ground0 = state.ground.height;
   DragWedge& wedge = state.held[0].wedge;
-  take_up_ground(model.ground, &state.held[0].map, &state.ground, Eigen::Vector3d(dx, 0.0, 0.0), layer_m,
+  take_up_ground(model.ground, &state.held[0].map, &state.ground, Eigen::Vector3d(dx, 0.0, 0.0), intake,
                  wedge_fraction > 0.0 ? LipWedge{&wedge, wedge_fraction} : LipWedge{});
   t.held_m3 = state.held[0].map.material_m3();
   t.wedge_m3 = wedge.volume_m3;
@@ -167,12 +167,12 @@ Taken drag_through(double bed_m, double layer_m, double dx, double wedge_fractio
 TEST(GroundContact, MovingSidewaysALipTakesInOneIntakeLayerAndPushesTheRestAhead) {
   for (const double bed : {0.022, 0.03}) {  // 2 mm and 1 cm above the floor's top
     SCOPED_TRACE(bed);
-    const Taken t = drag_through(bed, 0.004, 0.001);
+    const Taken t = drag_through(bed, {0.004}, 0.001);
     EXPECT_GT(t.held_m3, 0.0);
     EXPECT_NEAR(t.held_m3, t.expected_m3, 1e-15);
     EXPECT_NEAR(t.balance_m3, 0.0, 1e-15);
     // what the lip does not take in lies in front of the bucket
-    const Taken all = drag_through(bed, 1e6, 0.001);
+    const Taken all = drag_through(bed, {1e6}, 0.001);
     EXPECT_NEAR(t.ahead_gain_m3, all.held_m3 - t.held_m3, 1e-15);
     EXPECT_EQ(all.ahead_gain_m3, 0.0);
   }
@@ -181,9 +181,9 @@ TEST(GroundContact, MovingSidewaysALipTakesInOneIntakeLayerAndPushesTheRestAhead
 TEST(GroundContact, ADraggedBucketFillsInTheRatioOfTheLayersItTakesIn) {
   // 2 mm and 10 mm of ground above the floor: without a limit the intakes are
   // in the ratio 5; with a 4 mm intake layer, 4 / 2 = 2
-  const double shallow = drag_through(0.022, 1e6, 0.001).held_m3, deep = drag_through(0.03, 1e6, 0.001).held_m3;
+  const double shallow = drag_through(0.022, {1e6}, 0.001).held_m3, deep = drag_through(0.03, {1e6}, 0.001).held_m3;
   EXPECT_NEAR(deep / shallow, 5.0, 1e-9);
-  const double shallow_l = drag_through(0.022, 0.004, 0.001).held_m3, deep_l = drag_through(0.03, 0.004, 0.001).held_m3;
+  const double shallow_l = drag_through(0.022, {0.004}, 0.001).held_m3, deep_l = drag_through(0.03, {0.004}, 0.001).held_m3;
   EXPECT_NEAR(shallow_l, shallow, 1e-15);  // a thinner layer than the limit goes in whole
   EXPECT_NEAR(deep_l / shallow_l, 2.0, 1e-9);
 }
@@ -191,10 +191,10 @@ TEST(GroundContact, ADraggedBucketFillsInTheRatioOfTheLayersItTakesIn) {
 TEST(GroundContact, ALipWedgeCarriesItsFractionOfWhatIsPushedAheadInsteadOfTheGroundAhead) {
   for (const double bed : {0.022, 0.03}) {
     SCOPED_TRACE(bed);
-    const Taken none = drag_through(bed, 0.004, 0.001);
+    const Taken none = drag_through(bed, {0.004}, 0.001);
     for (const double f : {0.5, 1.0}) {
       SCOPED_TRACE(f);
-      const Taken t = drag_through(bed, 0.004, 0.001, f);
+      const Taken t = drag_through(bed, {0.004}, 0.001, f);
       EXPECT_NEAR(t.held_m3, none.held_m3, 1e-15);  // the lip takes in the same layer
       EXPECT_NEAR(t.wedge_m3, f * none.ahead_gain_m3, 1e-15);
       EXPECT_NEAR(t.ahead_gain_m3, (1.0 - f) * none.ahead_gain_m3, 1e-15);
@@ -206,15 +206,35 @@ TEST(GroundContact, ALipWedgeCarriesItsFractionOfWhatIsPushedAheadInsteadOfTheGr
   }
   // a deeper cut pushes more ahead: the wedge grows with it (2 mm of ground over the
   // floor pushes nothing past a 4 mm layer; 10 mm pushes 6 mm per cell the lip meets)
-  EXPECT_EQ(drag_through(0.022, 0.004, 0.001, 1.0).wedge_m3, 0.0);
-  EXPECT_GT(drag_through(0.03, 0.004, 0.001, 1.0).wedge_m3, 0.0);
-  EXPECT_EQ(drag_through(0.03, 0.004, 0.0, 1.0).wedge_m3, 0.0);  // pressing pushes nothing ahead
+  EXPECT_EQ(drag_through(0.022, {0.004}, 0.001, 1.0).wedge_m3, 0.0);
+  EXPECT_GT(drag_through(0.03, {0.004}, 0.001, 1.0).wedge_m3, 0.0);
+  EXPECT_EQ(drag_through(0.03, {0.004}, 0.0, 1.0).wedge_m3, 0.0);  // pressing pushes nothing ahead
+}
+
+TEST(GroundContact, MovingSidewaysALipTakesInItsIntakeFractionOfEveryDepthAndPushesTheRestAhead) {
+  // 2 mm and 10 mm of ground above the floor: a fraction keeps the intakes in the ratio 5
+  // (a layer limit does not, above), and what is not taken in lies in front
+  for (const double f : {0.3, 0.7}) {
+    SCOPED_TRACE(f);
+    const Taken shallow = drag_through(0.022, {1e6, f}, 0.001), deep = drag_through(0.03, {1e6, f}, 0.001);
+    for (const Taken& t : {shallow, deep}) {
+      EXPECT_GT(t.held_m3, 0.0);
+      EXPECT_NEAR(t.held_m3, t.expected_m3, 1e-15);
+      EXPECT_NEAR(t.ahead_gain_m3 * f, t.held_m3 * (1.0 - f), 1e-15);
+      EXPECT_NEAR(t.balance_m3, 0.0, 1e-15);
+    }
+    EXPECT_NEAR(deep.held_m3 / shallow.held_m3, 5.0, 1e-9);
+    EXPECT_NEAR(deep.held_m3, f * drag_through(0.03, {1e6}, 0.001).held_m3, 1e-15);
+    // the layer still limits what the fraction admits: 0.7 of 10 mm is above a 4 mm layer
+    const double layered = drag_through(0.03, {0.004}, 0.001).held_m3;
+    EXPECT_NEAR(drag_through(0.03, {0.004, f}, 0.001).held_m3, layered * (f < 0.4 ? 0.75 : 1.0), 1e-15);
+  }
 }
 
 TEST(GroundContact, PressingTakesInEverythingWhateverTheIntakeLayer) {
-  const Taken t = drag_through(0.03, 0.004, 0.0);
+  const Taken t = drag_through(0.03, {0.004, 0.5}, 0.0);
   EXPECT_NEAR(t.held_m3, t.expected_m3, 1e-15);
-  EXPECT_NEAR(t.held_m3, drag_through(0.03, 1e6, 0.0).held_m3, 1e-15);
+  EXPECT_NEAR(t.held_m3, drag_through(0.03, {1e6}, 0.0).held_m3, 1e-15);
   EXPECT_EQ(t.ahead_gain_m3, 0.0);
 }
 

@@ -60,6 +60,12 @@ TEST(HeightSpanSection, ValidateNamesTheField) {
   spec.intake_layer_m = 0.0;  // a lip that takes in nothing would never fill: refused
   EXPECT_EQ(testing::refused_field(spec), "intake_layer_m");
   EXPECT_EQ(HeightSpanSpec{}.intake_layer_m, 1e6);  // the default: no limit
+  for (const double fraction : {0.0, 1.1, std::nan("")}) {  // 0 would never fill either
+    spec = {};
+    spec.intake_fraction = fraction;
+    EXPECT_EQ(testing::refused_field(spec), "intake_fraction") << fraction;
+  }
+  EXPECT_EQ(HeightSpanSpec{}.intake_fraction, 1.0);  // the default: all
   for (const double fraction : {-0.1, 1.1, std::nan("")}) {
     spec = {};
     spec.wedge_fraction = fraction;

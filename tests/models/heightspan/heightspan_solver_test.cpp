@@ -29,10 +29,11 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const Scene s = small_scoop();
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
-  // the ground's, then its own intake layer, wedge fractions, press fraction, side cut and over-lip share
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 6);
+  // the ground's, then its own intake layer and fraction, wedge fractions, press fraction, side cut and over-lip share
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 7);
   const std::vector<std::pair<std::string, double>> own = {
-      {"intake_layer_m", HeightSpanSpec{}.intake_layer_m}, {"wedge_fraction", HeightSpanSpec{}.wedge_fraction},
+      {"intake_layer_m", HeightSpanSpec{}.intake_layer_m}, {"intake_fraction", HeightSpanSpec{}.intake_fraction},
+      {"wedge_fraction", HeightSpanSpec{}.wedge_fraction},
       {"lip_wedge_fraction", HeightSpanSpec{}.lip_wedge_fraction}, {"press_fraction", HeightSpanSpec{}.press_fraction},
       {"side_cut_m", HeightSpanSpec{}.side_cut_m}, {"over_lip_fraction", HeightSpanSpec{}.over_lip_fraction}};
   for (std::size_t k = 0; k < own.size(); ++k) {
@@ -60,6 +61,20 @@ TEST(HeightSpanSolver, AFittedIntakeLayerReachesTheRun) {
   EXPECT_GT(thin, 0.0);
   EXPECT_LT(thin, all);
   values[compiled->parameter_index("intake_layer_m")] = 0.0;
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, AFittedIntakeFractionReachesTheRun) {
+  // a lip that takes in a share of what it meets holds less than one that takes in all
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  std::vector<double> values = compiled->default_values();
+  const double all = compiled->run(values, {}).measure("mass_held_max_kg.bucket").value;
+  values[compiled->parameter_index("intake_fraction")] = 0.3;
+  const repose::Run part = compiled->run(values, {});
+  EXPECT_GT(part.measure("mass_held_max_kg.bucket").value, 0.0);
+  EXPECT_LT(part.measure("mass_held_max_kg.bucket").value, all);
+  EXPECT_LT(part.measure("ledger.max_relative_imbalance").value, 1e-12);
+  values[compiled->parameter_index("intake_fraction")] = 0.0;
   EXPECT_THROW(compiled->run(values, {}), InputError);
 }
 

@@ -91,19 +91,22 @@ Scene with_options(Scene s, const std::function<void(HeightSpanSpec&)>& set) {
   return with_heightspan(std::move(s), section);
 }
 
-Scene with_intake_layer(Scene s, double layer_m) {
-  return with_options(std::move(s), [&](HeightSpanSpec& o) { o.intake_layer_m = layer_m; });
+Scene with_intake_layer(Scene s, double layer_m, double fraction = 1.0) {
+  return with_options(std::move(s), [&](HeightSpanSpec& o) {
+    o.intake_layer_m = layer_m;
+    o.intake_fraction = fraction;
+  });
 }
 
-TEST(HeightSpanStep, RandomScoopsWithAnIntakeLayerConserveMaterialEveryStep) {
+TEST(HeightSpanStep, RandomScoopsWithAnIntakeLayerAndFractionConserveMaterialEveryStep) {
   std::mt19937_64 rng(20261126);
   std::uniform_real_distribution<double> depth(0.0, 0.025), drag(0.0, 0.08), tilt(0.0, 95.0), speed(0.05, 0.6),
-      layer(0.0002, 0.01);
+      layer(0.0002, 0.01), share(0.01, 1.0);
   for (int trial = 0; trial < 8; ++trial) {
-    const double d = depth(rng), l = drag(rng), t = tilt(rng), v = speed(rng), m = layer(rng);
-    const std::string where =
-        fmt::format("trial {} (depth {} m, drag {} m, tilt {} deg, speed {} m/s, layer {} m)", trial, d, l, t, v, m);
-    run_checked(with_intake_layer(scoop(d, l, t, v, static_cast<std::uint64_t>(trial)), m), where);
+    const double d = depth(rng), l = drag(rng), t = tilt(rng), v = speed(rng), m = layer(rng), f = share(rng);
+    const std::string where = fmt::format(
+        "trial {} (depth {} m, drag {} m, tilt {} deg, speed {} m/s, layer {} m, fraction {})", trial, d, l, t, v, m, f);
+    run_checked(with_intake_layer(scoop(d, l, t, v, static_cast<std::uint64_t>(trial)), m, f), where);
     if (HasFailure()) break;
   }
 }
