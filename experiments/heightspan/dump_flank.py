@@ -15,6 +15,16 @@ heap, issue 12). Usage:
   python3 dump_flank.py RUN_OR_DATA_FOLDER/height_final.npy [...]
 e.g. data/ref_scoop/seed1/height_final.npy against a `repose run
 experiments/scenes/ref_scoop.yaml --solver heightspan` folder's.
+
+The along-channel flank (along=True; printed beside the flank) keeps only the
+rays within 22.5 deg of +-x, the channel's length. Across the channel the
+LIGGGHTS heap leans on the box's side walls (10 cm apart, wall friction 0.5):
+its height at the walls is 0.64 to 0.72 of its peak's (the seeds' mean, by
+scoop), so its rays
+towards them end at the wall with little or no flank, while the model's
+ground has no walls and its heap falls off at its slope rule's angle there.
+The 16-ray mean therefore compares different things across the channel; the
+along-channel flank compares the heaps' free flanks alone.
 """
 import sys
 
@@ -39,7 +49,9 @@ def median3(h):
     return np.nanmedian(stack, axis=0)
 
 
-def flank(path, rays=16):
+def flank(path, rays=16, along=False):
+    """(peak m, mean flank deg, its sd over the rays, rays with a flank); along: only the rays within 22.5 deg
+    of +-x (the six of 16)."""
     h = median3(np.load(path) - BED_M)
     xs = (np.arange(h.shape[1]) + 0.5) * CELL_M
     masked = np.where(xs[None, :] < DUMP_X_M, -np.inf, h)
@@ -47,6 +59,8 @@ def flank(path, rays=16):
     peak = h[j, i]
     angles = []
     for a in np.arange(rays) * 2 * np.pi / rays:
+        if along and abs(np.cos(a)) < np.cos(np.radians(22.5)) - 1e-9:
+            continue
         s_, z_ = [], []
         for s in np.arange(0.0, 0.1, CELL_M / 2):
             z = bilinear(h, i + s * np.cos(a) / CELL_M, j + s * np.sin(a) / CELL_M)
@@ -63,7 +77,9 @@ def flank(path, rays=16):
 def main():
     for path in sys.argv[1:]:
         peak, mean, std, n = flank(path)
-        print(f"{path}: heap peak {peak * 1000:.1f} mm, flank {mean:.1f} +- {std:.1f} deg over {n} rays")
+        _, along, along_std, along_n = flank(path, along=True)
+        print(f"{path}: heap peak {peak * 1000:.1f} mm, flank {mean:.1f} +- {std:.1f} deg over {n} rays; "
+              f"along the channel {along:.1f} +- {along_std:.1f} deg over {along_n}")
 
 
 if __name__ == "__main__":

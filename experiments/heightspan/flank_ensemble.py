@@ -13,7 +13,9 @@ mass the bucket holds at the stages (filled, lifted, carried: 1.0, 1.3, 1.6 s)
 in the unjittered runs, averaged over the beds, against the seeds' mean (the
 issue's held-mass target). --seeds picks the LIGGGHTS seeds (default 1 2 3,
 the calibrations' references); a scoop uses those it has (data/ref_scoop*
-hold seeds 1-7). Usage:
+hold seeds 1-7). The along-channel flank (dump_flank.py: the rays within
+22.5 deg of +-x, where neither heap leans on the DEM box's side walls) is
+printed the same way on a second line. Usage:
   /usr/bin/python3 experiments/heightspan/flank_ensemble.py runs/FIT/parameters.yaml --out runs/flank_FIT \
       [--deep scenes/ref_scoop.yaml] [--shallow scenes/ref_scoop_shallow.yaml] [--repose build/bin/repose] \
       [--set KEY=VALUE ...] [--seeds 1 2 3 4 5 6 7]
@@ -89,6 +91,7 @@ def held_error_percent(model_csvs, seed_csvs, times_s=STAGES_S):
 
 
 def run_flank(repose, scene, values, bed, out, extra=()):
+    """The run's (flank, along-channel flank), deg."""
     cmd = [repose, "run", os.path.join(ROOT, "experiments", scene), "--solver", "heightspan", *overrides(values),
            *[a for kv in extra for a in ("--set", kv)],
            "--set", "heightspan.frame_interval_s=10", "--set", f"ground.initial_height={{kind: file, path: {bed}}}",
@@ -96,7 +99,8 @@ def run_flank(repose, scene, values, bed, out, extra=()):
     done = subprocess.run(cmd, capture_output=True, text=True)
     if done.returncode != 0:
         raise SystemExit(f"flank_ensemble: {' '.join(cmd)} failed: {done.stderr.strip()}")
-    return dump_flank.flank(os.path.join(out, "height_final.npy"))[1]
+    final = os.path.join(out, "height_final.npy")
+    return dump_flank.flank(final)[1], dump_flank.flank(final, along=True)[1]
 
 
 def main():
@@ -119,13 +123,15 @@ def main():
             per_bed.append([run_flank(args.repose, scene, jittered(values, f), os.path.join(bed, "height_initial.npy"),
                                       os.path.join(args.out, name, f"bed{s}", f"{k}"), args.set)
                             for k, f in enumerate(JITTER)])
-            print(f"{name} bed {s}: " + " ".join(f"{x:.1f}" for x in per_bed[-1]), flush=True)
-        seeds = [dump_flank.flank(os.path.join(bed, "height_final.npy"))[1] for bed in beds]
-        m = summary(per_bed)
-        print(f"{name}: model {m['mean']:.2f} +- {m['sd']:.2f} deg (sem {m['sem']:.2f}; per bed "
-              + " / ".join(f"{x:.2f}" for x in m["per_bed"]) + f"; {m['min']:.1f}..{m['max']:.1f}) against the seeds' "
-              + " / ".join(f"{x:.1f}" for x in seeds) + f" (mean {np.mean(seeds):.2f}, sd {np.std(seeds, ddof=1):.2f}; "
-              + f"seeds {' '.join(map(str, seed_list))})", flush=True)
+            print(f"{name} bed {s}: " + " ".join(f"{x:.1f}/{y:.1f}" for x, y in per_bed[-1]), flush=True)
+        finals = [os.path.join(bed, "height_final.npy") for bed in beds]
+        for which, along in (("flank", False), ("along-channel flank", True)):
+            seeds = [dump_flank.flank(f, along=along)[1] for f in finals]
+            m = summary([[pair[int(along)] for pair in row] for row in per_bed])
+            print(f"{name} {which}: model {m['mean']:.2f} +- {m['sd']:.2f} deg (sem {m['sem']:.2f}; per bed "
+                  + " / ".join(f"{x:.2f}" for x in m["per_bed"]) + f"; {m['min']:.1f}..{m['max']:.1f}) against the "
+                  + "seeds' " + " / ".join(f"{x:.1f}" for x in seeds) + f" (mean {np.mean(seeds):.2f}, sd "
+                  + f"{np.std(seeds, ddof=1):.2f}; seeds {' '.join(map(str, seed_list))})", flush=True)
         errors = held_error_percent([os.path.join(args.out, name, f"bed{s}", f"{unjittered}", "held_mass.csv")
                                      for s in seed_list], [os.path.join(bed, "held_mass.csv") for bed in beds])
         print(f"{name}: held at " + " / ".join(f"{t:g}" for t in STAGES_S) + " s: "

@@ -33,6 +33,9 @@ void validate(const HeightSpanSpec& s) {
   if (!(s.particle_spread_m_s >= 0.0 && s.particle_spread_m_s <= 100.0)) {
     throw FieldError("particle_spread_m_s", "a speed in [0, 100] m/s", yaml_number(s.particle_spread_m_s));
   }
+  if (!(s.release_speed_m_s >= 0.0 && s.release_speed_m_s <= 100.0)) {
+    throw FieldError("release_speed_m_s", "a speed in [0, 100] m/s", yaml_number(s.release_speed_m_s));
+  }
   if (!(s.intake_layer_m > 0.0 && s.intake_layer_m <= 1e6)) {
     throw FieldError("intake_layer_m", "a height in (0, 1e6] m (1e6: no limit)", yaml_number(s.intake_layer_m));
   }

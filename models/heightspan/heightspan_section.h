@@ -11,6 +11,10 @@
 //     max_substep_angle_deg: 5      # ... nor turns more than this per substep
 //     bulk_density_kg_m3: 1600      # to report held material as mass (LIGGGHTS reports kg)
 //     particle_spread_m_s: 0.02     # std. dev. of the horizontal velocity added to released particles
+//     release_speed_m_s: 0          # the horizontal speed material flowing off a span's edge into the air
+//                                   # has along the way it flowed, beside the velocity of the object's
+//                                   # point there (span_erosion.h): grains sliding down a tipped bucket
+//                                   # leave its lip moving. Fitted as heightspan.release_speed_m_s
 //     intake_layer_m: 1.0e6         # the thickest layer of ground (m of height) a span's top takes in per
 //                                   # cell it advances into while the object moves sideways; the ground above
 //                                   # it is pushed ahead of the object (the wedge ahead of a bucket's lip);
@@ -64,6 +68,7 @@ struct HeightSpanSpec {
   double max_substep_angle_rad = 0.08726646259971647;  // 5 deg, [0.01, 180] deg
   double bulk_density_kg_m3 = 1600.0;  // (0, 1e5]
   double particle_spread_m_s = 0.02;   // [0, 100]
+  double release_speed_m_s = 0.0;      // [0, 100]
   double intake_layer_m = 1e6;         // (0, 1e6]; 1e6: no limit (ground_contact.h)
   double intake_fraction = 1.0;        // (0, 1]; 1: all (ground_contact.h: Intake)
   double wedge_fraction = 0.0;         // [0, 1]; 0: none (drag_wedge.h)
@@ -89,6 +94,7 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
   v.angle_deg("max_substep_angle_deg", s.max_substep_angle_rad, Range::any());
   v.number("bulk_density_kg_m3", s.bulk_density_kg_m3, Range::any());
   v.number("particle_spread_m_s", s.particle_spread_m_s, Range::any());
+  v.number("release_speed_m_s", s.release_speed_m_s, Range::any());
   v.number("intake_layer_m", s.intake_layer_m, Range::any());
   v.number("intake_fraction", s.intake_fraction, Range::any());
   v.number("wedge_fraction", s.wedge_fraction, Range::any());

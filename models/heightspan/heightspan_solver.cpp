@@ -121,7 +121,7 @@ void write_held_csv(const HeightSpanModel& model, const HeightSpanRun& r, const 
 
 class CompiledHeightSpan final : public CompiledSolver {
  public:
-  static constexpr std::ptrdiff_t kOwnParameters = 7;
+  static constexpr std::ptrdiff_t kOwnParameters = 8;
 
   explicit CompiledHeightSpan(const Scene& scene)
       : model_(build_heightspan_model(scene)), initial_(make_initial_height(scene)), parameters_(model_.ground) {
@@ -148,6 +148,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     infos_.push_back({"over_lip_fraction", "1", 1.0, 0.0, 1.0, model_.options.over_lip_fraction,
                       "the fraction of what a held object's drag keeps in its wedge from the compression that "
                       "rolls over its lip into it instead (heightspan.over_lip_fraction; drag_wedge.h)"});
+    infos_.push_back({"release_speed_m_s", "m/s", 1.0, 0.0, 2.0, model_.options.release_speed_m_s,
+                      "the horizontal speed material flowing off a held object's edge into the air has along its "
+                      "way, beside the object's own motion (heightspan.release_speed_m_s; span_erosion.h)"});
   }
 
   const std::vector<ParameterInfo>& parameters() const override { return infos_; }
@@ -166,6 +169,7 @@ class CompiledHeightSpan final : public CompiledSolver {
     model.options.press_fraction = own[4];
     model.options.side_cut_m = own[5];
     model.options.over_lip_fraction = own[6];
+    model.options.release_speed_m_s = own[7];
     validate(model.options);
     Run run;
     run.solver = "heightspan";
@@ -230,7 +234,7 @@ class CompiledHeightSpan final : public CompiledSolver {
   HeightField initial_;
   MaterialParameters parameters_;
   // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, intake_fraction,
-  // wedge_fraction, lip_wedge_fraction, press_fraction, side_cut_m, over_lip_fraction
+  // wedge_fraction, lip_wedge_fraction, press_fraction, side_cut_m, over_lip_fraction, release_speed_m_s
   std::vector<ParameterInfo> infos_;
 };
 

@@ -10,7 +10,8 @@
 // "lip_wedge_fraction" (heightspan.lip_wedge_fraction, 1; with wedge_source split) and
 // "press_fraction" (heightspan.press_fraction, 1; drag_wedge.h) and "side_cut_m"
 // (heightspan.side_cut_m, m; side_cut.h) and "over_lip_fraction"
-// (heightspan.over_lip_fraction, 1; drag_wedge.h).
+// (heightspan.over_lip_fraction, 1; drag_wedge.h) and "release_speed_m_s"
+// (heightspan.release_speed_m_s, m/s; span_erosion.h).
 // A scene where no object holds material runs the ground model itself
 // (simulate_ground) and builds no span map and no particles.
 //

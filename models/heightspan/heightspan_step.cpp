@@ -14,6 +14,7 @@
 #include "models/heightspan/ground_contact.h"
 #include "models/heightspan/heightspan_model.h"
 #include "models/heightspan/heightspan_state.h"
+#include "models/heightspan/rigid_velocity.h"
 #include "models/heightspan/side_cut.h"
 #include "models/heightspan/span_motion.h"
 
@@ -70,11 +71,13 @@ void substep(const HeightSpanModel& model, const GroundParams& params, const std
   const GroundModel& ground = model.ground;
   Ceiling ceiling;
   std::vector<Eigen::Vector3d> motions;
+  std::vector<RigidVelocity> velocities;  // the held objects'
   for (std::size_t k = 0; k < model.held.size(); ++k) {
     const int o = model.held[k].object;
     const Eigen::Vector3d motion = to[o].position_m - from[o].position_m;
     ObjectSpans& spans = state->held[k];
-    report->resampled += move_spans(model, model.held[k], to[o], motion / dt_s, *state->peeler, &spans, &state->particles,
+    velocities.push_back(rigid_velocity(from[o], to[o], dt_s));
+    report->resampled += move_spans(model, model.held[k], to[o], velocities.back(), *state->peeler, &spans, &state->particles,
                                      &state->rng)
                              .resampled;
     const double wedge_before_m3 = spans.wedge.volume_m3;
@@ -112,7 +115,7 @@ void substep(const HeightSpanModel& model, const GroundParams& params, const std
   }
   accumulate(erode(ground, params, ceiling, &state->ground), &report->ground_erosion);
   for (std::size_t k = 0; k < model.held.size(); ++k) {
-    accumulate(erode_spans(model, params, motions[k] / dt_s, &state->held[k], &state->ground, &state->particles,
+    accumulate(erode_spans(model, params, velocities[k], &state->held[k], &state->ground, &state->particles,
                            &state->rng),
                &report->span_erosion);
   }

@@ -300,14 +300,20 @@ struct Exchange {
   std::vector<double>& in;
   std::vector<double>& released_m;
   std::vector<double>& release_z;
+  std::vector<double>& released_dx;  // the way the released material flowed: its amount-weighted sum of
+  std::vector<double>& released_dy;  // column offsets
   std::vector<std::size_t>& released_at;  // the columns with released material, in the order they got it
 
   Exchange(const GroundModel& m, SpanMap& sm, GroundState* g, const Columns& c, SpanErosionScratch* scratch)
       : model(m), map(sm), ground(g), cols(c), in(scratch->in), released_m(scratch->released_m),
-        release_z(scratch->release_z), released_at(scratch->released_at) {
+        release_z(scratch->release_z), released_dx(scratch->released_dx), released_dy(scratch->released_dy),
+        released_at(scratch->released_at) {
     const std::size_t n_local = c.local_count();
     if (in.size() < sm.spans.size() + n_local) in.resize(sm.spans.size() + n_local, 0.0);
-    if (released_m.size() < n_local) released_m.resize(n_local, 0.0), release_z.resize(n_local, -kInf);
+    if (released_m.size() < n_local) {
+      released_m.resize(n_local, 0.0), release_z.resize(n_local, -kInf);
+      released_dx.resize(n_local, 0.0), released_dy.resize(n_local, 0.0);
+    }
     released_at.clear();
   }
 
@@ -338,6 +344,8 @@ struct Exchange {
         if (!(released_m[l] > 0.0)) released_at.push_back(l);
         released_m[l] += f.amount_m;
         release_z[l] = std::max(release_z[l], f.room_or_z_m);
+        released_dx[l] += f.amount_m * (cols.i_of(f.to_local) - cols.i_of(f.from_local));
+        released_dy[l] += f.amount_m * (cols.j_of(f.to_local) - cols.j_of(f.from_local));
         result->to_particles_m3 += f.amount_m * area;
         continue;
       }
@@ -353,17 +361,22 @@ struct Exchange {
     }
   }
 
-  // one particle per column the material left into, in the columns' order; the sums are cleared
-  void release(const Eigen::Vector3d& velocity_m_s, double spread_m_s, ParticleSystem* particles,
+  // one particle per column the material left into, in the columns' order, moving with the object's point there and
+  // at release_speed_m_s along the way it flowed; the sums are cleared
+  void release(const RigidVelocity& velocity, double release_speed_m_s, double spread_m_s, ParticleSystem* particles,
                std::mt19937_64* rng) {
     std::sort(released_at.begin(), released_at.end());
     for (const std::size_t l : released_at) {
       const std::int64_t ll = static_cast<std::int64_t>(l);
       const int i = cols.i_of(ll), j = cols.j_of(ll);
       const Eigen::Vector3d at(map.grid.centre_x(i), map.grid.centre_y(j), release_z[l]);
-      particles->release({at, velocity_m_s, released_m[l] * model.grid.cell_area_m2()}, spread_m_s, rng);
+      Eigen::Vector3d v = velocity.at(at);
+      const Eigen::Vector3d way(released_dx[l], released_dy[l], 0.0);
+      if (release_speed_m_s > 0.0 && way.norm() > 0.0) v += release_speed_m_s * way.normalized();
+      particles->release({at, v, released_m[l] * model.grid.cell_area_m2()}, spread_m_s, rng);
       released_m[l] = 0.0;
       release_z[l] = -kInf;
+      released_dx[l] = released_dy[l] = 0.0;
     }
     released_at.clear();
   }
@@ -386,7 +399,7 @@ std::array<int, 4> span_columns(const SpanMap& map) {
 }  // namespace
 
 SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& params,
-                              const Eigen::Vector3d& velocity_m_s, ObjectSpans* spans, GroundState* ground,
+                              const RigidVelocity& velocity, ObjectSpans* spans, GroundState* ground,
                               ParticleSystem* particles, std::mt19937_64* rng) {
   SpanErosionResult result;
   SpanMap& map = spans->map;
@@ -416,7 +429,7 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
     result.passes = p + 1;
     exchange.apply(&fluxes, &changed, &result);
   }
-  exchange.release(velocity_m_s, model.options.particle_spread_m_s, particles, rng);
+  exchange.release(velocity, model.options.release_speed_m_s, model.options.particle_spread_m_s, particles, rng);
   return result;
 }
 

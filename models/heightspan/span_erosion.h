@@ -16,7 +16,8 @@
 //     Where the span's top is at most near_ground_cells above that ground,
 //     the material moves straight onto the ground; higher up it leaves as
 //     a particle, released at the neighbour's cell centre at the level it
-//     left, with the object's velocity (particles.h);
+//     left, with the velocity of the object's point there (rigid_velocity.h,
+//     particles.h);
 //   ground to span: ground higher than a neighbouring span's level slides
 //     onto it (a heap beside a buried or pressed bucket spills in);
 //   ground to ground is the ground model's (models/ground/erosion.h).
@@ -45,6 +46,8 @@
 #include <vector>
 
 #include <Eigen/Core>
+
+#include "models/heightspan/rigid_velocity.h"
 
 namespace repose {
 
@@ -81,6 +84,7 @@ struct Flux {
 struct SpanErosionScratch {
   std::vector<span_erosion_detail::Flux> fluxes;
   std::vector<double> in, released_m, release_z;  // in: all 0 between passes
+  std::vector<double> released_dx, released_dy;   // per column: the released material's sum of amount x its way (cells)
   std::vector<std::size_t> released_at;
   std::vector<char> changed;  // per column (ring included): it or a neighbour changed in the last pass
 };
@@ -94,7 +98,7 @@ struct SpanErosionResult {
 };
 
 SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& params,
-                              const Eigen::Vector3d& velocity_m_s, ObjectSpans* spans, GroundState* ground,
+                              const RigidVelocity& velocity, ObjectSpans* spans, GroundState* ground,
                               ParticleSystem* particles, std::mt19937_64* rng);
 
 }  // namespace repose

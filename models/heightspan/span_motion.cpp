@@ -31,7 +31,7 @@ int resting_span(const SpanMap& map, std::int64_t cell, Eigen::Vector3d* at) {
 }
 
 // The old map's material carried rigidly onto the new map.
-double carry_material(const SpanMap& old_map, const Pose& from, const Pose& to, const Eigen::Vector3d& velocity_m_s,
+double carry_material(const SpanMap& old_map, const Pose& from, const Pose& to, const RigidVelocity& velocity,
                       double spread_m_s, SpanMap* map, ParticleSystem* particles, std::mt19937_64* rng) {
   const Eigen::Matrix3d turn = (to.orientation * from.orientation.conjugate()).toRotationMatrix();
   const double area = old_map.grid.cell_area_m2();
@@ -52,7 +52,7 @@ double carry_material(const SpanMap& old_map, const Pose& from, const Pose& to, 
           map->begin(map->cell(ni, nj))[under].material_m += s[k].material_m;
           continue;
         }
-        particles->release({at, velocity_m_s, s[k].material_m * area}, spread_m_s, rng);
+        particles->release({at, velocity.at(at), s[k].material_m * area}, spread_m_s, rng);
         released += s[k].material_m * area;
       }
     }
@@ -63,7 +63,7 @@ double carry_material(const SpanMap& old_map, const Pose& from, const Pose& to, 
 }  // namespace
 
 MotionReport move_spans(const HeightSpanModel& model, const HeldObject& held, const Pose& to,
-                        const Eigen::Vector3d& velocity_m_s, SpanPeeler& peeler, ObjectSpans* spans,
+                        const RigidVelocity& velocity, SpanPeeler& peeler, ObjectSpans* spans,
                         ParticleSystem* particles, std::mt19937_64* rng) {
   MotionReport report;
   if (spans->pose.orientation.angularDistance(to.orientation) <= kNoRotationRad) {
@@ -73,7 +73,7 @@ MotionReport move_spans(const HeightSpanModel& model, const HeldObject& held, co
   const ObjectSpec& object = model.ground.objects[static_cast<std::size_t>(held.object)];
   SpanMap map = peeler.peel(transformed(object.body, to), model.map_grid(held, to));
   report.resampled = true;
-  report.released_m3 = carry_material(spans->map, spans->pose, to, velocity_m_s, model.options.particle_spread_m_s,
+  report.released_m3 = carry_material(spans->map, spans->pose, to, velocity, model.options.particle_spread_m_s,
                                       &map, particles, rng);
   for (std::int64_t c = 0; c < static_cast<std::int64_t>(map.grid.cell_count()); ++c) push_overflow_up(&map, c);
   spans->map = std::move(map);

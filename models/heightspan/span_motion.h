@@ -12,8 +12,8 @@
 // volume lands in the new cell holding that point, on the span it rests on;
 // a point that the re-sampling put inside a span's solid leaves it by the
 // nearer end (over the top onto it, or out of its bottom); where no span is
-// under it, it is in the air and becomes a particle there, moving with the
-// object's velocity. Then
+// under it, it is in the air and becomes a particle there, moving as the
+// object's point there moves (rigid_velocity.h). Then
 // material that would reach into the span above is pushed onto it. Volume
 // is conserved exactly; the surface is re-sampled at the nearest cell, so a
 // turn roughens it, and erosion smooths it again.
@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 
 #include "models/core/geometry/triangle_mesh.h"
+#include "models/heightspan/rigid_velocity.h"
 
 namespace repose {
 
@@ -42,7 +43,7 @@ struct MotionReport {
 inline constexpr double kNoRotationRad = 1e-9;
 
 MotionReport move_spans(const HeightSpanModel& model, const HeldObject& held, const Pose& to,
-                        const Eigen::Vector3d& velocity_m_s, SpanPeeler& peeler, ObjectSpans* spans,
+                        const RigidVelocity& velocity, SpanPeeler& peeler, ObjectSpans* spans,
                         ParticleSystem* particles, std::mt19937_64* rng);
 
 }  // namespace repose

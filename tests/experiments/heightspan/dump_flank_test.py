@@ -18,11 +18,11 @@ def cone(slope_deg, peak_m=0.02, centre_m=(0.2, 0.05)):
     return dump_flank.BED_M + np.maximum(0.0, peak_m - r * np.tan(np.radians(slope_deg)))
 
 
-def measured(h):
+def measured(h, along=False):
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "height_final.npy")
         np.save(path, h)
-        return dump_flank.flank(path)
+        return dump_flank.flank(path, along=along)
 
 
 class DumpFlank(unittest.TestCase):
@@ -32,6 +32,18 @@ class DumpFlank(unittest.TestCase):
             self.assertEqual(rays, 16)
             self.assertAlmostEqual(mean, slope, delta=1.0)
             self.assertAlmostEqual(peak, 0.02, delta=0.002)
+
+    def test_along_the_channel_a_ridge_across_it_measures_its_free_flanks_alone(self):
+        # a ridge across the channel, 22 deg along x, leaning on the side walls: 6 deg across y
+        x = (np.arange(104) + 0.5) * dump_flank.CELL_M
+        y = (np.arange(40) + 0.5) * dump_flank.CELL_M
+        h = dump_flank.BED_M + np.maximum(0.0, 0.02 - np.abs(x[None, :] - 0.2) * np.tan(np.radians(22.0))
+                                          - np.abs(y[:, None] - 0.05) * np.tan(np.radians(6.0)))
+        _, along, _, rays = measured(h, along=True)
+        self.assertEqual(rays, 6)  # 0, +-22.5 deg and their opposites
+        self.assertAlmostEqual(along, 22.0, delta=1.5)
+        self.assertLess(measured(h)[1], along - 3.0)  # the 16-ray mean takes in the walls' shallow side
+        self.assertAlmostEqual(measured(cone(18.0), along=True)[1], 18.0, delta=1.0)  # a round heap: all alike
 
     def test_a_one_cell_spike_beside_the_heap_does_not_become_its_peak(self):
         h = cone(18.0)

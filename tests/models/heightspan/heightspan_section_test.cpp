@@ -56,6 +56,12 @@ TEST(HeightSpanSection, ValidateNamesTheField) {
   spec = {};
   spec.particle_spread_m_s = std::nan("");
   EXPECT_THROW(validate(spec), FieldError);
+  for (const double speed : {-0.1, 101.0, std::nan("")}) {
+    spec = {};
+    spec.release_speed_m_s = speed;
+    EXPECT_EQ(testing::refused_field(spec), "release_speed_m_s") << speed;
+  }
+  EXPECT_EQ(HeightSpanSpec{}.release_speed_m_s, 0.0);  // the default: the object's own velocity alone
   spec = {};
   spec.intake_layer_m = 0.0;  // a lip that takes in nothing would never fill: refused
   EXPECT_EQ(testing::refused_field(spec), "intake_layer_m");

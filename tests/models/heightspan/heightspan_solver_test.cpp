@@ -29,13 +29,15 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const Scene s = small_scoop();
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
-  // the ground's, then its own intake layer and fraction, wedge fractions, press fraction, side cut and over-lip share
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 7);
+  // the ground's, then its own intake layer and fraction, wedge fractions, press fraction, side cut, over-lip share and
+  // release speed
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 8);
   const std::vector<std::pair<std::string, double>> own = {
       {"intake_layer_m", HeightSpanSpec{}.intake_layer_m}, {"intake_fraction", HeightSpanSpec{}.intake_fraction},
       {"wedge_fraction", HeightSpanSpec{}.wedge_fraction},
       {"lip_wedge_fraction", HeightSpanSpec{}.lip_wedge_fraction}, {"press_fraction", HeightSpanSpec{}.press_fraction},
-      {"side_cut_m", HeightSpanSpec{}.side_cut_m}, {"over_lip_fraction", HeightSpanSpec{}.over_lip_fraction}};
+      {"side_cut_m", HeightSpanSpec{}.side_cut_m}, {"over_lip_fraction", HeightSpanSpec{}.over_lip_fraction},
+      {"release_speed_m_s", HeightSpanSpec{}.release_speed_m_s}};
   for (std::size_t k = 0; k < own.size(); ++k) {
     const ParameterInfo& p = compiled->parameters()[ground->parameters().size() + k];
     EXPECT_EQ(p.name, own[k].first);
@@ -75,6 +77,20 @@ TEST(HeightSpanSolver, AFittedIntakeFractionReachesTheRun) {
   EXPECT_LT(part.measure("mass_held_max_kg.bucket").value, all);
   EXPECT_LT(part.measure("ledger.max_relative_imbalance").value, 1e-12);
   values[compiled->parameter_index("intake_fraction")] = 0.0;
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, AFittedReleaseSpeedReachesTheRun) {
+  // what spills off the lifted bucket lands elsewhere when it leaves faster; below 0 refused
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  std::vector<double> values = compiled->default_values();
+  const repose::Run still = compiled->run(values, {});
+  ASSERT_GT(still.measure("flows.span_to_particles_m3").value, 0.0);
+  values[compiled->parameter_index("release_speed_m_s")] = 0.5;
+  const repose::Run thrown = compiled->run(values, {});
+  EXPECT_FALSE((thrown.field("height_final").heights() == still.field("height_final").heights()).all());
+  EXPECT_LT(thrown.measure("ledger.max_relative_imbalance").value, 1e-12);
+  values[compiled->parameter_index("release_speed_m_s")] = -0.1;
   EXPECT_THROW(compiled->run(values, {}), InputError);
 }
 

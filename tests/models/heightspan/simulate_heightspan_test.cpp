@@ -65,9 +65,14 @@ TEST(SimulateHeightSpan, TheOsmesaSpanMapsGiveTheSameScoop) {
   EXPECT_NE(std::find(gl.stages.begin(), gl.stages.end(), "span-maps:osmesa"), gl.stages.end());
   EXPECT_LT(gl.max_abs_imbalance_m3, 1e-12 * gl.initial_m3);
   const double held_max = *std::max_element(cpu.held_m3[0].begin(), cpu.held_m3[0].end());
+  // step by step through the scoop and the carry; the tip (from 0.9 s) throws what leaves the lip with the lip's
+  // velocity, and where it lands, on the ground or back on the bucket, turns on single cells of the two
+  // rasterisations: there both buckets empty
   for (std::size_t k = 0; k < cpu.held_m3[0].size(); ++k) {
-    EXPECT_NEAR(gl.held_m3[0][k], cpu.held_m3[0][k], 0.01 * held_max) << "step " << k;
+    if (cpu.time_s[k] <= 0.9) EXPECT_NEAR(gl.held_m3[0][k], cpu.held_m3[0][k], 0.01 * held_max) << "step " << k;
   }
+  EXPECT_LT(cpu.held_m3[0].back(), 0.01 * held_max);
+  EXPECT_LT(gl.held_m3[0].back(), 0.01 * held_max);
 }
 
 TEST(SimulateHeightSpan, NothingFallsNoParticlesAreBuilt) {

@@ -29,11 +29,11 @@ struct Plate {
     state = make_heightspan_state(model, make_initial_height(s));
   }
   SpanMap& map() { return state.held[0].map; }
-  SpanErosionResult erode(int times) {
+  SpanErosionResult erode(int times, const RigidVelocity& velocity = {}) {
     SpanErosionResult sum;
     for (int k = 0; k < times; ++k) {
       const SpanErosionResult r =
-          erode_spans(model, params, Eigen::Vector3d::Zero(), &state.held[0], &state.ground, &state.particles, &state.rng);
+          erode_spans(model, params, velocity, &state.held[0], &state.ground, &state.particles, &state.rng);
       sum.moves += r.moves;
       sum.to_ground_m3 += r.to_ground_m3;
       sum.to_particles_m3 += r.to_particles_m3;
@@ -117,6 +117,23 @@ TEST(SpanErosion, MaterialFallingOffAnEdgeLeavesFromTheCellBeyondItAtItsLevel) {
   }
 }
 
+TEST(SpanErosion, MaterialFallingOffAnEdgeMovesWithTheObjectAndAtTheReleaseSpeedAlongItsWay) {
+  Plate high(0.05, 30.0);
+  high.model.options.particle_spread_m_s = 0.0;
+  high.model.options.release_speed_m_s = 0.3;
+  high.span_at(0.1775, 0.1225).material_m = 0.02;  // the plate's +x edge column: it flows off towards +x
+  high.params.materials.front().erosion_iterations = 1;
+  RigidVelocity carried;
+  carried.linear_m_s = {0.0, 0.1, 0.0};
+  carried.angular_rad_s = {0.0, 0.0, 2.0};  // turning about the plate's centre, (0.12, 0.12)
+  carried.centre_m = {0.12, 0.12, 0.05};
+  high.erode(1, carried);
+  ASSERT_FALSE(high.state.particles.particles.empty());
+  for (const Particle& q : high.state.particles.particles) {
+    EXPECT_TRUE(q.velocity_m_s.isApprox(carried.at(q.position_m) + Eigen::Vector3d(0.3, 0.0, 0.0), 1e-12));
+  }
+}
+
 TEST(SpanErosion, GroundHigherThanASpanSlidesOntoIt) {
   Plate p(0.0125, 30.0);
   // a heap of ground beside the plate's -x edge (0.06), 2 cm above its top
@@ -141,7 +158,7 @@ TEST(SpanErosion, WallsBlockAndMaterialNeverRisesIntoTheSpanAbove) {
   map.begin(map.cell(i, j))[0].material_m = 0.04;
   const double held = map.material_m3();
   for (int k = 0; k < 200; ++k) {
-    erode_spans(model, params, Eigen::Vector3d::Zero(), &state.held[0], &state.ground, &state.particles, &state.rng);
+    erode_spans(model, params, RigidVelocity{}, &state.held[0], &state.ground, &state.particles, &state.rng);
   }
   testing::expect_spans_valid(map, "bucket");
   EXPECT_NEAR(map.material_m3(), held, 1e-15);
@@ -169,7 +186,7 @@ TEST(SpanErosion, MaterialOnASpanSteeperThanTheReposeAngleSlidesOffInFull) {
   const double initial = accounted_m3(steep);
   const GroundParams params = default_params(model.ground);
   for (int k = 0; k < 8; ++k) {
-    erode_spans(model, params, Eigen::Vector3d::Zero(), &steep.held[0], &steep.ground, &steep.particles, &steep.rng);
+    erode_spans(model, params, RigidVelocity{}, &steep.held[0], &steep.ground, &steep.particles, &steep.rng);
   }
   EXPECT_LT(steep.held[0].map.material_m3(), 1e-9 * initial);
   EXPECT_NEAR(accounted_m3(steep), initial, 1e-14 * initial);
@@ -179,7 +196,7 @@ TEST(SpanErosion, MaterialOnASpanSteeperThanTheReposeAngleSlidesOffInFull) {
   HeightSpanState gentle = layer_on_a_pitched_plate(20.0, 0.001, &model);
   const double held = gentle.held[0].map.material_m3();
   for (int k = 0; k < 8; ++k) {
-    erode_spans(model, params, Eigen::Vector3d::Zero(), &gentle.held[0], &gentle.ground, &gentle.particles,
+    erode_spans(model, params, RigidVelocity{}, &gentle.held[0], &gentle.ground, &gentle.particles,
                 &gentle.rng);
   }
   EXPECT_GT(gentle.held[0].map.material_m3(), 0.75 * held);

@@ -22,9 +22,8 @@ struct Bucket {
     state = make_heightspan_state(model, make_initial_height(s));
     testing::fill_spans(&state.held[0].map, 0.01, 0.08);
   }
-  MotionReport move(const Pose& to) {
-    return move_spans(model, model.held[0], to, Eigen::Vector3d::Zero(), *state.peeler, &state.held[0], &state.particles,
-                      &state.rng);
+  MotionReport move(const Pose& to, const RigidVelocity& velocity = {}) {
+    return move_spans(model, model.held[0], to, velocity, *state.peeler, &state.held[0], &state.particles, &state.rng);
   }
 };
 
@@ -60,6 +59,26 @@ TEST(SpanMotion, RotationConservesVolumeBetweenSpansAndParticles) {
   // most of it fell: what stays was re-sampled into the solid and left it
   // over the top (erosion, not run here, empties the rest: heightspan_step_test.cpp)
   EXPECT_GT(b.state.particles.in_flight_m3(), 0.5 * before);
+}
+
+TEST(SpanMotion, WhatATurnLetsGoOfMovesAsTheObjectsPointThereMoves) {
+  Bucket b;
+  b.model.options.particle_spread_m_s = 0.0;
+  Pose to = b.state.held[0].pose;
+  RigidVelocity velocity;
+  for (int k = 1; k <= 36; ++k) {  // half a turn about the bucket's centre at 5 deg per 10 ms: 8.7 rad/s
+    const Pose from = to;
+    to.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(5.0 * k * testing::kDeg, Eigen::Vector3d::UnitY()));
+    velocity = rigid_velocity(from, to, 0.01);
+    b.move(to, velocity);
+  }
+  ASSERT_FALSE(b.state.particles.particles.empty());
+  double fastest_m_s = 0.0;
+  for (const Particle& p : b.state.particles.particles) {  // every substep turned alike: one velocity field
+    EXPECT_TRUE(p.velocity_m_s.isApprox(velocity.at(p.position_m), 1e-12));
+    fastest_m_s = std::max(fastest_m_s, p.velocity_m_s.norm());
+  }
+  EXPECT_GT(fastest_m_s, 0.1);  // the load lay centimetres from the centre
 }
 
 TEST(SpanMotion, ASmallTurnKeepsTheLoad) {
