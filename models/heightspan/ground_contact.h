@@ -70,8 +70,8 @@ struct LipWedge {
 // the deep and middle scoops under-fills the shallow one by 6.7 % (issue 12).
 // With the fraction, the lip's push-ahead split into the wedge
 // (heightspan.wedge_source: split) and the over-lip share, fitted to the same
-// two scoops, it holds the shallow one within 3 % at every stage
-// (experiments/heightspan_scoop_fit.yaml).
+// two scoops, it holds the shallow one within the issue's 6 % at every stage
+// (experiments/heightspan_scoop_fit.yaml; its report.md has the numbers).
 struct Intake {
   double layer_m = std::numeric_limits<double>::infinity();  // (0, inf]
   double fraction = 1.0;                                      // (0, 1]
