@@ -41,11 +41,21 @@ std::vector<std::array<int, 2>> cells_ahead(const SpanMap& map, const Grid& grou
 
 double keep_in_wedge(const GroundModel& model, double compressed_m3, double fraction, const Eigen::Vector3d& motion_m,
                      DragWedge* wedge, GroundState* state) {
-  if (!(fraction > 0.0) || !(compressed_m3 > 0.0) || !drags(model, motion_m)) return 0.0;
+  if (!drags(model, motion_m)) return 0.0;
+  wedge->back = back_step(motion_m);  // not {0, 0}: a drag moves sideways; it drives what a press kept too
+  if (!(fraction > 0.0) || !(compressed_m3 > 0.0)) return 0.0;
   const double kept = fraction * compressed_m3;
   state->ledger.compressed_m3 -= kept;
   wedge->volume_m3 += kept;
-  wedge->back = back_step(motion_m);  // not {0, 0}: a drag moves sideways
+  return kept;
+}
+
+double keep_pressed_in_wedge(const GroundModel& model, double compressed_m3, double fraction,
+                             const Eigen::Vector3d& motion_m, DragWedge* wedge, GroundState* state) {
+  if (!(fraction > 0.0) || !(compressed_m3 > 0.0) || drags(model, motion_m)) return 0.0;
+  const double kept = fraction * compressed_m3;
+  state->ledger.compressed_m3 -= kept;
+  wedge->volume_m3 += kept;
   return kept;
 }
 
@@ -74,7 +84,13 @@ double feed_over_lip(const Grid& ground, double kept_m3, double fraction, DragWe
 double lay_wedge(const GroundModel& model, const SpanMap& map, const Eigen::Vector3d& motion_m, DragWedge* wedge,
                  GroundState* state) {
   if (!(wedge->volume_m3 > 0.0) || drags(model, motion_m)) return 0.0;
-  REPOSE_DEMAND(wedge->back[0] != 0 || wedge->back[1] != 0);  // a wedge is only kept while dragging
+  if (wedge->back[0] == 0 && wedge->back[1] == 0) {  // only pressed material, no drag yet to drive it
+    if (motion_m.z() > 0.0) {  // the object leaves without dragging: what it pressed stays compressed
+      state->ledger.compressed_m3 += wedge->volume_m3;
+      wedge->volume_m3 = 0.0;
+    }
+    return 0.0;
+  }
   int off_grid = 0;
   const std::vector<std::array<int, 2>> cells = cells_ahead(map, model.grid, wedge->back, &off_grid);
   const int lanes = static_cast<int>(cells.size()) + off_grid;

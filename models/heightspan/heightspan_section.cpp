@@ -51,6 +51,9 @@ void validate(const HeightSpanSpec& s) {
   if (!(s.press_fraction >= 0.0 && s.press_fraction <= 1.0)) {
     throw FieldError("press_fraction", "a fraction in [0, 1] (0: compressed)", yaml_number(s.press_fraction));
   }
+  if (!(s.press_wedge_fraction >= 0.0 && s.press_wedge_fraction <= 1.0)) {
+    throw FieldError("press_wedge_fraction", "a fraction in [0, 1] (0: compressed)", yaml_number(s.press_wedge_fraction));
+  }
   if (!(s.side_cut_m >= 0.0 && s.side_cut_m <= 0.1)) {
     throw FieldError("side_cut_m", "a width in [0, 0.1] m (0: none)", yaml_number(s.side_cut_m));
   }

@@ -38,6 +38,12 @@
 //                                   # would compress that it displaces around its contact instead (as the
 //                                   # ground model displaces its alpha share); 0: compressed, as the ground
 //                                   # model does. Fitted as heightspan.press_fraction (drag_wedge.h)
+//     press_wedge_fraction: 0       # the fraction of what a held object's pressing compresses (of what
+//                                   # press_fraction leaves compressed) that it keeps in its wedge instead,
+//                                   # driven ahead by the drag that follows and laid where it ends (the sand
+//                                   # a bucket pushes down as it is lowered into the bed is what its drag
+//                                   # then bulldozes; drag_wedge.h); 0: compressed. Fitted as
+//                                   # heightspan.press_wedge_fraction
 //     side_cut_m: 0                 # while a held object drags, the ground within this distance (m) beside
 //                                   # its outermost lanes is cut down to its side walls' lower edge where its
 //                                   # lip meets new ground, into its wedge (side_cut.h); 0: none. Fitted as
@@ -76,6 +82,7 @@ struct HeightSpanSpec {
   WedgeSource wedge_source = WedgeSource::kCompression;  // what wedge_fraction keeps (drag_wedge.h)
   double lip_wedge_fraction = 0.0;     // [0, 1]; above 0 only with kSplit (drag_wedge.h)
   double press_fraction = 0.0;         // [0, 1]; 0: the pressing's compression as the ground model's (drag_wedge.h)
+  double press_wedge_fraction = 0.0;   // [0, 1]; 0: the pressing's compression stays compressed (drag_wedge.h)
   double side_cut_m = 0.0;             // [0, 0.1] m; 0: none (side_cut.h)
   double over_lip_fraction = 0.0;      // [0, 1]; 0: none (drag_wedge.h)
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
@@ -104,6 +111,7 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
                                                           {"split", W::kSplit}});
   v.number("lip_wedge_fraction", s.lip_wedge_fraction, Range::any());
   v.number("press_fraction", s.press_fraction, Range::any());
+  v.number("press_wedge_fraction", s.press_wedge_fraction, Range::any());
   v.number("side_cut_m", s.side_cut_m, Range::any());
   v.number("over_lip_fraction", s.over_lip_fraction, Range::any());
   v.number("frame_interval_s", s.frame_interval_s, Range::any());

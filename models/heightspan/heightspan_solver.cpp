@@ -121,7 +121,7 @@ void write_held_csv(const HeightSpanModel& model, const HeightSpanRun& r, const 
 
 class CompiledHeightSpan final : public CompiledSolver {
  public:
-  static constexpr std::ptrdiff_t kOwnParameters = 8;
+  static constexpr std::ptrdiff_t kOwnParameters = 9;
 
   explicit CompiledHeightSpan(const Scene& scene)
       : model_(build_heightspan_model(scene)), initial_(make_initial_height(scene)), parameters_(model_.ground) {
@@ -142,6 +142,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     infos_.push_back({"press_fraction", "1", 1.0, 0.0, 1.0, model_.options.press_fraction,
                       "the fraction of what a held object's pressing would compress displaced around its contact "
                       "instead (heightspan.press_fraction; drag_wedge.h)"});
+    infos_.push_back({"press_wedge_fraction", "1", 1.0, 0.0, 1.0, model_.options.press_wedge_fraction,
+                      "the fraction of what a held object's pressing compresses kept in its wedge, driven ahead by "
+                      "the drag that follows (heightspan.press_wedge_fraction; drag_wedge.h)"});
     infos_.push_back({"side_cut_m", "m", 1.0, 0.0, 0.1, model_.options.side_cut_m,
                       "the width beside a dragged held object's sides cut into its wedge where its lip meets new "
                       "ground (heightspan.side_cut_m; side_cut.h)"});
@@ -167,9 +170,10 @@ class CompiledHeightSpan final : public CompiledSolver {
     model.options.wedge_fraction = own[2];
     model.options.lip_wedge_fraction = own[3];
     model.options.press_fraction = own[4];
-    model.options.side_cut_m = own[5];
-    model.options.over_lip_fraction = own[6];
-    model.options.release_speed_m_s = own[7];
+    model.options.press_wedge_fraction = own[5];
+    model.options.side_cut_m = own[6];
+    model.options.over_lip_fraction = own[7];
+    model.options.release_speed_m_s = own[8];
     validate(model.options);
     Run run;
     run.solver = "heightspan";
@@ -234,7 +238,8 @@ class CompiledHeightSpan final : public CompiledSolver {
   HeightField initial_;
   MaterialParameters parameters_;
   // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, intake_fraction,
-  // wedge_fraction, lip_wedge_fraction, press_fraction, side_cut_m, over_lip_fraction, release_speed_m_s
+  // wedge_fraction, lip_wedge_fraction, press_fraction, press_wedge_fraction, side_cut_m, over_lip_fraction,
+  // release_speed_m_s
   std::vector<ParameterInfo> infos_;
 };
 

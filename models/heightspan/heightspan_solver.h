@@ -8,7 +8,8 @@
 // "intake_fraction" (heightspan.intake_fraction, 1; ground_contact.h: Intake)
 // and "wedge_fraction" (heightspan.wedge_fraction, 1; drag_wedge.h) and
 // "lip_wedge_fraction" (heightspan.lip_wedge_fraction, 1; with wedge_source split) and
-// "press_fraction" (heightspan.press_fraction, 1; drag_wedge.h) and "side_cut_m"
+// "press_fraction" (heightspan.press_fraction, 1; drag_wedge.h) and
+// "press_wedge_fraction" (heightspan.press_wedge_fraction, 1; drag_wedge.h) and "side_cut_m"
 // (heightspan.side_cut_m, m; side_cut.h) and "over_lip_fraction"
 // (heightspan.over_lip_fraction, 1; drag_wedge.h) and "release_speed_m_s"
 // (heightspan.release_speed_m_s, m/s; span_erosion.h).

@@ -107,7 +107,9 @@ void substep(const HeightSpanModel& model, const GroundParams& params, const std
       ObjectSpans& spans = state->held[k];
       const double kept_m3 = keep_in_wedge(ground, compressed_m3, compression_wedge_fraction(model.options), motions[k],
                                            &spans.wedge, &state->ground);
-      report->wedge_kept_m3 += kept_m3;
+      report->wedge_kept_m3 +=
+          kept_m3 + keep_pressed_in_wedge(ground, compressed_m3, model.options.press_wedge_fraction, motions[k],
+                                          &spans.wedge, &state->ground);
       report->over_lip_m3 +=
           feed_over_lip(ground.grid, kept_m3, model.options.over_lip_fraction, &spans.wedge, &spans.map);
       report->wedge_laid_m3 += lay_wedge(ground, spans.map, motions[k], &spans.wedge, &state->ground);

@@ -32,6 +32,42 @@ TEST(DragWedge, KeepsItsFractionOfWhatADragCompressesAndTheLedgerStillBalances) 
   EXPECT_DOUBLE_EQ(w.volume_m3, 1.4e-6);
 }
 
+TEST(DragWedge, KeepsWhatAPressCompressesUntilADragDrivesItOrTheObjectLiftsOff) {
+  StandingBucket b = standing_bucket(0.1);
+  GroundState& g = b.state.ground;
+  g.ledger.compressed_m3 = 2e-6;
+  const double before = accounted_m3(b.state);
+  DragWedge& w = b.state.held[0].wedge;
+  const SpanMap& map = b.state.held[0].map;
+  const Eigen::Vector3d down(0.0, 0.0, -0.001), drag(0.001, 0.0, 0.0), up(0.0, 0.0, 0.001);
+  // a drag's compression is keep_in_wedge's, and the option off keeps nothing
+  EXPECT_EQ(keep_pressed_in_wedge(b.model.ground, 1e-6, 0.5, drag, &w, &g), 0.0);
+  EXPECT_EQ(keep_pressed_in_wedge(b.model.ground, 1e-6, 0.0, down, &w, &g), 0.0);
+  EXPECT_DOUBLE_EQ(keep_pressed_in_wedge(b.model.ground, 1e-6, 0.5, down, &w, &g), 5e-7);
+  EXPECT_DOUBLE_EQ(g.ledger.compressed_m3, 1.5e-6);
+  EXPECT_EQ(w.back, (std::array<int, 2>{0, 0}));  // no way to lay it along yet
+  // pressing on or standing: it waits in the wedge
+  EXPECT_EQ(lay_wedge(b.model.ground, map, down, &w, &g), 0.0);
+  EXPECT_EQ(lay_wedge(b.model.ground, map, Eigen::Vector3d::Zero(), &w, &g), 0.0);
+  EXPECT_DOUBLE_EQ(w.volume_m3, 5e-7);
+  EXPECT_NEAR(accounted_m3(b.state), before, 1e-18);
+  // lifted off without a drag: it stays compressed after all
+  EXPECT_EQ(lay_wedge(b.model.ground, map, up, &w, &g), 0.0);
+  EXPECT_EQ(w.volume_m3, 0.0);
+  EXPECT_DOUBLE_EQ(g.ledger.compressed_m3, 2e-6);
+  // pressed, then dragged towards +x (a drag that keeps none of its own compression still drives it) and
+  // lifted: laid just ahead of the drag
+  const double ground_before = g.height.volume_m3();
+  keep_pressed_in_wedge(b.model.ground, 1e-6, 1.0, down, &w, &g);
+  EXPECT_EQ(keep_in_wedge(b.model.ground, 6e-7, 0.0, drag, &w, &g), 0.0);
+  EXPECT_EQ(w.back, (std::array<int, 2>{-1, 0}));
+  EXPECT_EQ(lay_wedge(b.model.ground, map, drag, &w, &g), 0.0);
+  EXPECT_DOUBLE_EQ(lay_wedge(b.model.ground, map, up, &w, &g), 1e-6);
+  EXPECT_NEAR(g.height.volume_m3() - ground_before, 1e-6, 1e-18);
+  EXPECT_GT(g.height.at(28, 20), 0.01);  // column 28: just ahead of the spans along +x
+  EXPECT_NEAR(accounted_m3(b.state), before, 1e-18);
+}
+
 TEST(DragWedge, KeepsWhatTheLipPushedAheadAndRemembersTheWay) {
   DragWedge w;
   keep_pushed_ahead(2e-6, {-1, 0}, &w);

@@ -62,6 +62,12 @@ TEST(HeightSpanSection, ValidateNamesTheField) {
     EXPECT_EQ(testing::refused_field(spec), "release_speed_m_s") << speed;
   }
   EXPECT_EQ(HeightSpanSpec{}.release_speed_m_s, 0.0);  // the default: the object's own velocity alone
+  for (const double fraction : {-0.1, 1.1, std::nan("")}) {
+    spec = {};
+    spec.press_wedge_fraction = fraction;
+    EXPECT_EQ(testing::refused_field(spec), "press_wedge_fraction") << fraction;
+  }
+  EXPECT_EQ(HeightSpanSpec{}.press_wedge_fraction, 0.0);  // the default: what pressing compresses stays compressed
   spec = {};
   spec.intake_layer_m = 0.0;  // a lip that takes in nothing would never fill: refused
   EXPECT_EQ(testing::refused_field(spec), "intake_layer_m");

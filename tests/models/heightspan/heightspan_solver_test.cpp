@@ -29,13 +29,14 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const Scene s = small_scoop();
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
-  // the ground's, then its own intake layer and fraction, wedge fractions, press fraction, side cut, over-lip share and
-  // release speed
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 8);
+  // the ground's, then its own intake layer and fraction, wedge fractions, press fraction, pressed wedge, side cut,
+  // over-lip share and release speed
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 9);
   const std::vector<std::pair<std::string, double>> own = {
       {"intake_layer_m", HeightSpanSpec{}.intake_layer_m}, {"intake_fraction", HeightSpanSpec{}.intake_fraction},
       {"wedge_fraction", HeightSpanSpec{}.wedge_fraction},
       {"lip_wedge_fraction", HeightSpanSpec{}.lip_wedge_fraction}, {"press_fraction", HeightSpanSpec{}.press_fraction},
+      {"press_wedge_fraction", HeightSpanSpec{}.press_wedge_fraction},
       {"side_cut_m", HeightSpanSpec{}.side_cut_m}, {"over_lip_fraction", HeightSpanSpec{}.over_lip_fraction},
       {"release_speed_m_s", HeightSpanSpec{}.release_speed_m_s}};
   for (std::size_t k = 0; k < own.size(); ++k) {
@@ -91,6 +92,25 @@ TEST(HeightSpanSolver, AFittedReleaseSpeedReachesTheRun) {
   EXPECT_FALSE((thrown.field("height_final").heights() == still.field("height_final").heights()).all());
   EXPECT_LT(thrown.measure("ledger.max_relative_imbalance").value, 1e-12);
   values[compiled->parameter_index("release_speed_m_s")] = -0.1;
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, AFittedPressedWedgeReachesTheRun) {
+  // what lowering the bucket compresses is driven ahead by its drag and laid where the drag ends, so the run
+  // compresses less by exactly that and the ground keeps it; beyond [0, 1] refused
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  std::vector<double> values = compiled->default_values();
+  values[compiled->parameter_index("sand.alpha")] = 0.3;
+  const repose::Run pressed = compiled->run(values, {});
+  ASSERT_GT(pressed.measure("volume.compressed_m3").value, 0.0);
+  values[compiled->parameter_index("press_wedge_fraction")] = 1.0;
+  const repose::Run driven = compiled->run(values, {});
+  EXPECT_LT(driven.measure("volume.compressed_m3").value, pressed.measure("volume.compressed_m3").value);
+  EXPECT_GT(driven.measure("flows.wedge_laid_m3").value, pressed.measure("flows.wedge_laid_m3").value);
+  EXPECT_GT(driven.measure("volume.ground_final_m3").value, pressed.measure("volume.ground_final_m3").value);
+  EXPECT_EQ(driven.measure("volume.wedge_final_m3").value, 0.0);
+  EXPECT_LT(driven.measure("ledger.max_relative_imbalance").value, 1e-12);
+  values[compiled->parameter_index("press_wedge_fraction")] = 1.5;
   EXPECT_THROW(compiled->run(values, {}), InputError);
 }
 
