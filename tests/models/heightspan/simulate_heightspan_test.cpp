@@ -69,7 +69,9 @@ TEST(SimulateHeightSpan, TheOsmesaSpanMapsGiveTheSameScoop) {
   // velocity, and where it lands, on the ground or back on the bucket, turns on single cells of the two
   // rasterisations: there both buckets empty
   for (std::size_t k = 0; k < cpu.held_m3[0].size(); ++k) {
-    if (cpu.time_s[k] <= 0.9) EXPECT_NEAR(gl.held_m3[0][k], cpu.held_m3[0][k], 0.01 * held_max) << "step " << k;
+    if (cpu.time_s[k] <= 0.9) {
+      EXPECT_NEAR(gl.held_m3[0][k], cpu.held_m3[0][k], 0.01 * held_max) << "step " << k;
+    }
   }
   EXPECT_LT(cpu.held_m3[0].back(), 0.01 * held_max);
   EXPECT_LT(gl.held_m3[0].back(), 0.01 * held_max);
