@@ -21,8 +21,8 @@ rays within 22.5 deg of +-x, the channel's length. Across the channel the
 LIGGGHTS heap leans on the box's side walls (10 cm apart, wall friction 0.5):
 its height at the walls is 0.64 to 0.72 of its peak's (the seeds' mean, by
 scoop), so its rays towards them end at the wall with little or no flank,
-while the model's ground has no walls and its heap falls off at its slope
-rule's angle there.
+while the model's ground, closed at the grid's edge but without wall
+friction, lets its heap fall off at its slope rule's angle there.
 The 16-ray mean therefore compares different things across the channel; the
 along-channel flank compares the heaps' free flanks alone.
 """

@@ -39,20 +39,12 @@ std::vector<std::array<int, 2>> cells_ahead(const SpanMap& map, const Grid& grou
 
 }  // namespace
 
-double keep_in_wedge(const GroundModel& model, double compressed_m3, double fraction, const Eigen::Vector3d& motion_m,
-                     DragWedge* wedge, GroundState* state) {
-  if (!drags(model, motion_m)) return 0.0;
-  wedge->back = back_step(motion_m);  // not {0, 0}: a drag moves sideways; it drives what a press kept too
+double keep_in_wedge(const GroundModel& model, double compressed_m3, WedgeFractions fractions,
+                     const Eigen::Vector3d& motion_m, DragWedge* wedge, GroundState* state) {
+  const bool drag = drags(model, motion_m);
+  if (drag) wedge->back = back_step(motion_m);  // not {0, 0}: a drag moves sideways; it drives what a press kept too
+  const double fraction = drag ? fractions.drag : fractions.press;
   if (!(fraction > 0.0) || !(compressed_m3 > 0.0)) return 0.0;
-  const double kept = fraction * compressed_m3;
-  state->ledger.compressed_m3 -= kept;
-  wedge->volume_m3 += kept;
-  return kept;
-}
-
-double keep_pressed_in_wedge(const GroundModel& model, double compressed_m3, double fraction,
-                             const Eigen::Vector3d& motion_m, DragWedge* wedge, GroundState* state) {
-  if (!(fraction > 0.0) || !(compressed_m3 > 0.0) || drags(model, motion_m)) return 0.0;
   const double kept = fraction * compressed_m3;
   state->ledger.compressed_m3 -= kept;
   wedge->volume_m3 += kept;

@@ -111,24 +111,26 @@ struct DragWedge {
 // displacement decides it (displacement.h: is_drag); otherwise it presses.
 bool drags(const GroundModel& model, const Eigen::Vector3d& motion_m);
 
-// After a held object's displacement this substep compressed `compressed_m3`:
-// when `motion_m` is a drag (displacement.h: is_drag), remembers the drag's
-// direction (whatever the fraction: the drag drives what a press kept) and
-// moves `fraction` of it from the ledger's compressed volume into the
-// wedge. Returns the volume kept.
-double keep_in_wedge(const GroundModel& model, double compressed_m3, double fraction, const Eigen::Vector3d& motion_m,
-                     DragWedge* wedge, GroundState* state);
+// The shares of what a held object compresses that its wedge keeps: of a
+// drag's (wedge_fraction, by wedge_source) and of a press's
+// (press_wedge_fraction).
+struct WedgeFractions {
+  double drag = 0.0;   // [0, 1]
+  double press = 0.0;  // [0, 1]
+};
 
-// heightspan.press_wedge_fraction (above): when `motion_m` is not a drag
-// (the object presses), moves `fraction` of what it compressed this substep
-// into the wedge, which keeps it until a drag sets its direction (or
-// returns it to the compressed volume if the object lifts off first:
-// lay_wedge). Returns the volume kept.
-double keep_pressed_in_wedge(const GroundModel& model, double compressed_m3, double fraction,
-                             const Eigen::Vector3d& motion_m, DragWedge* wedge, GroundState* state);
+// After a held object's displacement this substep compressed `compressed_m3`:
+// moves `fractions.drag` of it (when `motion_m` is a drag, displacement.h:
+// is_drag) or `fractions.press` (when it presses) from the ledger's
+// compressed volume into the wedge. A drag also remembers its direction,
+// whatever its fraction: it drives what a press kept, which waits in the
+// wedge until then (or goes back to the compressed volume if the object
+// lifts off first: lay_wedge). Returns the volume kept.
+double keep_in_wedge(const GroundModel& model, double compressed_m3, WedgeFractions fractions,
+                     const Eigen::Vector3d& motion_m, DragWedge* wedge, GroundState* state);
 
 // Over the lip (above): moves `fraction` of `kept_m3`, what keep_in_wedge
-// kept this substep, from the wedge onto the map's lane fronts. Returns the
+// kept this substep from a drag, from the wedge onto the map's lane fronts. Returns the
 // volume moved.
 double feed_over_lip(const Grid& ground, double kept_m3, double fraction, DragWedge* wedge, SpanMap* map);
 

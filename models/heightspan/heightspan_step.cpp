@@ -98,20 +98,19 @@ void substep(const HeightSpanModel& model, const GroundParams& params, const std
   }
   for (std::size_t k = 0; k < ceiling.undersides.size(); ++k) {
     const double compressed_before_m3 = state->ground.ledger.compressed_m3;
-    const bool presses = k < model.held.size() && pressing && !drags(ground, motions[k]);
+    const bool held_drags = k < model.held.size() && drags(ground, motions[k]);
+    const bool presses = k < model.held.size() && pressing && !held_drags;
     report->contact_cells += displace(ground, presses ? *pressing : params, ceiling.undersides[k], ceiling, motions[k],
                                       &state->ground)
                                  .contact_cells;
     if (k < model.held.size()) {
       const double compressed_m3 = state->ground.ledger.compressed_m3 - compressed_before_m3;
       ObjectSpans& spans = state->held[k];
-      const double kept_m3 = keep_in_wedge(ground, compressed_m3, compression_wedge_fraction(model.options), motions[k],
-                                           &spans.wedge, &state->ground);
-      report->wedge_kept_m3 +=
-          kept_m3 + keep_pressed_in_wedge(ground, compressed_m3, model.options.press_wedge_fraction, motions[k],
-                                          &spans.wedge, &state->ground);
-      report->over_lip_m3 +=
-          feed_over_lip(ground.grid, kept_m3, model.options.over_lip_fraction, &spans.wedge, &spans.map);
+      const WedgeFractions fractions{compression_wedge_fraction(model.options), model.options.press_wedge_fraction};
+      const double kept_m3 = keep_in_wedge(ground, compressed_m3, fractions, motions[k], &spans.wedge, &state->ground);
+      report->wedge_kept_m3 += kept_m3;
+      report->over_lip_m3 += feed_over_lip(ground.grid, held_drags ? kept_m3 : 0.0, model.options.over_lip_fraction,
+                                           &spans.wedge, &spans.map);  // a share of the drag's alone
       report->wedge_laid_m3 += lay_wedge(ground, spans.map, motions[k], &spans.wedge, &state->ground);
     }
   }

@@ -17,17 +17,17 @@ TEST(DragWedge, KeepsItsFractionOfWhatADragCompressesAndTheLedgerStillBalances) 
   g.ledger.compressed_m3 = 1e-6;
   const double before = accounted_m3(b.state);
   DragWedge& w = b.state.held[0].wedge;
-  EXPECT_DOUBLE_EQ(keep_in_wedge(b.model.ground, 1e-6, 0.4, {0.001, 0.0, 0.0}, &w, &g), 4e-7);
+  EXPECT_DOUBLE_EQ(keep_in_wedge(b.model.ground, 1e-6, {0.4, 0.0}, {0.001, 0.0, 0.0}, &w, &g), 4e-7);
   EXPECT_DOUBLE_EQ(w.volume_m3, 4e-7);
   EXPECT_DOUBLE_EQ(g.ledger.compressed_m3, 6e-7);
   EXPECT_EQ(w.back, (std::array<int, 2>{-1, 0}));
   EXPECT_NEAR(accounted_m3(b.state), before, 1e-18);
   // pressing (moving down) is not a drag: its compression stays compressed
-  EXPECT_EQ(keep_in_wedge(b.model.ground, 1e-6, 0.4, {0.001, 0.0, -0.001}, &w, &g), 0.0);
+  EXPECT_EQ(keep_in_wedge(b.model.ground, 1e-6, {0.4, 0.0}, {0.001, 0.0, -0.001}, &w, &g), 0.0);
   // nor with the option off
-  EXPECT_EQ(keep_in_wedge(b.model.ground, 1e-6, 0.0, {0.001, 0.0, 0.0}, &w, &g), 0.0);
+  EXPECT_EQ(keep_in_wedge(b.model.ground, 1e-6, {0.0, 0.0}, {0.001, 0.0, 0.0}, &w, &g), 0.0);
   // a drag along -y remembers its direction
-  keep_in_wedge(b.model.ground, 1e-6, 1.0, {0.0002, -0.001, 0.0}, &w, &g);
+  keep_in_wedge(b.model.ground, 1e-6, {1.0, 0.0}, {0.0002, -0.001, 0.0}, &w, &g);
   EXPECT_EQ(w.back, (std::array<int, 2>{0, 1}));
   EXPECT_DOUBLE_EQ(w.volume_m3, 1.4e-6);
 }
@@ -40,10 +40,11 @@ TEST(DragWedge, KeepsWhatAPressCompressesUntilADragDrivesItOrTheObjectLiftsOff) 
   DragWedge& w = b.state.held[0].wedge;
   const SpanMap& map = b.state.held[0].map;
   const Eigen::Vector3d down(0.0, 0.0, -0.001), drag(0.001, 0.0, 0.0), up(0.0, 0.0, 0.001);
-  // a drag's compression is keep_in_wedge's, and the option off keeps nothing
-  EXPECT_EQ(keep_pressed_in_wedge(b.model.ground, 1e-6, 0.5, drag, &w, &g), 0.0);
-  EXPECT_EQ(keep_pressed_in_wedge(b.model.ground, 1e-6, 0.0, down, &w, &g), 0.0);
-  EXPECT_DOUBLE_EQ(keep_pressed_in_wedge(b.model.ground, 1e-6, 0.5, down, &w, &g), 5e-7);
+  // a drag's compression is not the press fraction's, and the option off keeps nothing
+  DragWedge dragged;  // a drag sets its wedge's direction: a wedge of its own
+  EXPECT_EQ(keep_in_wedge(b.model.ground, 1e-6, {0.0, 0.5}, drag, &dragged, &g), 0.0);
+  EXPECT_EQ(keep_in_wedge(b.model.ground, 1e-6, {0.0, 0.0}, down, &w, &g), 0.0);
+  EXPECT_DOUBLE_EQ(keep_in_wedge(b.model.ground, 1e-6, {0.0, 0.5}, down, &w, &g), 5e-7);
   EXPECT_DOUBLE_EQ(g.ledger.compressed_m3, 1.5e-6);
   EXPECT_EQ(w.back, (std::array<int, 2>{0, 0}));  // no way to lay it along yet
   // pressing on or standing: it waits in the wedge
@@ -58,8 +59,8 @@ TEST(DragWedge, KeepsWhatAPressCompressesUntilADragDrivesItOrTheObjectLiftsOff) 
   // pressed, then dragged towards +x (a drag that keeps none of its own compression still drives it) and
   // lifted: laid just ahead of the drag
   const double ground_before = g.height.volume_m3();
-  keep_pressed_in_wedge(b.model.ground, 1e-6, 1.0, down, &w, &g);
-  EXPECT_EQ(keep_in_wedge(b.model.ground, 6e-7, 0.0, drag, &w, &g), 0.0);
+  keep_in_wedge(b.model.ground, 1e-6, {0.0, 1.0}, down, &w, &g);
+  EXPECT_EQ(keep_in_wedge(b.model.ground, 6e-7, {0.0, 1.0}, drag, &w, &g), 0.0);
   EXPECT_EQ(w.back, (std::array<int, 2>{-1, 0}));
   EXPECT_EQ(lay_wedge(b.model.ground, map, drag, &w, &g), 0.0);
   EXPECT_DOUBLE_EQ(lay_wedge(b.model.ground, map, up, &w, &g), 1e-6);
