@@ -35,6 +35,7 @@
 #include "experiments/tearing/paper_fit_spec.h"
 #include "experiments/tearing/tear_ratio.h"
 #include "validation/calibration/calibration_cost.h"
+#include "validation/calibration/calibration_fit.h"
 #include "validation/calibration/calibration_uncertainty.h"
 #include "validation/calibration/halton.h"
 
@@ -172,34 +173,11 @@ void log_point(const std::vector<double>& x, const std::vector<double>& r) {
   std::fflush(stderr);
 }
 
-struct Start {
-  std::vector<double> x;
-  double cost = 0.0;
-  int iterations = 0;
-  std::string termination;
-};
-
-// From u (unit coordinates, see main) to the best u of this start.
-Start solve_from(const PaperFitSpec& spec, CalibrationCost* cost, std::vector<double> x) {
-  ceres::Problem::Options problem_options;
-  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(problem_options);
-  std::vector<double*> blocks;
-  for (double& v : x) blocks.push_back(&v);
-  problem.AddResidualBlock(cost, nullptr, blocks);
-  for (std::size_t k = 0; k < x.size(); ++k) {
-    problem.SetParameterLowerBound(blocks[k], 0, 0.0);
-    problem.SetParameterUpperBound(blocks[k], 0, 1.0);
-  }
-  ceres::Solver::Options options;
-  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = spec.max_iterations;
-  options.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &problem, &summary);
-  return {x, summary.final_cost, static_cast<int>(summary.iterations.size()) - 1,
-          ceres::TerminationTypeToString(summary.termination_type)};
+// From u (unit coordinates, see main) to the best u of this start (calibration_fit.h).
+CalibrationStart solve_from(const PaperFitSpec& spec, CalibrationCost* cost, const std::vector<double>& u) {
+  const std::size_t n = u.size();
+  return minimize_from(cost, nullptr, ParameterBox{std::vector<double>(n, 0.0), std::vector<double>(n, 1.0)}, u,
+                       spec.max_iterations);
 }
 
 // The uncertainty at x, on a problem of its own (ceres::Covariance needs one).
@@ -221,7 +199,7 @@ CalibrationUncertainty uncertainty_at(const PaperFitSpec& spec, CalibrationCost*
 }
 
 struct Fitted {
-  std::vector<Start> starts;
+  std::vector<CalibrationStart> starts;
   std::size_t best = 0;
   std::vector<double> x;
   CalibrationUncertainty uncertainty;
@@ -254,9 +232,9 @@ Fitted fit(const PaperFitSpec& spec, const PaperFit& sheet) {
   for (int s = 1; s < spec.starts; ++s) {
     f.starts.push_back(solve_from(spec, &cost, halton.point(static_cast<std::uint64_t>(s))));
   }
-  for (std::size_t s = 1; s < f.starts.size(); ++s) f.best = f.starts[s].cost < f.starts[f.best].cost ? s : f.best;
-  f.x = from_unit(spec, f.starts[f.best].x);
-  f.uncertainty = uncertainty_at(spec, &cost, f.starts[f.best].x, f.starts[f.best].cost);
+  for (std::size_t s = 1; s < f.starts.size(); ++s) f.best = f.starts[s].final_cost < f.starts[f.best].final_cost ? s : f.best;
+  f.x = from_unit(spec, f.starts[f.best].final_free);
+  f.uncertainty = uncertainty_at(spec, &cost, f.starts[f.best].final_free, f.starts[f.best].final_cost);
   for (std::size_t k = 0; k < n; ++k) f.uncertainty.standard_error[k] *= spec.parameters[k].upper - spec.parameters[k].lower;
   return f;
 }
@@ -265,7 +243,7 @@ PaperFitResults results_of(const PaperFitSpec& spec, const PaperFit& sheet, cons
   PaperFitResults results;
   results.fitted = f.x;
   results.uncertainty = f.uncertainty;
-  results.final_cost = f.starts[f.best].cost;
+  results.final_cost = f.starts[f.best].final_cost;
   results.tensile = sheet.tensile(f.x);
   std::vector<double> x0;
   for (const PaperFitParameter& p : spec.parameters) x0.push_back(p.initial);
@@ -291,8 +269,8 @@ int main(int argc, char** argv) {
     PaperFitResults results = results_of(spec, sheet, f);
     results.cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     write_paper_fit_report(spec, results, out);
-    for (const Start& s : f.starts) {
-      std::printf("start: cost %.6g after %d iterations (%s)\n", s.cost, s.iterations, s.termination.c_str());
+    for (const CalibrationStart& s : f.starts) {
+      std::printf("start: cost %.6g after %d iterations (%s)\n", s.final_cost, s.iterations, s.termination.c_str());
     }
     std::ifstream report(out + "/report.md");
     std::printf("%s", std::string(std::istreambuf_iterator<char>(report), {}).c_str());

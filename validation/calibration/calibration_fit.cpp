@@ -2,7 +2,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <memory>
+#include <utility>
 
 #include <ceres/ceres.h>
 #include <fmt/format.h>
@@ -45,24 +48,43 @@ ceres::LossFunction* make_loss(const CalibrationSolverSpec& solver) {
 
 // A problem over one block per free parameter, bounded; the cost is owned by the caller.
 struct BoundedProblem {
+  std::unique_ptr<ceres::LossFunction> loss;  // the problem's, when it owns one (outlives the problem)
   std::unique_ptr<ceres::Problem> problem;
   std::vector<double> x;  // the blocks' storage
   std::vector<double*> blocks;
 };
 
-BoundedProblem make_problem(const CalibrationProblem& calibration, CalibrationCost* cost, const std::vector<double>& start) {
+BoundedProblem make_problem(ceres::CostFunction* cost, ceres::LossFunction* loss, const ParameterBox& box,
+                            const std::vector<double>& start) {
+  REPOSE_DEMAND(box.lower.size() == start.size() && box.upper.size() == start.size());
   BoundedProblem b;
   ceres::Problem::Options options;
   options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+  options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   b.problem = std::make_unique<ceres::Problem>(options);
   b.x = start;
   for (double& v : b.x) b.blocks.push_back(&v);
-  b.problem->AddResidualBlock(cost, make_loss(calibration.spec().solver), b.blocks);
+  b.problem->AddResidualBlock(cost, loss, b.blocks);
   for (std::size_t k = 0; k < b.blocks.size(); ++k) {
-    const ParameterSpec& spec = calibration.spec().parameters[calibration.free()[k]];
-    b.problem->SetParameterLowerBound(b.blocks[k], 0, spec.lower);
-    b.problem->SetParameterUpperBound(b.blocks[k], 0, spec.upper);
+    b.problem->SetParameterLowerBound(b.blocks[k], 0, box.lower[k]);
+    b.problem->SetParameterUpperBound(b.blocks[k], 0, box.upper[k]);
   }
+  return b;
+}
+
+ParameterBox box_of(const CalibrationProblem& calibration) {
+  ParameterBox box;
+  for (const std::size_t p : calibration.free()) {
+    box.lower.push_back(calibration.spec().parameters[p].lower);
+    box.upper.push_back(calibration.spec().parameters[p].upper);
+  }
+  return box;
+}
+
+BoundedProblem make_problem(const CalibrationProblem& calibration, CalibrationCost* cost, const std::vector<double>& start) {
+  std::unique_ptr<ceres::LossFunction> loss(make_loss(calibration.spec().solver));
+  BoundedProblem b = make_problem(cost, loss.get(), box_of(calibration), start);
+  b.loss = std::move(loss);
   return b;
 }
 
@@ -82,34 +104,57 @@ std::vector<std::vector<double>> start_points(const CalibrationProblem& problem)
   return starts;
 }
 
+}  // namespace
+
+CalibrationStart solve_or_retry_damped(const std::function<CalibrationStart(double first_radius)>& solve) {
+  CalibrationStart first = solve(kFirstTrustRegionRadius);
+  if (first.iterations > 0 || !std::isfinite(first.final_cost)) return first;
+  CalibrationStart damped = solve(kDampedTrustRegionRadius);
+  damped.termination = fmt::format("{} (retried with a damped first step: the first solve took none, {})",
+                                   damped.termination, first.termination);
+  return damped;
+}
+
+CalibrationStart minimize_from(ceres::CostFunction* cost, ceres::LossFunction* loss, const ParameterBox& box,
+                               const std::vector<double>& start, int max_iterations,
+                               ceres::IterationCallback* callback) {
+  return solve_or_retry_damped([&](double first_radius) {
+    BoundedProblem b = make_problem(cost, loss, box, start);
+    ceres::Solver::Options options;
+    options.minimizer_type = ceres::TRUST_REGION;
+    options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+    options.linear_solver_type = ceres::DENSE_QR;
+    options.initial_trust_region_radius = first_radius;
+    options.max_num_iterations = max_iterations;
+    options.num_threads = 1;  // the heuristic runs are parallel inside the cost
+    options.logging_type = ceres::SILENT;
+    options.minimizer_progress_to_stdout = false;
+    if (callback != nullptr) options.callbacks.push_back(callback);
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, b.problem.get(), &summary);
+    CalibrationStart s;
+    s.initial_free = start;
+    s.final_free = b.x;
+    s.initial_cost = summary.initial_cost;
+    s.final_cost = summary.final_cost;
+    s.iterations = static_cast<int>(summary.iterations.size()) - 1;
+    s.termination = fmt::format("{}: {}", ceres::TerminationTypeToString(summary.termination_type), summary.message);
+    for (const ceres::IterationSummary& it : summary.iterations) s.cost_per_iteration.push_back(it.cost);
+    if (summary.termination_type == ceres::FAILURE || !std::isfinite(s.final_cost)) {
+      s.final_cost = std::numeric_limits<double>::infinity();
+    }
+    return s;
+  });
+}
+
+namespace {
+
 CalibrationStart solve_from(const CalibrationProblem& calibration, CalibrationCost* cost, const std::vector<double>& start,
                             std::size_t index, const ProgressFn& progress) {
-  BoundedProblem b = make_problem(calibration, cost, start);
-  ceres::Solver::Options options;
-  options.minimizer_type = ceres::TRUST_REGION;
-  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = calibration.spec().solver.max_iterations;
-  options.num_threads = 1;  // the heuristic runs are parallel inside the cost
-  options.logging_type = ceres::SILENT;
-  options.minimizer_progress_to_stdout = false;
-  ProgressCallback callback(progress, index, static_cast<std::size_t>(calibration.spec().solver.starts),
-                            options.max_num_iterations);
-  options.callbacks.push_back(&callback);
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, b.problem.get(), &summary);
-  CalibrationStart s;
-  s.initial_free = start;
-  s.final_free = b.x;
-  s.initial_cost = summary.initial_cost;
-  s.final_cost = summary.final_cost;
-  s.iterations = static_cast<int>(summary.iterations.size()) - 1;
-  s.termination = fmt::format("{}: {}", ceres::TerminationTypeToString(summary.termination_type), summary.message);
-  for (const ceres::IterationSummary& it : summary.iterations) s.cost_per_iteration.push_back(it.cost);
-  if (summary.termination_type == ceres::FAILURE || !std::isfinite(s.final_cost)) {
-    s.final_cost = std::numeric_limits<double>::infinity();
-  }
-  return s;
+  const int max_iterations = calibration.spec().solver.max_iterations;
+  ProgressCallback callback(progress, index, static_cast<std::size_t>(calibration.spec().solver.starts), max_iterations);
+  const std::unique_ptr<ceres::LossFunction> loss(make_loss(calibration.spec().solver));
+  return minimize_from(cost, loss.get(), box_of(calibration), start, max_iterations, &callback);
 }
 
 }  // namespace

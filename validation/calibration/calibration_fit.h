@@ -9,10 +9,12 @@
 // Deterministic: the same file and seed give bit-identical results, whatever
 // the thread count.
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
+#include <ceres/ceres.h>
 
 #include "models/core/base/progress.h"
 #include "validation/calibration/calibration_problem.h"
@@ -31,6 +33,35 @@ struct CalibrationStart {
   std::string termination;           // Ceres's termination type and message
   std::vector<double> cost_per_iteration;  // iteration 0 is the start
 };
+
+// The box a fit keeps its free parameters in.
+struct ParameterBox {
+  std::vector<double> lower, upper;
+};
+
+// Ceres' first trust region, in Jacobi-scaled units, and the damped one a
+// solve that took no step is retried with. Ceres' own (1e4) makes the first
+// step all but Gauss-Newton's. Ceres projects a step that leaves the box onto
+// it, and from a start on a bound (a fraction started at 1) that step can
+// point so far out of the box that what the projection leaves is below the
+// parameter tolerance: the solve stops at its start (both leave-one-depth-out
+// folds of experiments/heightspan_scoop_fit.yaml did). A radius of 1 damps
+// the first step towards the gradient, which moves the parameters along the
+// bound too. Only the retry uses it: a solve that moves keeps Ceres' own.
+constexpr double kFirstTrustRegionRadius = 1.0e4;
+constexpr double kDampedTrustRegionRadius = 1.0;
+
+// solve(kFirstTrustRegionRadius), or, when that ends without a step and
+// without failing, solve(kDampedTrustRegionRadius), its termination saying so.
+CalibrationStart solve_or_retry_damped(const std::function<CalibrationStart(double first_radius)>& solve);
+
+// Levenberg-Marquardt (Ceres, dense QR) on `cost` (one block of size 1 per
+// parameter; `loss` may be null, not owned) from `start` within `box`,
+// retried damped when it takes no step (solve_or_retry_damped); `callback`
+// (may be null) sees every iteration. A failed solve ends at an infinite cost.
+CalibrationStart minimize_from(ceres::CostFunction* cost, ceres::LossFunction* loss, const ParameterBox& box,
+                               const std::vector<double>& start, int max_iterations,
+                               ceres::IterationCallback* callback = nullptr);
 
 struct SceneError {
   std::string name;

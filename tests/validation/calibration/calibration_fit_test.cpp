@@ -2,6 +2,7 @@
 // cost, and the same file and seed give bit-identical results, whatever the
 // number of threads.
 #include <fstream>
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -74,6 +75,38 @@ TEST(CalibrationFit, SceneErrorScoresTheEntrysField) {
   EXPECT_GT(e.scores_fitted.rmse_nothing_m, 1e-3);  // the table holds snow
   EXPECT_LT(e.rmse_fitted_m, 1e-12);
   EXPECT_GT(e.rmse_initial_m, 1e-4);  // a shallower angle leaves a different pile
+}
+
+// A solve that ends where it started, without failing, is solved again with
+// a damped first step (calibration_fit.h: Ceres' nearly Gauss-Newton first
+// step, projected onto the bounds, can leave nothing); one that moves, or
+// fails, is not.
+TEST(CalibrationFit, ASolveThatTakesNoStepIsRetriedWithADampedFirstStep) {
+  std::vector<double> radii;
+  const auto solve = [&radii](int iterations_at_first, double cost_at_first) {
+    return [&radii, iterations_at_first, cost_at_first](double radius) {
+      radii.push_back(radius);
+      CalibrationStart s;
+      const bool first = radius == kFirstTrustRegionRadius;
+      s.iterations = first ? iterations_at_first : 3;
+      s.final_cost = first ? cost_at_first : 0.5;
+      s.termination = first ? "CONVERGENCE: Parameter tolerance reached." : "CONVERGENCE: Function tolerance reached.";
+      return s;
+    };
+  };
+  const CalibrationStart retried = solve_or_retry_damped(solve(0, 2.0));
+  EXPECT_EQ(radii, (std::vector<double>{kFirstTrustRegionRadius, kDampedTrustRegionRadius}));
+  EXPECT_LT(kDampedTrustRegionRadius, kFirstTrustRegionRadius);
+  EXPECT_EQ(retried.iterations, 3);
+  EXPECT_EQ(retried.final_cost, 0.5);
+  EXPECT_NE(retried.termination.find("retried with a damped first step"), std::string::npos) << retried.termination;
+  EXPECT_NE(retried.termination.find("Parameter tolerance"), std::string::npos) << retried.termination;
+  radii.clear();
+  EXPECT_EQ(solve_or_retry_damped(solve(2, 2.0)).iterations, 2);  // it moved
+  EXPECT_EQ(radii.size(), 1u);
+  radii.clear();
+  EXPECT_EQ(solve_or_retry_damped(solve(0, std::numeric_limits<double>::infinity())).iterations, 0);  // it failed
+  EXPECT_EQ(radii.size(), 1u);
 }
 
 }  // namespace
