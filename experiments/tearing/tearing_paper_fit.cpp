@@ -175,9 +175,7 @@ void log_point(const std::vector<double>& x, const std::vector<double>& r) {
 
 // From u (unit coordinates, see main) to the best u of this start (calibration_fit.h).
 CalibrationStart solve_from(const PaperFitSpec& spec, CalibrationCost* cost, const std::vector<double>& u) {
-  const std::size_t n = u.size();
-  return minimize_from(cost, nullptr, ParameterBox{std::vector<double>(n, 0.0), std::vector<double>(n, 1.0)}, u,
-                       spec.max_iterations);
+  return minimize_from(cost, nullptr, u, spec.max_iterations);
 }
 
 // The uncertainty at x, on a problem of its own (ceres::Covariance needs one).

@@ -38,6 +38,11 @@ class CalibrationCost : public ceres::CostFunction {
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override;
 
+  // Each parameter's bounds and central-difference half-width.
+  const std::vector<double>& lower() const { return lower_; }
+  const std::vector<double>& upper() const { return upper_; }
+  const std::vector<double>& steps() const { return step_; }
+
   // Residuals at free parameter values, through the memory.
   std::vector<std::vector<double>> residuals_at(const std::vector<std::vector<double>>& points) const;
 

@@ -54,9 +54,8 @@ struct BoundedProblem {
   std::vector<double*> blocks;
 };
 
-BoundedProblem make_problem(ceres::CostFunction* cost, ceres::LossFunction* loss, const ParameterBox& box,
-                            const std::vector<double>& start) {
-  REPOSE_DEMAND(box.lower.size() == start.size() && box.upper.size() == start.size());
+BoundedProblem make_problem(CalibrationCost* cost, ceres::LossFunction* loss, const std::vector<double>& start) {
+  REPOSE_DEMAND(cost->lower().size() == start.size());
   BoundedProblem b;
   ceres::Problem::Options options;
   options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
@@ -66,24 +65,15 @@ BoundedProblem make_problem(ceres::CostFunction* cost, ceres::LossFunction* loss
   for (double& v : b.x) b.blocks.push_back(&v);
   b.problem->AddResidualBlock(cost, loss, b.blocks);
   for (std::size_t k = 0; k < b.blocks.size(); ++k) {
-    b.problem->SetParameterLowerBound(b.blocks[k], 0, box.lower[k]);
-    b.problem->SetParameterUpperBound(b.blocks[k], 0, box.upper[k]);
+    b.problem->SetParameterLowerBound(b.blocks[k], 0, cost->lower()[k]);
+    b.problem->SetParameterUpperBound(b.blocks[k], 0, cost->upper()[k]);
   }
   return b;
 }
 
-ParameterBox box_of(const CalibrationProblem& calibration) {
-  ParameterBox box;
-  for (const std::size_t p : calibration.free()) {
-    box.lower.push_back(calibration.spec().parameters[p].lower);
-    box.upper.push_back(calibration.spec().parameters[p].upper);
-  }
-  return box;
-}
-
 BoundedProblem make_problem(const CalibrationProblem& calibration, CalibrationCost* cost, const std::vector<double>& start) {
   std::unique_ptr<ceres::LossFunction> loss(make_loss(calibration.spec().solver));
-  BoundedProblem b = make_problem(cost, loss.get(), box_of(calibration), start);
+  BoundedProblem b = make_problem(cost, loss.get(), start);
   b.loss = std::move(loss);
   return b;
 }
@@ -104,22 +94,34 @@ std::vector<std::vector<double>> start_points(const CalibrationProblem& problem)
   return starts;
 }
 
-}  // namespace
-
-CalibrationStart solve_or_retry_damped(const std::function<CalibrationStart(double first_radius)>& solve) {
-  CalibrationStart first = solve(kFirstTrustRegionRadius);
-  if (first.iterations > 0 || !std::isfinite(first.final_cost)) return first;
-  CalibrationStart damped = solve(kDampedTrustRegionRadius);
-  damped.termination = fmt::format("{} (retried with a damped first step: the first solve took none, {})",
-                                   damped.termination, first.termination);
-  return damped;
+// Every parameter ended within kStalledFractionOfStep of its step of where it started.
+bool stalled(const CalibrationStart& s, const std::vector<double>& steps) {
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    if (std::abs(s.final_free[k] - s.initial_free[k]) >= kStalledFractionOfStep * steps[k]) return false;
+  }
+  return true;
 }
 
-CalibrationStart minimize_from(ceres::CostFunction* cost, ceres::LossFunction* loss, const ParameterBox& box,
-                               const std::vector<double>& start, int max_iterations,
-                               ceres::IterationCallback* callback) {
-  return solve_or_retry_damped([&](double first_radius) {
-    BoundedProblem b = make_problem(cost, loss, box, start);
+}  // namespace
+
+CalibrationStart solve_or_retry_damped(const std::function<CalibrationStart(double first_radius)>& solve,
+                                       const std::vector<double>& steps) {
+  CalibrationStart first = solve(kFirstTrustRegionRadius);
+  if (!std::isfinite(first.final_cost) || !stalled(first, steps)) return first;
+  CalibrationStart damped = solve(kDampedTrustRegionRadius);
+  if (damped.final_cost < first.final_cost) {
+    damped.termination = fmt::format("{} (retried with a damped first step: the first solve stalled after {} iterations, {})",
+                                     damped.termination, first.iterations, first.termination);
+    return damped;
+  }
+  first.termination += " (a retry with a damped first step did no better)";
+  return first;
+}
+
+CalibrationStart minimize_from(CalibrationCost* cost, ceres::LossFunction* loss, const std::vector<double>& start,
+                               int max_iterations, ceres::IterationCallback* callback) {
+  const auto solve = [&](double first_radius) {
+    BoundedProblem b = make_problem(cost, loss, start);
     ceres::Solver::Options options;
     options.minimizer_type = ceres::TRUST_REGION;
     options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
@@ -144,7 +146,8 @@ CalibrationStart minimize_from(ceres::CostFunction* cost, ceres::LossFunction* l
       s.final_cost = std::numeric_limits<double>::infinity();
     }
     return s;
-  });
+  };
+  return solve_or_retry_damped(solve, cost->steps());
 }
 
 namespace {
@@ -154,7 +157,7 @@ CalibrationStart solve_from(const CalibrationProblem& calibration, CalibrationCo
   const int max_iterations = calibration.spec().solver.max_iterations;
   ProgressCallback callback(progress, index, static_cast<std::size_t>(calibration.spec().solver.starts), max_iterations);
   const std::unique_ptr<ceres::LossFunction> loss(make_loss(calibration.spec().solver));
-  return minimize_from(cost, loss.get(), box_of(calibration), start, max_iterations, &callback);
+  return minimize_from(cost, loss.get(), start, max_iterations, &callback);
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include <ceres/ceres.h>
 
 #include "models/core/base/progress.h"
+#include "validation/calibration/calibration_cost.h"
 #include "validation/calibration/calibration_problem.h"
 #include "validation/calibration/calibration_uncertainty.h"
 #include "validation/calibration/series_comparison.h"
@@ -34,34 +35,35 @@ struct CalibrationStart {
   std::vector<double> cost_per_iteration;  // iteration 0 is the start
 };
 
-// The box a fit keeps its free parameters in.
-struct ParameterBox {
-  std::vector<double> lower, upper;
-};
-
 // Ceres' first trust region, in Jacobi-scaled units, and the damped one a
-// solve that took no step is retried with. Ceres' own (1e4) makes the first
-// step all but Gauss-Newton's. Ceres projects a step that leaves the box onto
-// it, and from a start on a bound (a fraction started at 1) that step can
-// point so far out of the box that what the projection leaves is below the
-// parameter tolerance: the solve stops at its start (both leave-one-depth-out
-// folds of experiments/heightspan_scoop_fit.yaml did). A radius of 1 damps
-// the first step towards the gradient, which moves the parameters along the
-// bound too. Only the retry uses it: a solve that moves keeps Ceres' own.
+// solve that stalled is retried with. Ceres' own (1e4) makes the first step
+// all but Gauss-Newton's. Ceres projects a step that leaves the box onto it,
+// and from a start on a bound (a fraction started at 1) that step can point
+// so far out of the box that what the projection leaves is below the
+// parameter tolerance: the solve stops at or next to its start (both
+// leave-one-depth-out folds of experiments/heightspan_scoop_fit.yaml did:
+// 0 and 1 iterations, every parameter within 6 % of its derivative step of
+// the start). A radius of 1 damps the first step towards the gradient, which
+// moves the parameters along the bound too. Only the retry uses it: a solve
+// that moves keeps Ceres' own.
 constexpr double kFirstTrustRegionRadius = 1.0e4;
 constexpr double kDampedTrustRegionRadius = 1.0;
+// A solve stalled when every parameter ended within this fraction of its
+// derivative step (the scale the cost is resolved on) of where it started.
+constexpr double kStalledFractionOfStep = 0.1;
 
-// solve(kFirstTrustRegionRadius), or, when that ends without a step and
-// without failing, solve(kDampedTrustRegionRadius), its termination saying so.
-CalibrationStart solve_or_retry_damped(const std::function<CalibrationStart(double first_radius)>& solve);
+// solve(kFirstTrustRegionRadius), or, when that stalled (without failing),
+// also solve(kDampedTrustRegionRadius): the one of lower cost, its
+// termination saying a retry was made. `steps`: each parameter's derivative step.
+CalibrationStart solve_or_retry_damped(const std::function<CalibrationStart(double first_radius)>& solve,
+                                       const std::vector<double>& steps);
 
-// Levenberg-Marquardt (Ceres, dense QR) on `cost` (one block of size 1 per
-// parameter; `loss` may be null, not owned) from `start` within `box`,
-// retried damped when it takes no step (solve_or_retry_damped); `callback`
-// (may be null) sees every iteration. A failed solve ends at an infinite cost.
-CalibrationStart minimize_from(ceres::CostFunction* cost, ceres::LossFunction* loss, const ParameterBox& box,
-                               const std::vector<double>& start, int max_iterations,
-                               ceres::IterationCallback* callback = nullptr);
+// Levenberg-Marquardt (Ceres, dense QR) on `cost` (within its bounds) from
+// `start`, retried damped when it stalls (solve_or_retry_damped); `loss` may
+// be null, not owned; `callback` (may be null) sees every iteration. A failed
+// solve ends at an infinite cost.
+CalibrationStart minimize_from(CalibrationCost* cost, ceres::LossFunction* loss, const std::vector<double>& start,
+                               int max_iterations, ceres::IterationCallback* callback = nullptr);
 
 struct SceneError {
   std::string name;

@@ -77,24 +77,29 @@ TEST(CalibrationFit, SceneErrorScoresTheEntrysField) {
   EXPECT_GT(e.rmse_initial_m, 1e-4);  // a shallower angle leaves a different pile
 }
 
-// A solve that ends where it started, without failing, is solved again with
-// a damped first step (calibration_fit.h: Ceres' nearly Gauss-Newton first
-// step, projected onto the bounds, can leave nothing); one that moves, or
-// fails, is not.
-TEST(CalibrationFit, ASolveThatTakesNoStepIsRetriedWithADampedFirstStep) {
+// A solve that stalls (every parameter ends within a tenth of its
+// derivative step of the start) without failing is solved again with a
+// damped first step (calibration_fit.h: Ceres' nearly Gauss-Newton first
+// step, projected onto the bounds, can leave nothing), and the better of the
+// two is kept; one that moves, or fails, is not retried.
+TEST(CalibrationFit, AStalledSolveIsRetriedWithADampedFirstStep) {
+  const std::vector<double> steps{0.1, 3.0};
   std::vector<double> radii;
-  const auto solve = [&radii](int iterations_at_first, double cost_at_first) {
-    return [&radii, iterations_at_first, cost_at_first](double radius) {
+  // the first solve ends at `first_end` with cost `first_cost`; the damped one moves to (0.5, 10) at cost `damped_cost`
+  const auto solve = [&radii](std::vector<double> first_end, double first_cost, double damped_cost) {
+    return [&radii, first_end, first_cost, damped_cost](double radius) {
       radii.push_back(radius);
-      CalibrationStart s;
       const bool first = radius == kFirstTrustRegionRadius;
-      s.iterations = first ? iterations_at_first : 3;
-      s.final_cost = first ? cost_at_first : 0.5;
+      CalibrationStart s;
+      s.initial_free = {1.0, 20.0};
+      s.final_free = first ? first_end : std::vector<double>{0.5, 10.0};
+      s.iterations = first ? 1 : 3;
+      s.final_cost = first ? first_cost : damped_cost;
       s.termination = first ? "CONVERGENCE: Parameter tolerance reached." : "CONVERGENCE: Function tolerance reached.";
       return s;
     };
   };
-  const CalibrationStart retried = solve_or_retry_damped(solve(0, 2.0));
+  const CalibrationStart retried = solve_or_retry_damped(solve({0.995, 20.2}, 2.0, 0.5), steps);
   EXPECT_EQ(radii, (std::vector<double>{kFirstTrustRegionRadius, kDampedTrustRegionRadius}));
   EXPECT_LT(kDampedTrustRegionRadius, kFirstTrustRegionRadius);
   EXPECT_EQ(retried.iterations, 3);
@@ -102,11 +107,16 @@ TEST(CalibrationFit, ASolveThatTakesNoStepIsRetriedWithADampedFirstStep) {
   EXPECT_NE(retried.termination.find("retried with a damped first step"), std::string::npos) << retried.termination;
   EXPECT_NE(retried.termination.find("Parameter tolerance"), std::string::npos) << retried.termination;
   radii.clear();
-  EXPECT_EQ(solve_or_retry_damped(solve(2, 2.0)).iterations, 2);  // it moved
-  EXPECT_EQ(radii.size(), 1u);
+  const CalibrationStart kept = solve_or_retry_damped(solve({0.995, 20.2}, 2.0, 3.0), steps);  // the retry is worse
+  EXPECT_EQ(radii.size(), 2u);
+  EXPECT_EQ(kept.final_cost, 2.0);
+  EXPECT_NE(kept.termination.find("did no better"), std::string::npos) << kept.termination;
   radii.clear();
-  EXPECT_EQ(solve_or_retry_damped(solve(0, std::numeric_limits<double>::infinity())).iterations, 0);  // it failed
-  EXPECT_EQ(radii.size(), 1u);
+  EXPECT_EQ(solve_or_retry_damped(solve({0.995, 20.4}, 2.0, 0.5), steps).final_cost, 2.0);  // moved 0.4 of a 3 step
+  EXPECT_EQ(solve_or_retry_damped(solve({0.98, 20.0}, 2.0, 0.5), steps).final_cost, 2.0);   // moved 0.02 of a 0.1 step
+  EXPECT_EQ(solve_or_retry_damped(solve({1.0, 20.0}, std::numeric_limits<double>::infinity(), 0.5), steps).iterations,
+            1);  // failed
+  EXPECT_EQ(radii.size(), 3u);
 }
 
 }  // namespace
