@@ -178,24 +178,6 @@ CalibrationStart solve_from(const PaperFitSpec& spec, CalibrationCost* cost, con
   return minimize_from(cost, nullptr, u, spec.max_iterations);
 }
 
-// The uncertainty at x, on a problem of its own (ceres::Covariance needs one).
-CalibrationUncertainty uncertainty_at(const PaperFitSpec& spec, CalibrationCost* cost, std::vector<double> x,
-                                      double final_cost) {
-  ceres::Problem::Options problem_options;
-  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem problem(problem_options);
-  std::vector<double*> blocks;
-  std::vector<double> ranges;
-  std::vector<std::string> labels;
-  for (double& v : x) blocks.push_back(&v);
-  problem.AddResidualBlock(cost, nullptr, blocks);
-  for (const PaperFitParameter& p : spec.parameters) {
-    ranges.push_back(1.0);  // u is already scaled by the bounds
-    labels.push_back(p.name);
-  }
-  return estimate_uncertainty(problem, blocks, ranges, labels, final_cost, 1e-3);
-}
-
 struct Fitted {
   std::vector<CalibrationStart> starts;
   std::size_t best = 0;
@@ -232,7 +214,10 @@ Fitted fit(const PaperFitSpec& spec, const PaperFit& sheet) {
   }
   for (std::size_t s = 1; s < f.starts.size(); ++s) f.best = f.starts[s].final_cost < f.starts[f.best].final_cost ? s : f.best;
   f.x = from_unit(spec, f.starts[f.best].final_free);
-  f.uncertainty = uncertainty_at(spec, &cost, f.starts[f.best].final_free, f.starts[f.best].final_cost);
+  std::vector<std::string> labels;
+  for (const PaperFitParameter& p : spec.parameters) labels.push_back(p.name);
+  // no loss; u's bounds are [0, 1], so the ranges are 1 (u is already scaled by the bounds)
+  f.uncertainty = uncertainty_at(&cost, nullptr, f.starts[f.best].final_free, labels, f.starts[f.best].final_cost, 1e-3);
   for (std::size_t k = 0; k < n; ++k) f.uncertainty.standard_error[k] *= spec.parameters[k].upper - spec.parameters[k].lower;
   return f;
 }

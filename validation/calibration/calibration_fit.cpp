@@ -46,9 +46,8 @@ ceres::LossFunction* make_loss(const CalibrationSolverSpec& solver) {
   return nullptr;
 }
 
-// A problem over one block per free parameter, bounded; the cost is owned by the caller.
+// A problem over one block per free parameter, bounded; the cost and the loss are owned by the caller.
 struct BoundedProblem {
-  std::unique_ptr<ceres::LossFunction> loss;  // the problem's, when it owns one (outlives the problem)
   std::unique_ptr<ceres::Problem> problem;
   std::vector<double> x;  // the blocks' storage
   std::vector<double*> blocks;
@@ -68,13 +67,6 @@ BoundedProblem make_problem(CalibrationCost* cost, ceres::LossFunction* loss, co
     b.problem->SetParameterLowerBound(b.blocks[k], 0, cost->lower()[k]);
     b.problem->SetParameterUpperBound(b.blocks[k], 0, cost->upper()[k]);
   }
-  return b;
-}
-
-BoundedProblem make_problem(const CalibrationProblem& calibration, CalibrationCost* cost, const std::vector<double>& start) {
-  std::unique_ptr<ceres::LossFunction> loss(make_loss(calibration.spec().solver));
-  BoundedProblem b = make_problem(cost, loss.get(), start);
-  b.loss = std::move(loss);
   return b;
 }
 
@@ -150,6 +142,15 @@ CalibrationStart minimize_from(CalibrationCost* cost, ceres::LossFunction* loss,
   return solve_or_retry_damped(solve, cost->steps());
 }
 
+CalibrationUncertainty uncertainty_at(CalibrationCost* cost, ceres::LossFunction* loss, const std::vector<double>& at,
+                                      const std::vector<std::string>& labels, double final_cost,
+                                      double min_reciprocal_condition) {
+  BoundedProblem b = make_problem(cost, loss, at);
+  std::vector<double> ranges;
+  for (std::size_t k = 0; k < at.size(); ++k) ranges.push_back(cost->upper()[k] - cost->lower()[k]);
+  return estimate_uncertainty(*b.problem, b.blocks, ranges, labels, final_cost, min_reciprocal_condition);
+}
+
 namespace {
 
 CalibrationStart solve_from(const CalibrationProblem& calibration, CalibrationCost* cost, const std::vector<double>& start,
@@ -179,15 +180,11 @@ CalibrationFit fit_calibration(const CalibrationProblem& problem, const Progress
   fit.values = problem.with_free(best.final_free);
 
   report(progress, 1.0, "covariance at the optimum");
-  BoundedProblem b = make_problem(problem, &cost, best.final_free);
-  std::vector<double> ranges;
   std::vector<std::string> labels;
-  for (const std::size_t p : problem.free()) {
-    ranges.push_back(problem.spec().parameters[p].upper - problem.spec().parameters[p].lower);
-    labels.push_back(problem.spec().parameters[p].label());
-  }
-  fit.uncertainty = estimate_uncertainty(*b.problem, b.blocks, ranges, labels, best.final_cost,
-                                         problem.spec().solver.min_reciprocal_condition);
+  for (const std::size_t p : problem.free()) labels.push_back(problem.spec().parameters[p].label());
+  const std::unique_ptr<ceres::LossFunction> loss(make_loss(problem.spec().solver));
+  fit.uncertainty = uncertainty_at(&cost, loss.get(), best.final_free, labels, best.final_cost,
+                                   problem.spec().solver.min_reciprocal_condition);
 
   for (const PreparedScene& scene : problem.scenes()) {
     fit.scenes.push_back(scene_error(problem, scene, fit.initial_values, fit.values));

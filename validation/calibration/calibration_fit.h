@@ -65,6 +65,14 @@ CalibrationStart solve_or_retry_damped(const std::function<CalibrationStart(doub
 CalibrationStart minimize_from(CalibrationCost* cost, ceres::LossFunction* loss, const std::vector<double>& start,
                                int max_iterations, ceres::IterationCallback* callback = nullptr);
 
+// The uncertainty (calibration_uncertainty.h) of `cost`'s parameters at
+// `at`, where the fit ended at `final_cost`, each parameter's range taken
+// from the cost's bounds; `loss` as in minimize_from; labels name the
+// parameters in the note.
+CalibrationUncertainty uncertainty_at(CalibrationCost* cost, ceres::LossFunction* loss, const std::vector<double>& at,
+                                      const std::vector<std::string>& labels, double final_cost,
+                                      double min_reciprocal_condition);
+
 struct SceneError {
   std::string name;
   bool fit = true;                   // false: held out

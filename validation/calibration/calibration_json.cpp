@@ -36,12 +36,13 @@ json ladder_json(const Ladder& ladder) {
   for (const LadderRung& r : ladder.rungs) {
     rungs.push_back({{"label", r.label}, {"kind", r.kind}, {"resolution_m", r.resolution_m},
                      {"wall_time_s", r.wall_time_s}, {"cpu_time_s", optional_number(r.cpu_time_s)},
-                     {"rmse_m", r.rmse_m}});
+                     {"liggghts_cpu_over_this", optional_number(r.liggghts_cpu_over_this)}, {"rmse_m", r.rmse_m}});
   }
   return {{"scene", ladder.scene},
           {"yardstick", ladder.yardstick},
           {"noise_floor_m", optional_number(ladder.noise_floor_m)},
           {"rungs", rungs},
+          {"own_rung", ladder.own_rung},
           {"liggghts_over_ground_wall_time", optional_number(ladder.liggghts_over_ground_time)},
           {"liggghts_over_ground_cpu_time", optional_number(ladder.liggghts_over_ground_cpu_time)}};
 }

@@ -215,7 +215,7 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
     Scene scene = s.scene;
     scene.ground.grid = regridded(s.scene.ground.grid, h, problem.spec().source_path);
     scene = with_initial(std::move(scene), onto(s.initial, scene.ground.grid));
-    ladder.rungs.push_back(solver_rung(problem, s, scene, values, yard, {solver + " " + millimetres(h), solver, h, 0.0, std::nullopt, 0.0}));
+    ladder.rungs.push_back(solver_rung(problem, s, scene, values, yard, {solver + " " + millimetres(h), solver, h, 0.0, std::nullopt, 0.0, std::nullopt}));
     if (std::abs(h - own_h) <= 1e-9 * own_h) own = ladder.rungs.back();
   }
   if (spec.multires) {
@@ -223,16 +223,23 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
     const std::string label =
         fmt::format("{} multires {} / {}", solver, millimetres(own_h), millimetres(own_h * spec.multires_coarse_factor));
     ladder.rungs.push_back(solver_rung(problem, s, multires_scene(s.scene, spec.multires_coarse_factor), values, yard,
-                                       {label, solver + "-multires", own_h, 0.0, std::nullopt, 0.0}));
+                                       {label, solver + "-multires", own_h, 0.0, std::nullopt, 0.0, std::nullopt}));
   }
   for (ReferenceRun& run : runs) {
     run.rung.rmse_m = reference_rung_rmse_m(run, s, yard);
     ladder.rungs.push_back(run.rung);
   }
-  if (!runs.empty() && runs.front().rung.kind == "liggghts" && own && own->wall_time_s > 0.0 && *own->cpu_time_s > 0.0) {
+  if (own) ladder.own_rung = own->label;
+  if (!runs.empty() && runs.front().rung.kind == "liggghts") {
     // LIGGGHTS' finest grains: the reference's own resolution
-    ladder.liggghts_over_ground_time = runs.front().rung.wall_time_s / own->wall_time_s;
-    if (runs.front().rung.cpu_time_s) ladder.liggghts_over_ground_cpu_time = *runs.front().rung.cpu_time_s / *own->cpu_time_s;
+    const LadderRung& liggghts = runs.front().rung;
+    for (LadderRung& r : ladder.rungs) {
+      if (liggghts.cpu_time_s && r.cpu_time_s && *r.cpu_time_s > 0.0) r.liggghts_cpu_over_this = *liggghts.cpu_time_s / *r.cpu_time_s;
+    }
+    if (own && own->wall_time_s > 0.0 && *own->cpu_time_s > 0.0) {
+      ladder.liggghts_over_ground_time = liggghts.wall_time_s / own->wall_time_s;
+      if (liggghts.cpu_time_s) ladder.liggghts_over_ground_cpu_time = *liggghts.cpu_time_s / *own->cpu_time_s;
+    }
   }
   report(progress, 1.0, "ladder measured");
   return ladder;

@@ -29,6 +29,9 @@ struct LadderRung {
   double wall_time_s = 0.0;
   std::optional<double> cpu_time_s;  // a particle engine's run; a heuristic's calling thread
   double rmse_m = 0.0;      // RMSE of Δh against the yardstick's (rmse region of the scene)
+  // The finest LIGGGHTS run's CPU time over this rung's: how much faster this
+  // rung is than the reference (none without a LIGGGHTS rung or a CPU time).
+  std::optional<double> liggghts_cpu_over_this;
 };
 
 struct Ladder {
@@ -36,7 +39,8 @@ struct Ladder {
   std::string yardstick;    // label of the yardstick
   std::optional<double> noise_floor_m;  // the yardstick's seed-to-seed noise (2 or more seeds)
   std::vector<LadderRung> rungs;
-  // The finest LIGGGHTS run's wall time over the ground model's at the scene's own cell size.
+  std::string own_rung;  // label of the calibrated solver's rung at the scene's own cell size
+  // The finest LIGGGHTS run's wall time over the calibrated solver's at the scene's own cell size (own_rung).
   std::optional<double> liggghts_over_ground_time;
   std::optional<double> liggghts_over_ground_cpu_time;  // their CPU times, the same way
 };

@@ -120,6 +120,29 @@ TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
   EXPECT_EQ(liggghts, 2);
 }
 
+// Every rung with a CPU time carries how much faster than the finest
+// LIGGGHTS run it is (that run's CPU time over its own), the LIGGGHTS runs
+// too; the ratio at the scene's own cell size names its rung.
+TEST(CalibrationLadder, EachRungCarriesItsSpeedRatioToLiggghts) {
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
+  write_run(root / "seed1", 0.004);
+  write_run(root / "seed2", 0.006);
+  write_run(root / "other", 0.005);
+  const Ladder ladder = ladder_over(root, {"seed1", "other"});
+  EXPECT_EQ(ladder.own_rung, "ground 4 mm");
+  for (const LadderRung& r : ladder.rungs) {
+    SCOPED_TRACE(r.label);
+    ASSERT_TRUE(r.cpu_time_s.has_value());
+    ASSERT_TRUE(r.liggghts_cpu_over_this.has_value());
+    EXPECT_DOUBLE_EQ(*r.liggghts_cpu_over_this, 8.0 / *r.cpu_time_s);  // both LIGGGHTS runs record 8 CPU s
+    if (r.label == ladder.own_rung) {
+      ASSERT_TRUE(ladder.liggghts_over_ground_cpu_time.has_value());
+      EXPECT_DOUBLE_EQ(*ladder.liggghts_over_ground_cpu_time, *r.liggghts_cpu_over_this);
+    }
+  }
+}
+
 // Another engine's canonical run is a rung of its own, named after the
 // engine its manifest names, scored against the LIGGGHTS reference; the
 // speed ratio stays LIGGGHTS' (none here: no LIGGGHTS rung).
@@ -137,6 +160,7 @@ TEST(CalibrationLadder, AnotherEnginesRunIsARungScoredAgainstTheReference) {
   // 7 mm deep against the seeds' mean of 5 mm, on 16 of 256 cells
   EXPECT_NEAR(bullet.rmse_m, 0.002 * 0.25, 1e-12);
   EXPECT_FALSE(ladder.liggghts_over_ground_time.has_value());
+  EXPECT_FALSE(bullet.liggghts_cpu_over_this.has_value());
 }
 
 }  // namespace
