@@ -31,12 +31,24 @@ json noise_json(const std::optional<NoiseFloor>& n) {
   return {{"seeds", n->seeds}, {"rmse_m", n->rmse_m}, {"r2", n->r2}, {"pair_rmse_m", n->pair_rmse_m}};
 }
 
+json series_json(const std::vector<SeriesComparison>& series) {
+  json out = json::array();
+  for (const SeriesComparison& c : series) {
+    out.push_back({{"name", c.series}, {"unit", c.unit}, {"times_s", c.times_s}, {"seeds", c.seeds},
+                   {"reference", c.reference}, {"initial", c.initial}, {"fitted", c.fitted},
+                   {"fitted_relative_error", c.fitted_relative_error()}, {"fitted_per_bed", c.fitted_per_bed},
+                   {"paired_standard_error", c.paired_standard_error()}});
+  }
+  return out;
+}
+
 json ladder_json(const Ladder& ladder) {
   json rungs = json::array();
   for (const LadderRung& r : ladder.rungs) {
     rungs.push_back({{"label", r.label}, {"kind", r.kind}, {"resolution_m", r.resolution_m},
                      {"wall_time_s", r.wall_time_s}, {"cpu_time_s", optional_number(r.cpu_time_s)},
-                     {"liggghts_cpu_over_this", optional_number(r.liggghts_cpu_over_this)}, {"rmse_m", r.rmse_m}});
+                     {"liggghts_cpu_over_this", optional_number(r.liggghts_cpu_over_this)}, {"rmse_m", r.rmse_m},
+                     {"series", series_json(r.series)}});
   }
   return {{"scene", ladder.scene},
           {"yardstick", ladder.yardstick},
@@ -88,16 +100,6 @@ json folders_json(const ReferenceSpec& r) {
   return folders;
 }
 
-json series_json(const std::vector<SeriesComparison>& series) {
-  json out = json::array();
-  for (const SeriesComparison& c : series) {
-    out.push_back({{"name", c.series}, {"unit", c.unit}, {"times_s", c.times_s}, {"seeds", c.seeds},
-                   {"reference", c.reference}, {"initial", c.initial}, {"fitted", c.fitted},
-                   {"fitted_relative_error", c.fitted_relative_error()}, {"fitted_per_bed", c.fitted_per_bed},
-                   {"paired_standard_error", c.paired_standard_error()}});
-  }
-  return out;
-}
 
 // Per fold: the left-out scene, the fold's parameter values in their units,
 // its scores there, and what it predicts for every scene it did not fit (the

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -53,7 +55,35 @@ struct ReferenceRun {
   LadderRung rung;
   std::string directory;
   HeightField initial_height, final_height;
+  SeriesByName series;
 };
+
+// The scene's series observables on one rung (LadderRung::series): the
+// rung's values (`series`; initial and final only for observe()) beside
+// the seeds' mean, leaving out `own_seed` (a rung that is that seed's run).
+std::vector<SeriesComparison> rung_series(const PreparedScene& s, const HeightField& initial,
+                                          const HeightField& final_height, const SeriesByName& series,
+                                          std::optional<std::size_t> own_seed) {
+  std::vector<SeriesComparison> out;
+  for (const ObservableSpec& o : s.entry.observables) {
+    if (o.kind != ObservableSpec::Kind::kSeries || series.count(o.series) == 0) continue;
+    SeriesComparison c;
+    c.series = o.series;
+    c.unit = series.at(o.series).unit;
+    c.times_s = o.times_s;
+    for (std::size_t seed = 0; seed < s.seed_series.size(); ++seed) {
+      if (seed != own_seed) c.seeds.push_back(seed_observation(o, s, seed));
+    }
+    if (c.seeds.empty()) continue;
+    c.reference.assign(c.times_s.size(), 0.0);
+    for (const std::vector<double>& v : c.seeds) {
+      for (std::size_t k = 0; k < v.size(); ++k) c.reference[k] += v[k] / static_cast<double>(c.seeds.size());
+    }
+    c.fitted = observe(o, initial, final_height, series);
+    out.push_back(std::move(c));
+  }
+  return out;
+}
 
 std::string engine_label(const std::string& engine) {
   if (engine == "liggghts") return "LIGGGHTS";
@@ -73,6 +103,7 @@ ReferenceRun load_reference_rung(const LadderReference& ref, const SectionTypes&
   const std::string what = "a ladder run of " + ref.scene_path;
   run.initial_height = read_height_field((fs::path(ref.directory) / "height_initial.npy").string(), grid, what);
   run.final_height = read_height_field((fs::path(ref.directory) / "height_final.npy").string(), grid, what);
+  run.series = read_reference_series(ref.directory);
   run.rung.kind = read_run_engine(ref.directory);
   run.rung.resolution_m = 2.0 * dem_of(scene)->grain_radius_m;
   run.rung.label = engine_label(run.rung.kind) + " d = " + millimetres(run.rung.resolution_m);
@@ -83,25 +114,30 @@ ReferenceRun load_reference_rung(const LadderReference& ref, const SectionTypes&
   return run;
 }
 
-// A particle engine's rung error. A run that is one of the reference's own seeds is
-// compared with the mean of the other seeds (comparing it with a mean that
-// holds it would flatter it): its error is then the reference's noise.
-double reference_rung_rmse_m(ReferenceRun& run, const PreparedScene& s, const Yardstick& yard) {
+// A particle engine's rung: its ground error and series. A run that is one
+// of the reference's own seeds is compared with the mean of the other seeds
+// (comparing it with a mean that holds it would flatter it): its error is
+// then the reference's noise.
+void score_reference_rung(ReferenceRun& run, const PreparedScene& s, const Yardstick& yard) {
   const auto& seeds = s.entry.reference.directories;
   const auto own = std::find_if(seeds.begin(), seeds.end(),
                                 [&](const std::string& d) { return fs::equivalent(d, run.directory); });
   if (own == seeds.end() || seeds.size() < 2) {
-    return change_rmse_m(run.initial_height, run.final_height, yard, s.entry.rmse_region);
+    run.rung.rmse_m = change_rmse_m(run.initial_height, run.final_height, yard, s.entry.rmse_region);
+    run.rung.series = rung_series(s, run.initial_height, run.final_height, run.series, std::nullopt);
+    return;
   }
+  const std::size_t own_seed = static_cast<std::size_t>(own - seeds.begin());
   std::vector<HeightField> initial, final_height;
   for (std::size_t k = 0; k < seeds.size(); ++k) {
-    if (k == static_cast<std::size_t>(own - seeds.begin())) continue;
+    if (k == own_seed) continue;
     initial.push_back(s.seed_initial[k]);
     final_height.push_back(s.seed_final[k]);
   }
   run.rung.label += " (one seed, against the others' mean)";
   const Yardstick others{"", mean_field(initial), mean_field(final_height)};
-  return change_rmse_m(run.initial_height, run.final_height, others, s.entry.rmse_region);
+  run.rung.rmse_m = change_rmse_m(run.initial_height, run.final_height, others, s.entry.rmse_region);
+  run.rung.series = rung_series(s, run.initial_height, run.final_height, run.series, own_seed);
 }
 
 // The scene on a grid of cell size h over the same extent.
@@ -128,7 +164,7 @@ struct RunTimes {
 // thread CPU time (the heuristics run on the calling thread; on a shared
 // machine the CPU time is the steadier), and the result.
 RunTimes timed_run(const CalibrationProblem& problem, const PreparedScene& prepared, const Scene& scene,
-                   const std::vector<double>& values, int repeats, HeightField* result) {
+                   const std::vector<double>& values, int repeats, Run* result) {
   const auto solver = problem.solver().compile(scene);
   std::vector<double> solver_values = solver->default_values();
   const std::vector<double> prepared_values = problem.solver_values(prepared, values);
@@ -141,7 +177,7 @@ RunTimes timed_run(const CalibrationProblem& problem, const PreparedScene& prepa
     Run run = solver->run(solver_values, RunOptions{});
     best.wall_s = std::min(best.wall_s, watch.wall_s());
     best.cpu_s = std::min(best.cpu_s, watch.cpu_s());
-    *result = run.field("height_final");
+    *result = std::move(run);
   }
   return best;
 }
@@ -156,12 +192,23 @@ Scene with_initial(Scene scene, const HeightField& initial) {
 LadderRung solver_rung(const CalibrationProblem& problem, const PreparedScene& s, const Scene& scene,
                        const std::vector<double>& values, const Yardstick& yard, LadderRung rung) {
   const LadderSpec& spec = *problem.spec().ladder;
-  HeightField result;
-  const RunTimes times = timed_run(problem, s, scene, values, spec.timing_repeats, &result);
+  Run run;
+  const RunTimes times = timed_run(problem, s, scene, values, spec.timing_repeats, &run);
   rung.wall_time_s = times.wall_s;
   rung.cpu_time_s = times.cpu_s;
-  rung.rmse_m = change_rmse_m(scene.ground.initial.given ? *scene.ground.initial.given : yard.initial, result, yard,
-                              s.entry.rmse_region);
+  const HeightField& initial = scene.ground.initial.given ? *scene.ground.initial.given : yard.initial;
+  const HeightField& final_height = run.field("height_final");
+  rung.rmse_m = change_rmse_m(initial, final_height, yard, s.entry.rmse_region);
+  rung.series = rung_series(s, initial, final_height, run.series, std::nullopt);
+  return rung;
+}
+
+// A rung before it is run: what it is.
+LadderRung unmeasured_rung(std::string label, std::string kind, double resolution_m) {
+  LadderRung rung;
+  rung.label = std::move(label);
+  rung.kind = std::move(kind);
+  rung.resolution_m = resolution_m;
   return rung;
 }
 
@@ -215,7 +262,7 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
     Scene scene = s.scene;
     scene.ground.grid = regridded(s.scene.ground.grid, h, problem.spec().source_path);
     scene = with_initial(std::move(scene), onto(s.initial, scene.ground.grid));
-    ladder.rungs.push_back(solver_rung(problem, s, scene, values, yard, {solver + " " + millimetres(h), solver, h, 0.0, std::nullopt, 0.0, std::nullopt}));
+    ladder.rungs.push_back(solver_rung(problem, s, scene, values, yard, unmeasured_rung(solver + " " + millimetres(h), solver, h)));
     if (std::abs(h - own_h) <= 1e-9 * own_h) own = ladder.rungs.back();
   }
   if (spec.multires) {
@@ -223,10 +270,10 @@ Ladder measure_ladder(const CalibrationProblem& problem, const std::vector<doubl
     const std::string label =
         fmt::format("{} multires {} / {}", solver, millimetres(own_h), millimetres(own_h * spec.multires_coarse_factor));
     ladder.rungs.push_back(solver_rung(problem, s, multires_scene(s.scene, spec.multires_coarse_factor), values, yard,
-                                       {label, solver + "-multires", own_h, 0.0, std::nullopt, 0.0, std::nullopt}));
+                                       unmeasured_rung(label, solver + "-multires", own_h)));
   }
   for (ReferenceRun& run : runs) {
-    run.rung.rmse_m = reference_rung_rmse_m(run, s, yard);
+    score_reference_rung(run, s, yard);
     ladder.rungs.push_back(run.rung);
   }
   if (own) ladder.own_rung = own->label;

@@ -11,6 +11,9 @@
 //     object on the coarse grid, coarse_factor as listed);
 //   - each LIGGGHTS run of the ladder, its cost from its manifest; a run that
 //     is one of the reference's seeds is compared with the other seeds' mean.
+// Each rung also carries its series (the held mass at the scene's series
+// times) beside the reference's: a rung can match the ground and still
+// hold the wrong mass.
 // The heuristic's time is the fastest of timing_repeats runs.
 
 #include <optional>
@@ -19,6 +22,7 @@
 
 #include "models/core/base/progress.h"
 #include "validation/calibration/calibration_problem.h"
+#include "validation/calibration/series_comparison.h"
 
 namespace repose {
 
@@ -32,6 +36,11 @@ struct LadderRung {
   // The finest LIGGGHTS run's CPU time over this rung's: how much faster this
   // rung is than the reference (none without a LIGGGHTS rung or a CPU time).
   std::optional<double> liggghts_cpu_over_this;
+  // The scene's series observables (the mass a bucket holds) on this rung:
+  // `fitted` holds the rung's values, `seeds` and `reference` the seeds' and
+  // their mean (the other seeds' for a run that is one of them); none where
+  // the rung's run has no such series.
+  std::vector<SeriesComparison> series;
 };
 
 struct Ladder {

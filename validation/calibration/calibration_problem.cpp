@@ -79,17 +79,6 @@ std::vector<double> named_values(const CompiledSolver& solver, const std::string
   return values;
 }
 
-// A reference run's time series: its held_mass.csv (held_mass_series.h) as
-// mass_held_kg.<object>, when it has one.
-SeriesByName read_reference_series(const std::string& dir) {
-  SeriesByName out;
-  const fs::path path = fs::path(dir) / "held_mass.csv";
-  if (!fs::exists(path)) return out;
-  for (auto& [object, track] : read_held_mass_csv(path.string())) {
-    out["mass_held_kg." + object] = TimeSeries{"kg", std::move(track.time_s), std::move(track.mass_kg)};
-  }
-  return out;
-}
 
 // The element-wise mean of an observable's values on each seed or bed (lists of one length).
 std::vector<double> mean_values(const std::vector<std::vector<double>>& lists) {
@@ -188,6 +177,16 @@ void parallel_for(std::size_t count, int threads, const std::function<void(std::
 bool observed_per_seed(const ObservableSpec& o) {
   using K = ObservableSpec::Kind;
   return o.kind == K::kSeries || o.kind == K::kMeasure || o.kind == K::kHeapFlank;
+}
+
+SeriesByName read_reference_series(const std::string& dir) {
+  SeriesByName out;
+  const fs::path path = fs::path(dir) / "held_mass.csv";
+  if (!fs::exists(path)) return out;
+  for (auto& [object, track] : read_held_mass_csv(path.string())) {
+    out["mass_held_kg." + object] = TimeSeries{"kg", std::move(track.time_s), std::move(track.mass_kg)};
+  }
+  return out;
 }
 
 std::vector<double> seed_observation(const ObservableSpec& o, const PreparedScene& s, std::size_t seed) {

@@ -64,6 +64,10 @@ HeightField read_height_field(const std::string& path, const Grid& grid, const s
 // A run's measures by name (their values in SI units).
 MeasureByName measure_values(const Run& run);
 
+// A reference run folder's time series: its held_mass.csv (held_mass_series.h)
+// as mass_held_kg.<object>, when it has one.
+SeriesByName read_reference_series(const std::string& dir);
+
 // Is the observable's reference the mean over seeds of each seed's value
 // (series, measure, heap_flank) rather than the value of the seeds' mean surfaces?
 bool observed_per_seed(const ObservableSpec& o);

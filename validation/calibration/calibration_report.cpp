@@ -130,14 +130,17 @@ std::string ratio(double a, double b) { return b > 0.0 ? fmt::format("{:.2f}", a
 // The speed/accuracy ladder: each rung's time and error beside the yardstick's noise floor.
 void write_ladder_table(std::ostream& out, const Ladder& l) {
   out << fmt::format("\n## Speed/accuracy ladder ({}; yardstick: {}; its noise floor {})\n\n"
-                     "| rung | wall time (s) | LIGGGHTS CPU time / this | RMSE of Δh (mm) | RMSE / noise floor |\n"
-                     "|---|---|---|---|---|\n",
+                     "Series: the rung's relative error against the seeds' mean at each of the series' times.\n\n"
+                     "| rung | wall time (s) | LIGGGHTS CPU time / this | RMSE of Δh (mm) | RMSE / noise floor | series |\n"
+                     "|---|---|---|---|---|---|\n",
                      l.scene, l.yardstick, l.noise_floor_m ? mm(*l.noise_floor_m) + " mm" : "unknown (one seed)");
   for (const LadderRung& r : l.rungs) {
-    out << fmt::format("| {} | {:.4g}{} | {} | {} | {} |\n", r.label, r.wall_time_s,
+    std::string series;
+    for (const SeriesComparison& c : r.series) series += (series.empty() ? "" : "; ") + c.series + ": " + relative_errors(c);
+    out << fmt::format("| {} | {:.4g}{} | {} | {} | {} | {} |\n", r.label, r.wall_time_s,
                        r.cpu_time_s ? fmt::format(" (CPU {:.4g})", *r.cpu_time_s) : "",
                        r.liggghts_cpu_over_this ? fmt::format("{:.3g}", *r.liggghts_cpu_over_this) : "-", mm(r.rmse_m),
-                       l.noise_floor_m ? ratio(r.rmse_m, *l.noise_floor_m) : "-");
+                       l.noise_floor_m ? ratio(r.rmse_m, *l.noise_floor_m) : "-", series.empty() ? "-" : series);
   }
   if (l.liggghts_over_ground_time) {
     out << fmt::format("\nLIGGGHTS (its finest grains) / {} (the scene's own cell size): {:.3g} by wall time, {:.3g} by "

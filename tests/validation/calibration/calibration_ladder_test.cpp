@@ -52,6 +52,43 @@ TEST(CalibrationLadder, OwnResolutionAtTheReferenceParametersHasNoError) {
   EXPECT_FALSE(ladder.liggghts_over_ground_time.has_value());  // no LIGGGHTS rung listed
 }
 
+// The held mass on each heuristic rung of a scoop whose reference is the
+// height-span model itself at 40 deg: at the scene's own cells and those
+// values the rung holds exactly the reference's mass at every time; on
+// cells twice as coarse it holds another (the ladder would show it).
+TEST(CalibrationLadder, EachRungCarriesItsSeriesBesideTheReferences) {
+  const CalibrationProblem problem(load_calibration_from_string(
+      "scenes:\n"
+      "  - scene: scenes/scoop.yaml\n"
+      "    reference: {heuristic: {heightspan.sand.repose_angle_deg: 40}}\n"
+      "    observables: [{kind: series, name: mass_held_kg.bucket, times_s: [0.6, 0.8]}, {kind: height_field}]\n"
+      "parameters:\n"
+      "  - {name: heightspan.sand.repose_angle_deg, initial: 40, bounds: [5, 60], step: 3}\n"
+      "ladder: {heuristic_cell_sizes_m: [0.01], multires: false, timing_repeats: 1}\n",
+      std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration/inline.yaml"), solver_registry());
+  const Ladder ladder = measure_ladder(problem, problem.initial_values());
+  ASSERT_EQ(ladder.rungs.size(), 2u);  // 10 mm, 5 mm (the scene's own)
+  for (const LadderRung& r : ladder.rungs) {
+    SCOPED_TRACE(r.label);
+    ASSERT_EQ(r.series.size(), 1u);
+    const SeriesComparison& c = r.series.front();
+    EXPECT_EQ(c.series, "mass_held_kg.bucket");
+    ASSERT_EQ(c.fitted.size(), 2u);
+    ASSERT_EQ(c.reference.size(), 2u);
+    EXPECT_GT(c.reference[1], 0.0);  // the bucket holds sand at 0.8 s
+    for (const double e : c.fitted_relative_error()) {
+      if (r.label == ladder.own_rung) {
+        EXPECT_EQ(e, 0.0);
+      } else {
+        EXPECT_TRUE(std::isfinite(e));
+      }
+    }
+    if (r.label != ladder.own_rung) {
+      EXPECT_NE(c.fitted, c.reference);
+    }
+  }
+}
+
 namespace fs = std::filesystem;
 
 // A LIGGGHTS run folder on the indentation grid (16 x 16): a flat bed with a
@@ -76,16 +113,16 @@ void write_bullet_run(const fs::path& dir, double depth_m) {
 // The ladder of a calibration whose reference is seeds seed1 and seed2 under
 // `root` (written by the caller) on the indentation scene with a dem section,
 // and whose ladder lists the run folders `rungs` under `root`.
-Ladder ladder_over(const fs::path& root, const std::vector<std::string>& rungs) {
+Ladder ladder_over(const fs::path& root, const std::vector<std::string>& rungs, const std::string& observables = "{kind: height_field}") {
   const std::string source = std::string(REPOSE_SOURCE_DIR) + "/tests/data/calibration/scenes/indent.yaml";
   std::ifstream in(source);
   std::ofstream(root / "indent_dem.yaml") << in.rdbuf() << "dem: {grain_radius_m: 0.002, time_step_s: 1.0e-5}\n";
   const std::string scene = (root / "indent_dem.yaml").string();
   std::string yaml = fmt::format(
-      "scenes:\n  - scene: {0}\n    reference: {{data: [{1}, {2}]}}\n    observables: [{{kind: height_field}}]\n"
+      "scenes:\n  - scene: {0}\n    reference: {{data: [{1}, {2}]}}\n    observables: [{3}]\n"
       "parameters:\n  - {{name: ground.sand.alpha, initial: 0.7}}\n"
       "ladder:\n  heuristic_cell_sizes_m: [0.008]\n  multires: false\n  timing_repeats: 1\n  references:\n",
-      scene, (root / "seed1").string(), (root / "seed2").string());
+      scene, (root / "seed1").string(), (root / "seed2").string(), observables);
   for (const std::string& rung : rungs) yaml += fmt::format("    - {{scene: {}, data: {}}}\n", scene, (root / rung).string());
   const CalibrationProblem problem(load_calibration_from_string(yaml, (root / "inline.yaml").string()), solver_registry());
   return measure_ladder(problem, problem.initial_values());
@@ -141,6 +178,49 @@ TEST(CalibrationLadder, EachRungCarriesItsSpeedRatioToLiggghts) {
       EXPECT_DOUBLE_EQ(*ladder.liggghts_over_ground_cpu_time, *r.liggghts_cpu_over_this);
     }
   }
+}
+
+// A bucket's held mass (held_mass.csv) at two times.
+void write_held_mass(const fs::path& dir, double at_1s_kg) {
+  std::ofstream(dir / "held_mass.csv") << fmt::format("time_s,bucket_mass_kg\n0,0\n1,{}\n2,{}\n", at_1s_kg, at_1s_kg);
+}
+
+// A particle run's held mass is a rung's series too: a seed's own run
+// against the other seeds' mean, another run against all seeds' mean; the
+// ground model's rungs, which hold nothing, carry none.
+TEST(CalibrationLadder, AReferenceRunsSeriesIsComparedLikeItsGround) {
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
+  write_run(root / "seed1", 0.004);
+  write_run(root / "seed2", 0.006);
+  write_run(root / "other", 0.005);
+  write_held_mass(root / "seed1", 0.10);
+  write_held_mass(root / "seed2", 0.20);
+  write_held_mass(root / "other", 0.12);
+  const Ladder ladder =
+      ladder_over(root, {"seed1", "other"}, "{kind: height_field}, {kind: series, name: mass_held_kg.bucket, times_s: [1.0]}");
+  int with_series = 0;
+  for (const LadderRung& r : ladder.rungs) {
+    SCOPED_TRACE(r.label);
+    if (r.kind != "liggghts") {
+      EXPECT_TRUE(r.series.empty());
+      continue;
+    }
+    ++with_series;
+    ASSERT_EQ(r.series.size(), 1u);
+    const SeriesComparison& c = r.series.front();
+    ASSERT_EQ(c.fitted.size(), 1u);
+    if (r.label.find("one seed") != std::string::npos) {
+      EXPECT_DOUBLE_EQ(c.fitted[0], 0.10);
+      EXPECT_DOUBLE_EQ(c.reference[0], 0.20);  // seed 2 alone
+      EXPECT_DOUBLE_EQ(c.fitted_relative_error()[0], -0.5);
+    } else {
+      EXPECT_DOUBLE_EQ(c.fitted[0], 0.12);
+      EXPECT_DOUBLE_EQ(c.reference[0], 0.15);  // both seeds' mean
+      EXPECT_NEAR(c.fitted_relative_error()[0], -0.2, 1e-12);
+    }
+  }
+  EXPECT_EQ(with_series, 2);
 }
 
 // Another engine's canonical run is a rung of its own, named after the
