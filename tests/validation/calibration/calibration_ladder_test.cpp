@@ -128,16 +128,22 @@ Ladder ladder_over(const fs::path& root, const std::vector<std::string>& rungs, 
   return measure_ladder(problem, problem.initial_values());
 }
 
-// A reference of two seeds: a LIGGGHTS rung that is one of them is compared
-// with the other (not with a mean that holds it), so its error is the seeds'
-// difference; another run is compared with their mean; the ladder carries
-// the reference's noise floor.
-TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
-  const test_support::TempDir temp;
-  const fs::path& root = temp.path;
+// Two seeds of the reference, 4 and 6 mm deep, and another LIGGGHTS run, 5 mm deep.
+void write_seeds_and_other(const fs::path& root) {
   write_run(root / "seed1", 0.004);
   write_run(root / "seed2", 0.006);
   write_run(root / "other", 0.005);
+}
+
+// A reference of two seeds: a LIGGGHTS rung that is one of them is compared
+// with the other (not with a mean that holds it), so its error is the seeds'
+// difference; another run is compared with their mean; the ladder carries
+// the reference's noise floor. Every rung carries how much faster than the
+// finest LIGGGHTS run it is (that run's CPU time over its own).
+TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
+  const test_support::TempDir temp;
+  const fs::path& root = temp.path;
+  write_seeds_and_other(root);
   const Ladder ladder = ladder_over(root, {"seed1", "other"});
   // Δh of the seeds differ by 2 mm on 16 of 256 cells; "other" differs from their mean by 0 mm
   const double seeds_apart = 0.002 * 0.25;
@@ -155,24 +161,13 @@ TEST(CalibrationLadder, ASeedsOwnRunIsComparedWithTheOtherSeeds) {
     EXPECT_EQ(r.cpu_time_s.value_or(0.0), 8.0);
   }
   EXPECT_EQ(liggghts, 2);
-}
-
-// Every rung with a CPU time carries how much faster than the finest
-// LIGGGHTS run it is (that run's CPU time over its own), the LIGGGHTS runs
-// too; the ratio at the scene's own cell size names its rung.
-TEST(CalibrationLadder, EachRungCarriesItsSpeedRatioToLiggghts) {
-  const test_support::TempDir temp;
-  const fs::path& root = temp.path;
-  write_run(root / "seed1", 0.004);
-  write_run(root / "seed2", 0.006);
-  write_run(root / "other", 0.005);
-  const Ladder ladder = ladder_over(root, {"seed1", "other"});
+  // every rung's speed against the finest LIGGGHTS run (both record 8 CPU s), named at the scene's own cells
   EXPECT_EQ(ladder.own_rung, "ground 4 mm");
   for (const LadderRung& r : ladder.rungs) {
     SCOPED_TRACE(r.label);
     ASSERT_TRUE(r.cpu_time_s.has_value());
     ASSERT_TRUE(r.liggghts_cpu_over_this.has_value());
-    EXPECT_DOUBLE_EQ(*r.liggghts_cpu_over_this, 8.0 / *r.cpu_time_s);  // both LIGGGHTS runs record 8 CPU s
+    EXPECT_DOUBLE_EQ(*r.liggghts_cpu_over_this, 8.0 / *r.cpu_time_s);
     if (r.label == ladder.own_rung) {
       ASSERT_TRUE(ladder.liggghts_over_ground_cpu_time.has_value());
       EXPECT_DOUBLE_EQ(*ladder.liggghts_over_ground_cpu_time, *r.liggghts_cpu_over_this);
@@ -191,9 +186,7 @@ void write_held_mass(const fs::path& dir, double at_1s_kg) {
 TEST(CalibrationLadder, AReferenceRunsSeriesIsComparedLikeItsGround) {
   const test_support::TempDir temp;
   const fs::path& root = temp.path;
-  write_run(root / "seed1", 0.004);
-  write_run(root / "seed2", 0.006);
-  write_run(root / "other", 0.005);
+  write_seeds_and_other(root);
   write_held_mass(root / "seed1", 0.10);
   write_held_mass(root / "seed2", 0.20);
   write_held_mass(root / "other", 0.12);
