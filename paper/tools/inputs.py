@@ -51,6 +51,9 @@ class MacroInput:
     scale: float = 1.0
 
 
+TABLE_SIZES = ("small", "footnotesize", "scriptsize")
+
+
 @dataclass(frozen=True)
 class ColumnInput:
     heading: str
@@ -58,6 +61,7 @@ class ColumnInput:
     format: str = "{}"
     scale: float = 1.0
     if_missing: str = ""       # printed when a row has no such key (empty: that is an error)
+    until: str = ""            # text values: only what comes before its first occurrence (the caption says the rest)
 
 
 @dataclass(frozen=True)
@@ -69,6 +73,7 @@ class TableInput:
     columns: tuple
     caption: str
     filter: tuple = ()         # (key, value): keep only rows whose key equals value
+    size: str = "small"        # the table's font size: small, footnotesize or scriptsize
 
 
 @dataclass(frozen=True)
@@ -163,18 +168,21 @@ def _macro(name, entry):
 
 def _table(name, entry):
     where = f"tables.{name}"
-    _allowed(entry, ("from", "file", "rows", "columns", "caption", "filter"), where)
+    _allowed(entry, ("from", "file", "rows", "columns", "caption", "filter", "size"), where)
     columns = []
     for c, col in enumerate(_require(entry, "columns", where)):
-        _allowed(col, ("heading", "key", "format", "scale", "if_missing"), f"{where}.columns[{c}]")
+        _allowed(col, ("heading", "key", "format", "scale", "if_missing", "until"), f"{where}.columns[{c}]")
         columns.append(ColumnInput(str(_require(col, "heading", f"{where}.columns[{c}]")),
                                    str(_require(col, "key", f"{where}.columns[{c}]")),
                                    str(col.get("format", "{}")), float(col.get("scale", 1.0)),
-                                   str(col.get("if_missing", ""))))
+                                   str(col.get("if_missing", "")), str(col.get("until", ""))))
+    size = str(entry.get("size", "small"))
+    if size not in TABLE_SIZES:
+        raise InputsError(f"{where}.size: '{size}' is not one of {', '.join(TABLE_SIZES)}")
     flt = entry.get("filter", {})
     return TableInput(name, str(_require(entry, "from", where)), str(_require(entry, "file", where)),
                       str(entry.get("rows", "")), tuple(columns), str(_require(entry, "caption", where)),
-                      tuple((str(k), str(v)) for k, v in flt.items()))
+                      tuple((str(k), str(v)) for k, v in flt.items()), size)
 
 
 def _figure(name, entry):

@@ -32,6 +32,8 @@ def cell(row, column, where):
         raise ValueMissing(f"{where}: a row has no '{column.key}'") from None
     if value is None or value == "":
         return "--"
+    if column.until and isinstance(value, str):
+        value = value.split(column.until, 1)[0]
     return latex_number(format_value(value, column.format, column.scale))
 
 
@@ -48,7 +50,7 @@ def tabular(table, rows, where):
 def write_table(folder_out, table, status):
     """Writes NAME.tex: a table float with the caption (prose) and the generated rows."""
     where = f"tables.{table.name}"
-    lines = [GENERATED_HEADER, "\\begin{table}[htbp]\n\\centering\\small\n",
+    lines = [GENERATED_HEADER, f"\\begin{{table}}[htbp]\n\\centering\\{table.size}\n",
              f"\\caption{{{table.caption}}}\\label{{tab:{table.name}}}\n"]
     if status is None or not status.usable:
         lines.append("\\fbox{" + not_yet_run(table.experiment) + "}\n")

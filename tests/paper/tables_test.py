@@ -25,6 +25,14 @@ tables:
       - {heading: scene, key: name}
       - {heading: "RMSE (mm)", key: rmse_m, scale: 1000, format: "{:.2f}"}
       - {heading: noise, key: noise_floor.rmse_m, if_missing: "--"}
+  narrow:
+    from: calibration
+    file: calibration.json
+    rows: scenes
+    caption: "Names cut."
+    size: footnotesize
+    columns:
+      - {heading: scene, key: name, until: " ("}
   times:
     from: table1
     file: table1.csv
@@ -60,6 +68,24 @@ class TablesTest(unittest.TestCase):
         self.assertNotIn("dem\\_drag", scores)
         self.assertIn("\\label{tab:scores}", scores)
         self.assertIn("\\notyetrun{table1}", self.read("times"))
+
+    def test_a_narrow_table_cuts_its_text_and_sets_its_size(self):
+        with open(os.path.join(self.folder, "calibration.json"), "w") as f:
+            json.dump({"scenes": [{"name": "seed run (against the others)", "role": "held_out"},
+                                  {"name": "other", "role": "fit", "rmse_m": 0.001}]}, f)
+        statuses = {"calibration": SimpleNamespace(usable=True, folder=self.folder),
+                    "table1": SimpleNamespace(usable=False, folder="")}
+        write_tables(os.path.join(self.folder, "out"), self.inputs, statuses)
+        narrow = self.read("narrow")
+        self.assertIn("\\centering\\footnotesize", narrow)
+        self.assertIn("seed run \\\\", narrow)
+        self.assertNotIn("against", narrow)
+        self.assertIn("other \\\\", narrow)
+        self.assertIn("\\centering\\small", self.read("scores"))  # the default
+
+    def test_an_unknown_size_is_refused(self):
+        with self.assertRaisesRegex(Exception, "tables.narrow.size: 'huge'"):
+            parse_inputs(INPUTS.replace("size: footnotesize", "size: huge"))
 
     def test_a_row_without_a_required_key_is_an_error(self):
         with open(os.path.join(self.folder, "table1.csv"), "w") as f:
