@@ -33,7 +33,7 @@ struct PairRule {
 std::vector<PairRule> pair_rules(const Grid& g, const GroundParams& params) {
   std::vector<PairRule> rules;
   for (const Material& m : params.materials) {
-    rules.push_back({g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, m.erosion_iterations});
+    rules.push_back({g.cell_size_m * std::tan(m.repose_angle_rad), m.sigma, m.erosion_passes(g.cell_size_m)});
   }
   return rules;
 }
@@ -126,7 +126,7 @@ InclinedRule inclined_rule(const Material& m, double slope_rad, double cell_m) {
   const double hi = slope_rad + theta < std::numbers::pi / 2 ? cell_m * std::tan(slope_rad + theta)
                                                              : std::numeric_limits<double>::infinity();
   return {cell_m * std::tan(slope_rad - theta), hi, cell_m * std::tan(theta) / std::cos(slope_rad), m.sigma,
-          m.erosion_iterations};
+          m.erosion_passes(cell_m)};
 }
 
 // The flux of the pair (a, b), b the neighbour at +x (along_x) or +y of a:
@@ -167,7 +167,7 @@ ErosionResult erode_inclined(const GroundModel& model, const GroundParams& param
   int passes = 0;
   for (const Material& m : params.materials) {
     rules.push_back(inclined_rule(m, model.options.bed_slope_rad, g.cell_size_m));
-    passes = std::max(passes, m.erosion_iterations);
+    passes = std::max(passes, m.erosion_passes(g.cell_size_m));
   }
   const double tolerance_m = kErosionToleranceFraction * g.cell_size_m;
   double* h = state->height.heights().data();

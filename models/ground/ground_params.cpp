@@ -22,6 +22,13 @@ void validate(const GroundParams& params, const GroundModel& model) {
     const Material& m = params.materials[k];
     try {
       validate(m);  // the one rule the scene loader applies too
+      if (m.erosion_passes(model.grid.cell_size_m) > kMaxErosionPasses) {
+        throw FieldError("erosion_iterations_cell_m",
+                         fmt::format("at most {} passes on the grid's {} m cells ({} x {} / {})", kMaxErosionPasses,
+                                     model.grid.cell_size_m, m.erosion_iterations, m.erosion_iterations_cell_m,
+                                     model.grid.cell_size_m),
+                         yaml_number(m.erosion_iterations_cell_m));
+      }
     } catch (const FieldError& e) {
       throw InputError(fmt::format("ground params: materials[{}] ({}): {}", k, m.name, e.what()));
     }

@@ -36,7 +36,8 @@ GroundParams default_params(const GroundModel& model);
 
 // Throws InputError naming the material and field when a value is out of
 // range: alpha in [0, 1], repose_angle_rad in (0, pi/2], sigma in (0,
-// kSigmaMax], erosion_iterations >= 1; and when the count does not match.
+// kSigmaMax], erosion_iterations >= 1, at most kMaxErosionPasses passes on
+// the model's cells (Material::erosion_passes); and when the count does not match.
 void validate(const GroundParams& params, const GroundModel& model);
 
 }  // namespace repose

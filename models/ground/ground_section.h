@@ -14,7 +14,7 @@
 //     collision: cpu               # cpu | osmesa
 //     bed_slope_deg: 0             # the bed inclined down +x (a bed-aligned chute; erosion.h)
 //     heap_laying: portions        # portions | one_pass: how displaced material heaps on open ground (excess_routing.h)
-//     materials:                   # optional: name -> {preset, alpha, repose_angle_deg, sigma, erosion_iterations}
+//     materials:                   # optional: name -> {preset, alpha, repose_angle_deg, sigma, erosion_iterations, erosion_iterations_cell_m}
 //       sand: {alpha: 0.9}         # a preset's name: its values, overridden
 //       clay: {preset: mud, sigma: 0.1}
 //       rock: {alpha: 0.1, repose_angle_deg: 80, sigma: 0.2}   # no preset: alpha, angle and sigma all given

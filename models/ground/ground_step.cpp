@@ -90,7 +90,7 @@ int add_hovering_undersides(const GroundModel& model, const GroundParams& params
                             const std::vector<Eigen::Vector3d>& motion, UndersideRenderer& renderer,
                             GroundState* state, Ceiling* ceiling) {
   int reach_cells = 0;  // beyond the grid's size it reaches nothing more (and cannot overflow)
-  for (const Material& m : params.materials) reach_cells = std::max(reach_cells, m.erosion_iterations);
+  for (const Material& m : params.materials) reach_cells = std::max(reach_cells, m.erosion_passes(model.grid.cell_size_m));
   reach_cells = std::min(reach_cells, std::max(model.grid.nx, model.grid.ny));
   int contact_cells = 0;
   std::size_t fine = 0;  // ceiling->undersides holds the fine objects in order

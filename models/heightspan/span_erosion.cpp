@@ -415,7 +415,7 @@ SpanErosionResult erode_spans(const HeightSpanModel& model, const GroundParams& 
   Exchange exchange(model.ground, map, ground, cols, &spans->erosion_scratch);
   std::vector<Flux>& fluxes = spans->erosion_scratch.fluxes;
   ChangedColumns changed(cols, &spans->erosion_scratch.changed);
-  for (int p = 0; p < m.erosion_iterations; ++p) {
+  for (int p = 0, passes = m.erosion_passes(g.cell_size_m); p < passes; ++p) {
     fluxes.clear();
     for (int j = j0 - 1; j <= j1 + 1; ++j) {
       if (p > 0 && !changed.row_near(j)) continue;

@@ -53,5 +53,29 @@ TEST(Material, ValidateNamesTheFieldOutsideItsInterval) {
   EXPECT_THROW(validate(m), InputError);
 }
 
+// En counts passes on any cell (the paper) unless the material names the
+// cell size it holds at; then the passes follow the cells' area, at least one.
+TEST(Material, ErosionPassesScaleWithTheCellsOnlyWhenGivenTheirCellSize) {
+  Material m;
+  m.erosion_iterations = 20;
+  EXPECT_EQ(m.erosion_passes(0.0025), 20);
+  EXPECT_EQ(m.erosion_passes(0.01), 20);
+  m.erosion_iterations_cell_m = 0.0025;
+  EXPECT_EQ(m.erosion_passes(0.0025), 20);
+  EXPECT_EQ(m.erosion_passes(0.005), 5);
+  EXPECT_EQ(m.erosion_passes(0.00125), 80);
+  EXPECT_EQ(m.erosion_passes(0.003), 14);  // 13.9 rounded
+  EXPECT_EQ(m.erosion_passes(0.5), 1);     // never none
+  for (const double bad : {-0.001, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+    m.erosion_iterations_cell_m = bad;
+    try {
+      validate(m);
+      FAIL() << "accepted erosion_iterations_cell_m " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("erosion_iterations_cell_m"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace repose
