@@ -100,7 +100,6 @@ json folders_json(const ReferenceSpec& r) {
   return folders;
 }
 
-
 // Per fold: the left-out scene, the fold's parameter values in their units,
 // its scores there, and what it predicts for every scene it did not fit (the
 // left-out one and the held-out ones): ground scores and series.

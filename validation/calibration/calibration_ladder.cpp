@@ -75,10 +75,7 @@ std::vector<SeriesComparison> rung_series(const PreparedScene& s, const HeightFi
       if (seed != own_seed) c.seeds.push_back(seed_observation(o, s, seed));
     }
     if (c.seeds.empty()) continue;
-    c.reference.assign(c.times_s.size(), 0.0);
-    for (const std::vector<double>& v : c.seeds) {
-      for (std::size_t k = 0; k < v.size(); ++k) c.reference[k] += v[k] / static_cast<double>(c.seeds.size());
-    }
+    c.reference = mean_values(c.seeds);
     c.fitted = observe(o, initial, final_height, series);
     out.push_back(std::move(c));
   }
@@ -142,16 +139,9 @@ void score_reference_rung(ReferenceRun& run, const PreparedScene& s, const Yards
 
 // The scene on a grid of cell size h over the same extent.
 Grid regridded(const Grid& grid, double h, const std::string& source) {
-  const double nx = grid.extent_x_m() / h, ny = grid.extent_y_m() / h;
-  Grid g = grid;
-  g.nx = static_cast<int>(std::llround(nx));
-  g.ny = static_cast<int>(std::llround(ny));
-  g.cell_size_m = h;
-  if (g.nx < 1 || g.ny < 1 || std::abs(nx - g.nx) > 1e-6 || std::abs(ny - g.ny) > 1e-6) {
-    throw InputError(fmt::format("{}: ladder.heuristic_cell_sizes_m: {} m does not divide the scene's extent {} x {} m",
-                                 source, h, grid.extent_x_m(), grid.extent_y_m()));
-  }
-  return g;
+  if (const auto g = grid.with_cell_size(h)) return *g;
+  throw InputError(fmt::format("{}: ladder.heuristic_cell_sizes_m: {} m does not divide the scene's extent {} x {} m",
+                               source, h, grid.extent_x_m(), grid.extent_y_m()));
 }
 
 struct RunTimes {

@@ -180,7 +180,8 @@ ReferenceSpec read_reference(const Context& ctx, const YamlValue& value, const s
 }
 
 CalibrationScene read_scene_entry(const Context& ctx, const YamlValue& value) {
-  const YamlMap map = value.map({"scene", "name", "role", "reference", "observables", "rmse_region_m", "field", "seed", "beds"});
+  const YamlMap map =
+      value.map({"scene", "name", "role", "reference", "observables", "rmse_region_m", "field", "seed", "beds", "cell_size_m"});
   CalibrationScene s;
   s.scene_path = existing(ctx, map.required("scene", "a scene file"), false, "a scene file");
   s.name = map.string_or("name", "");
@@ -193,6 +194,10 @@ CalibrationScene read_scene_entry(const Context& ctx, const YamlValue& value) {
     s.observables.push_back(read_observable(o));
   }
   if (auto r = map.get("rmse_region_m")) s.rmse_region = read_region(*r);
+  if (auto h = map.get("cell_size_m")) {
+    s.cell_size_m = h->number(Range::positive());
+    s.cell_size_location = location_of(*h);
+  }
   if (map.has("seed")) s.seed = static_cast<std::uint64_t>(map.integer_or("seed", IntRange{0, std::int64_t{1} << 62}, 0));
   if (auto beds = map.get("beds")) {
     if (beds->choice({"mean", "each"}) == 1) {

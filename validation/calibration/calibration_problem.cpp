@@ -79,18 +79,6 @@ std::vector<double> named_values(const CompiledSolver& solver, const std::string
   return values;
 }
 
-
-// The element-wise mean of an observable's values on each seed or bed (lists of one length).
-std::vector<double> mean_values(const std::vector<std::vector<double>>& lists) {
-  REPOSE_DEMAND(!lists.empty());
-  std::vector<double> mean(lists.front().size(), 0.0);
-  for (const std::vector<double>& v : lists) {
-    REPOSE_DEMAND(v.size() == mean.size());
-    for (std::size_t k = 0; k < v.size(); ++k) mean[k] += v[k] / static_cast<double>(lists.size());
-  }
-  return mean;
-}
-
 // The reference's values of an observable: of the mean surfaces, or for a
 // series, a measure or a heap's flank the mean over seeds of each seed's values.
 std::vector<double> reference_values(const ObservableSpec& o, const PreparedScene& s) {
@@ -142,6 +130,32 @@ void load_reference(PreparedScene& s, const SolverRegistry& registry, const Solv
     s.reference_wall_time_s = wall_s;
     s.reference_cpu_time_s = cpu_s;
   }
+}
+
+// The grid of the scene entry's own cells (cell_size_m; default the scene
+// file's): coarser ones only, that divide the scene's extent.
+Grid entry_grid(const CalibrationScene& entry, const Grid& file_grid) {
+  if (!entry.cell_size_m) return file_grid;
+  const double h = *entry.cell_size_m;
+  const auto grid = file_grid.with_cell_size(h);
+  if (!grid || h < file_grid.cell_size_m * (1.0 - 1e-9)) {
+    throw InputError(fmt::format("{}: cell_size_m: {} m is not a cell size the reference's surfaces can be averaged "
+                                 "onto: give one at least the scene's {} m that divides its extent {} x {} m",
+                                 entry.cell_size_location, h, file_grid.cell_size_m, file_grid.extent_x_m(),
+                                 file_grid.extent_y_m()));
+  }
+  return *grid;
+}
+
+// The reference's surfaces, read on the scene file's grid, averaged onto the solver's.
+void onto_solver_grid(PreparedScene& s, const Grid& grid) {
+  if (grid == s.scene.ground.grid) return;
+  auto onto = [&](HeightField& f) { f = resample_conservative(f, grid); };
+  for (HeightField& f : s.seed_initial) onto(f);
+  for (HeightField& f : s.seed_final) onto(f);
+  onto(s.initial);
+  onto(s.reference_final);
+  s.scene.ground.grid = grid;
 }
 
 // Runs task(k) for k in [0, count) on up to `threads` threads; the first
@@ -197,6 +211,16 @@ std::vector<double> seed_observation(const ObservableSpec& o, const PreparedScen
                  s.seed_series[seed], s.seed_measures[seed]);
 }
 
+std::vector<double> mean_values(const std::vector<std::vector<double>>& lists) {
+  REPOSE_DEMAND(!lists.empty());
+  std::vector<double> mean(lists.front().size(), 0.0);
+  for (const std::vector<double>& v : lists) {
+    REPOSE_DEMAND(v.size() == mean.size());
+    for (std::size_t k = 0; k < v.size(); ++k) mean[k] += v[k] / static_cast<double>(lists.size());
+  }
+  return mean;
+}
+
 MeasureByName measure_values(const Run& run) {
   MeasureByName out;
   for (const auto& [name, measure] : run.measures) out[name] = measure.value;
@@ -219,12 +243,15 @@ CalibrationProblem::CalibrationProblem(CalibrationSpec spec, const SolverRegistr
     if (s.entry.name.empty()) s.entry.name = s.scene.name;
     report(progress, static_cast<double>(k) / spec_.scenes.size(), "reference of " + s.entry.name);
     if (const DemSpec* dem = dem_of(s.scene)) s.grain_diameter_m = 2.0 * dem->grain_radius_m;
+    s.reference_cell_size_m = s.scene.ground.grid.cell_size_m;
+    const Grid solver_grid = entry_grid(s.entry, s.scene.ground.grid);  // refused before any reference is run
     try {
       load_reference(s, registry, *solver_, progress);
     } catch (const InputError& e) {
       // name the calibration file's line too: the reference it points at is the one to fix
       throw InputError(fmt::format("{}: reference: {}", s.entry.reference.location, e.what()));
     }
+    onto_solver_grid(s, solver_grid);
     if (s.entry.beds == CalibrationScene::Beds::kEach) {
       for (const HeightField& bed : s.seed_initial) s.bed_solvers.push_back(solver_->compile(starting_from(s.scene, bed)));
     }

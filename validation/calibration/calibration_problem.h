@@ -47,6 +47,7 @@ struct PreparedScene {
   std::vector<std::vector<double>> reference_values;  // per observable
   std::size_t residual_count = 0;
   double grain_diameter_m = 0.0;   // of the scene's dem section (0 without one)
+  double reference_cell_size_m = 0.0;  // the scene file's cells, the reference's surfaces' (entry.cell_size_m: the solver's)
   std::optional<double> reference_wall_time_s;  // one LIGGGHTS run's (the mean over seeds), from its manifest
   std::optional<double> reference_cpu_time_s;
   // beds: each: the solver compiled for each seed's own bed (seed_initial),
@@ -60,6 +61,9 @@ struct PreparedScene {
 // A reference run's surface (.npy) on the scene's grid; InputError naming the
 // file and `what` for another shape or a non-finite height.
 HeightField read_height_field(const std::string& path, const Grid& grid, const std::string& what);
+
+// The element-wise mean of an observable's values on each seed or bed (lists of one length).
+std::vector<double> mean_values(const std::vector<std::vector<double>>& lists);
 
 // A run's measures by name (their values in SI units).
 MeasureByName measure_values(const Run& run);

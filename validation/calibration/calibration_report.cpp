@@ -90,6 +90,13 @@ std::string relative_errors(const SeriesComparison& c) {
   return text + " %";
 }
 
+// Each series' relative errors, "name: e1 / e2 ... %; ...", or "-" without any.
+std::string series_errors(const std::vector<SeriesComparison>& series) {
+  std::string text;
+  for (const SeriesComparison& c : series) text += (text.empty() ? "" : "; ") + c.series + ": " + relative_errors(c);
+  return text.empty() ? "-" : text;
+}
+
 // What each leave-one-scene-out fold predicts for the scenes it did not fit:
 // the left-out scene and the held-out ones, their ground error and their
 // series' relative errors (cross_validation.h).
@@ -105,12 +112,10 @@ void write_cross_validation_table(std::ostream& out, const CalibrationFit& fit) 
     for (std::size_t k = 0; k < fold.scenes.size(); ++k) {
       const SceneError& e = fold.scenes[k];
       if (k != fold.left_out && e.fit) continue;
-      std::string series;
-      for (const SeriesComparison& c : e.series) series += (series.empty() ? "" : "; ") + c.series + ": " + relative_errors(c);
       out << fmt::format("| {} | {} | {} | {} | {} | {:.2f} | {} |\n", fold.scenes[fold.left_out].name,
                          fold.iterations, e.name,
                          k == fold.left_out ? "left out" : "held out", mm(e.scores_fitted.rmse_m),
-                         e.scores_fitted.skill, series.empty() ? "-" : series);
+                         e.scores_fitted.skill, series_errors(e.series));
     }
   }
 }
@@ -118,6 +123,12 @@ void write_cross_validation_table(std::ostream& out, const CalibrationFit& fit) 
 // Which scenes ran the solver on each seed's own bed (calibration_spec.h: beds).
 void write_beds_notes(std::ostream& out, const CalibrationProblem& problem) {
   for (const PreparedScene& s : problem.scenes()) {
+    const double h = s.scene.ground.grid.cell_size_m;
+    if (h != s.reference_cell_size_m) {
+      out << fmt::format("\nScene {} (cell_size_m): the solver ran on {} mm cells; the reference's surfaces, on the "
+                         "scene's {} mm cells, were averaged onto them, and its surface errors are on them.\n",
+                         s.entry.name, h * 1e3, s.reference_cell_size_m * 1e3);
+    }
     if (s.bed_count() == 1) continue;
     out << fmt::format("\nScene {} (beds: each): the solver ran on each of the {} seeds' own beds; its surfaces, series "
                        "and observables are the means over those runs.\n",
@@ -135,12 +146,10 @@ void write_ladder_table(std::ostream& out, const Ladder& l) {
                      "|---|---|---|---|---|---|\n",
                      l.scene, l.yardstick, l.noise_floor_m ? mm(*l.noise_floor_m) + " mm" : "unknown (one seed)");
   for (const LadderRung& r : l.rungs) {
-    std::string series;
-    for (const SeriesComparison& c : r.series) series += (series.empty() ? "" : "; ") + c.series + ": " + relative_errors(c);
     out << fmt::format("| {} | {:.4g}{} | {} | {} | {} | {} |\n", r.label, r.wall_time_s,
                        r.cpu_time_s ? fmt::format(" (CPU {:.4g})", *r.cpu_time_s) : "",
                        r.liggghts_cpu_over_this ? fmt::format("{:.3g}", *r.liggghts_cpu_over_this) : "-", mm(r.rmse_m),
-                       l.noise_floor_m ? ratio(r.rmse_m, *l.noise_floor_m) : "-", series.empty() ? "-" : series);
+                       l.noise_floor_m ? ratio(r.rmse_m, *l.noise_floor_m) : "-", series_errors(r.series));
   }
   if (l.liggghts_over_ground_time) {
     out << fmt::format("\nLIGGGHTS (its finest grains) / {} (the scene's own cell size): {:.3g} by wall time, {:.3g} by "

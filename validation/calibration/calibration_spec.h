@@ -64,6 +64,13 @@ struct CalibrationScene {
   // each) run on the mean bed either way.
   enum class Beds { kMean, kEach };
   Beds beds = Beds::kMean;
+  // The cells the calibrated solver runs on, in m (default: the scene
+  // file's). Coarser cells only, dividing the scene's extent: the
+  // reference's surfaces, on the scene file's grid, are averaged onto them
+  // (area-weighted), and every surface observable compares on them. A fit on
+  // coarser cells than its reference trades the ground's detail for speed.
+  std::optional<double> cell_size_m;
+  std::string cell_size_location;  // FILE:LINE:COL of cell_size_m, for messages
 };
 
 // One fitted (or fixed) parameter of the calibrated solver, named

@@ -5,6 +5,7 @@
 // y with j (rows); z is up. Arrays over a grid are ny rows by nx columns.
 
 #include <cstddef>
+#include <optional>
 
 namespace repose {
 
@@ -27,6 +28,10 @@ struct Grid {
   // A grid over the same extent with cells `factor` times larger (factor >= 1);
   // nx and ny are rounded up, so the coarse grid may reach a little further.
   Grid coarsened(int factor) const;
+
+  // The grid over exactly the same extent with cells of size h (> 0), or
+  // nothing when h does not divide the extent (to 1e-6 of a cell).
+  std::optional<Grid> with_cell_size(double h) const;
 };
 
 }  // namespace repose

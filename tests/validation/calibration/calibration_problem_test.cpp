@@ -66,6 +66,45 @@ TEST(CalibrationProblem, SeedFoldersAreAveragedAndTheirSpreadIsTheNoiseFloor) {
   EXPECT_NEAR(noise->rmse_m, 0.002 * 0.25, 1e-12);
 }
 
+// A scene entry's cell_size_m runs the solver on coarser cells than its
+// reference: the seeds' surfaces are averaged onto them, volume kept, and
+// the fit compares there. Cells finer than the reference's, or that do not
+// divide the scene, are refused by name and place.
+TEST(CalibrationProblem, ASceneOnCoarserCellsAveragesItsReferenceOntoThem) {
+  const test_support::TempDir temp;
+  const fs::path a = seed_folder(temp.path, "seed1", 0.020, 0.004), b = seed_folder(temp.path, "seed2", 0.022, 0.006);
+  auto yaml = [&](const std::string& cells) {
+    return "scenes:\n  - scene: " + kDir + "/scenes/indent.yaml\n    cell_size_m: " + cells +
+           "\n    reference: {data: [" + a.string() + ", " + b.string() +
+           "]}\n    observables: [{kind: height_field}]\n"
+           "parameters:\n  - {name: ground.sand.alpha, initial: 0.5}\n"
+           "solver: {starts: 1, max_iterations: 2}\n";
+  };
+  const CalibrationProblem problem(load_calibration_from_string(yaml("0.008"), kDir + "/inline.yaml"), solver_registry());
+  const PreparedScene& s = problem.scenes().front();
+  EXPECT_EQ(s.scene.ground.grid.nx, 8);
+  EXPECT_EQ(s.scene.ground.grid.cell_size_m, 0.008);
+  EXPECT_EQ(s.reference_cell_size_m, 0.004);
+  for (const HeightField* f : {&s.initial, &s.reference_final, &s.seed_initial[1], &s.seed_final[0]}) {
+    EXPECT_EQ(f->grid(), s.scene.ground.grid);
+  }
+  // the imprint, 4 x 4 fine cells from (6, 6), is 2 x 2 coarse cells from (3, 3)
+  EXPECT_DOUBLE_EQ(s.reference_final.at(3, 3), 0.021 - 0.005);
+  EXPECT_DOUBLE_EQ(s.reference_final.at(2, 3), 0.021);
+  EXPECT_NEAR(s.reference_final.volume_m3(), 0.021 * 0.064 * 0.064 - 0.005 * 0.016 * 0.016, 1e-15);
+  const CalibrationFit fit = fit_calibration(problem);
+  ASSERT_TRUE(fit.scenes.front().noise.has_value());
+  EXPECT_NEAR(fit.scenes.front().noise->rmse_m, 0.002 * 0.25, 1e-12);  // the same 2 mm on a sixteenth of the area
+  for (const std::string bad : {"0.002", "0.006"}) {
+    try {
+      CalibrationProblem(load_calibration_from_string(yaml(bad), kDir + "/inline.yaml"), solver_registry());
+      FAIL() << "accepted cell_size_m " << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("inline.yaml:3:18: cell_size_m: " + bad), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(CalibrationProblem, HoldingOutASceneMovesItOutOfTheFitResiduals) {
   const CalibrationProblem problem(load_calibration(kDir + "/synthetic.yaml"), solver_registry());
   const std::string name = problem.scenes()[1].entry.name;
