@@ -17,7 +17,7 @@ CellOffset ground_offset(const Grid& map, const Grid& ground) {
           static_cast<int>(std::floor((map.origin_y_m + 0.5 * h - ground.origin_y_m) / h))};
 }
 
-Underside underside_of(const SpanMap& map, const Grid& ground, double top_m) {
+Underside underside_of(const SpanMap& map, const Grid& ground, double top_m, double shear_layer_m) {
   const CellOffset off = ground_offset(map.grid, ground);
   int i0 = ground.nx, j0 = ground.ny, i1 = -1, j1 = -1;
   for (int j = 0; j < map.grid.ny; ++j) {
@@ -35,7 +35,7 @@ Underside underside_of(const SpanMap& map, const Grid& ground, double top_m) {
   for (int gj = j0; gj <= j1; ++gj) {
     for (int gi = i0; gi <= i1; ++gi) {
       const std::int64_t c = map.cell(gi - off.di, gj - off.dj);
-      if (map.count(c) > 0) u.z_m(gj - j0, gi - i0) = map.begin(c)[0].bottom_m;
+      if (map.count(c) > 0) u.z_m(gj - j0, gi - i0) = map.begin(c)[0].bottom_m - shear_layer_m;
     }
   }
   return u;

@@ -87,9 +87,11 @@ CellOffset ground_offset(const Grid& map, const Grid& ground);
 // axis, x or y ({0, 0} when it does not move sideways).
 std::array<int, 2> back_step(const Eigen::Vector3d& motion_m);
 
-// The lowest span bottoms over the ground cells the map covers; empty when
-// the map has no span over the grid. top_m: the object's highest point.
-Underside underside_of(const SpanMap& map, const Grid& ground, double top_m);
+// The lowest span bottoms over the ground cells the map covers, lowered by
+// shear_layer_m (heightspan.shear_layer_m: the grains beneath the object's
+// bottom that it drags along meet it as its own solid); empty when the map
+// has no span over the grid. top_m: the object's highest point.
+Underside underside_of(const SpanMap& map, const Grid& ground, double top_m, double shear_layer_m = 0.0);
 
 // Moves the ground above the spans' tops onto them (see above); returns
 // the volume moved (m^3). Cells that changed join the erosion memory.

@@ -60,6 +60,9 @@ void validate(const HeightSpanSpec& s) {
   if (!(s.over_lip_fraction >= 0.0 && s.over_lip_fraction <= 1.0)) {
     throw FieldError("over_lip_fraction", "a fraction in [0, 1] (0: none)", yaml_number(s.over_lip_fraction));
   }
+  if (!(s.shear_layer_m >= 0.0 && s.shear_layer_m <= 0.05)) {
+    throw FieldError("shear_layer_m", "a thickness in [0, 0.05] m (0: none)", yaml_number(s.shear_layer_m));
+  }
   if (s.over_lip_fraction > 0.0 &&
       (!(s.wedge_fraction > 0.0) || s.wedge_source == HeightSpanSpec::WedgeSource::kLip)) {
     throw FieldError("over_lip_fraction", "a share of what the wedge keeps of the drag's compression, which is "

@@ -52,6 +52,13 @@
 //                                   # compression that rolls over its lip into it instead (drag_wedge.h);
 //                                   # 0: none. Needs wedge_fraction > 0 and a wedge_source other than lip.
 //                                   # Fitted as heightspan.over_lip_fraction
+//     shear_layer_m: 0              # the layer of ground (m) beneath a held object's lowest surfaces that
+//                                   # it shears off with it: its underside meets the ground this much lower
+//                                   # (the grains its bottom drags along; the DEM's trenches are deeper
+//                                   # than the bucket's path by a fraction of a grain), so what it cuts
+//                                   # there is displaced, compressed and kept in its wedge like the rest
+//                                   # of its contact (ground_contact.h: underside_of); 0: none. Fitted as
+//                                   # heightspan.shear_layer_m
 //     frame_interval_s: 0.1         # rendered frames and frame heights written every this (0: none)
 //     span_maps: cpu                # cpu | osmesa: who depth-peels the span maps (span_peeler.h)
 //     holds_material: {bucket: true, plate: true, ball: false}
@@ -85,6 +92,7 @@ struct HeightSpanSpec {
   double press_wedge_fraction = 0.0;   // [0, 1]; 0: the pressing's compression stays compressed (drag_wedge.h)
   double side_cut_m = 0.0;             // [0, 0.1] m; 0: none (side_cut.h)
   double over_lip_fraction = 0.0;      // [0, 1]; 0: none (drag_wedge.h)
+  double shear_layer_m = 0.0;          // [0, 0.05] m; 0: none (ground_contact.h: underside_of)
   double frame_interval_s = 0.1;       // [0, 1e6]; 0: no frames
   enum class SpanMaps { kCpu, kOsmesa };
   SpanMaps span_maps = SpanMaps::kCpu;
@@ -114,6 +122,7 @@ void heightspan_fields(Visitor& v, HeightSpanSpec& s) {
   v.number("press_wedge_fraction", s.press_wedge_fraction, Range::any());
   v.number("side_cut_m", s.side_cut_m, Range::any());
   v.number("over_lip_fraction", s.over_lip_fraction, Range::any());
+  v.number("shear_layer_m", s.shear_layer_m, Range::any());
   v.number("frame_interval_s", s.frame_interval_s, Range::any());
   using M = HeightSpanSpec::SpanMaps;
   v.choice("span_maps", s.span_maps, std::vector<std::pair<std::string, M>>{{"cpu", M::kCpu}, {"osmesa", M::kOsmesa}});

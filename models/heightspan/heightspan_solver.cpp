@@ -121,7 +121,7 @@ void write_held_csv(const HeightSpanModel& model, const HeightSpanRun& r, const 
 
 class CompiledHeightSpan final : public CompiledSolver {
  public:
-  static constexpr std::ptrdiff_t kOwnParameters = 9;
+  static constexpr std::ptrdiff_t kOwnParameters = 10;
 
   explicit CompiledHeightSpan(const Scene& scene)
       : model_(build_heightspan_model(scene)), initial_(make_initial_height(scene)), parameters_(model_.ground) {
@@ -154,6 +154,9 @@ class CompiledHeightSpan final : public CompiledSolver {
     infos_.push_back({"release_speed_m_s", "m/s", 1.0, 0.0, 2.0, model_.options.release_speed_m_s,
                       "the horizontal speed material flowing off a held object's edge into the air has along its "
                       "way, beside the object's own motion (heightspan.release_speed_m_s; span_erosion.h)"});
+    infos_.push_back({"shear_layer_m", "m", 1.0, 0.0, 0.05, model_.options.shear_layer_m,
+                      "the layer of ground beneath a held object's bottom that it shears off with it: its underside "
+                      "meets the ground this much lower (heightspan.shear_layer_m; ground_contact.h)"});
   }
 
   const std::vector<ParameterInfo>& parameters() const override { return infos_; }
@@ -174,6 +177,7 @@ class CompiledHeightSpan final : public CompiledSolver {
     model.options.side_cut_m = own[6];
     model.options.over_lip_fraction = own[7];
     model.options.release_speed_m_s = own[8];
+    model.options.shear_layer_m = own[9];
     validate(model.options);
     Run run;
     run.solver = "heightspan";
@@ -239,7 +243,7 @@ class CompiledHeightSpan final : public CompiledSolver {
   MaterialParameters parameters_;
   // the materials' (parameters_), then the model's own kOwnParameters: intake_layer_m, intake_fraction,
   // wedge_fraction, lip_wedge_fraction, press_fraction, press_wedge_fraction, side_cut_m, over_lip_fraction,
-  // release_speed_m_s
+  // release_speed_m_s, shear_layer_m
   std::vector<ParameterInfo> infos_;
 };
 

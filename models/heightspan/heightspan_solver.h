@@ -12,7 +12,8 @@
 // "press_wedge_fraction" (heightspan.press_wedge_fraction, 1; drag_wedge.h) and "side_cut_m"
 // (heightspan.side_cut_m, m; side_cut.h) and "over_lip_fraction"
 // (heightspan.over_lip_fraction, 1; drag_wedge.h) and "release_speed_m_s"
-// (heightspan.release_speed_m_s, m/s; span_erosion.h).
+// (heightspan.release_speed_m_s, m/s; span_erosion.h) and "shear_layer_m" (heightspan.shear_layer_m, m;
+// ground_contact.h).
 // A scene where no object holds material runs the ground model itself
 // (simulate_ground) and builds no span map and no particles.
 //

@@ -86,7 +86,8 @@ void substep(const HeightSpanModel& model, const GroundParams& params, const std
                                           lip_wedge(model.options, &spans.wedge));
     report->side_cut_m3 += cut_beside(ground, spans.map, model.options.side_cut_m, motion, &spans.wedge, &state->ground);
     report->wedge_kept_m3 += spans.wedge.volume_m3 - wedge_before_m3;  // the lip's wedge and the side cut
-    ceiling.undersides.push_back(underside_of(spans.map, ground.grid, top_at(ground.objects[o], to[o])));
+    ceiling.undersides.push_back(
+        underside_of(spans.map, ground.grid, top_at(ground.objects[o], to[o]), model.options.shear_layer_m));
     motions.push_back(motion);
   }
   for (const int o : model.ground_path) {

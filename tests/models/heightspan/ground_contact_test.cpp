@@ -33,6 +33,13 @@ TEST(GroundContact, TheUndersideIsTheLowestSpanBottom) {
   EXPECT_EQ(u.footprint.ni, 16);  // 8 cm on 5 mm cells
   EXPECT_NEAR(u.at(20, 20), 0.015, 1e-12);
   EXPECT_TRUE(std::isinf(u.at(0, 0)));
+  // a shear layer lowers every cell it covers by its thickness, and only those
+  const Underside sheared = underside_of(state.held[0].map, model.ground.grid, 0.065, 0.002);
+  EXPECT_EQ(sheared.footprint.ni, u.footprint.ni);
+  EXPECT_EQ(sheared.footprint.nj, u.footprint.nj);
+  EXPECT_NEAR(sheared.at(20, 20), 0.013, 1e-12);
+  EXPECT_TRUE(((u.z_m - sheared.z_m).isFinite() == u.z_m.isFinite()).all());
+  EXPECT_TRUE(std::isinf(sheared.at(0, 0)));
 }
 
 TEST(GroundContact, GroundAboveTheFloorGoesOntoItAndNothingIsLost) {

@@ -124,6 +124,15 @@ TEST(HeightSpanSection, RefusesASideCutOutsideItsRange) {
   EXPECT_EQ(HeightSpanSpec{}.side_cut_m, 0.0);  // the default: no cut beside the object
 }
 
+TEST(HeightSpanSection, RefusesAShearLayerOutsideItsRange) {
+  for (const double thickness_m : {-0.001, 0.051, std::nan("")}) {
+    HeightSpanSpec spec;
+    spec.shear_layer_m = thickness_m;
+    EXPECT_EQ(testing::refused_field(spec), "shear_layer_m") << thickness_m;
+  }
+  EXPECT_EQ(HeightSpanSpec{}.shear_layer_m, 0.0);  // the default: the underside is the object's own
+}
+
 TEST(HeightSpanSection, RefusesAnOverLipShareOutsideItsRangeOrWithoutAWedge) {
   for (const double fraction : {-0.1, 1.1, std::nan("")}) {
     HeightSpanSpec spec;

@@ -30,15 +30,15 @@ TEST(HeightSpanSolver, IsRegisteredAndDeclaresTheGroundsParametersByTheirNames) 
   const auto compiled = solver.compile(s);
   const auto ground = GroundSolver().compile(s);
   // the ground's, then its own intake layer and fraction, wedge fractions, press fraction, pressed wedge, side cut,
-  // over-lip share and release speed
-  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 9);
+  // over-lip share, release speed and shear layer
+  ASSERT_EQ(compiled->parameters().size(), ground->parameters().size() + 10);
   const std::vector<std::pair<std::string, double>> own = {
       {"intake_layer_m", HeightSpanSpec{}.intake_layer_m}, {"intake_fraction", HeightSpanSpec{}.intake_fraction},
       {"wedge_fraction", HeightSpanSpec{}.wedge_fraction},
       {"lip_wedge_fraction", HeightSpanSpec{}.lip_wedge_fraction}, {"press_fraction", HeightSpanSpec{}.press_fraction},
       {"press_wedge_fraction", HeightSpanSpec{}.press_wedge_fraction},
       {"side_cut_m", HeightSpanSpec{}.side_cut_m}, {"over_lip_fraction", HeightSpanSpec{}.over_lip_fraction},
-      {"release_speed_m_s", HeightSpanSpec{}.release_speed_m_s}};
+      {"release_speed_m_s", HeightSpanSpec{}.release_speed_m_s}, {"shear_layer_m", HeightSpanSpec{}.shear_layer_m}};
   for (std::size_t k = 0; k < own.size(); ++k) {
     const ParameterInfo& p = compiled->parameters()[ground->parameters().size() + k];
     EXPECT_EQ(p.name, own[k].first);
@@ -171,6 +171,22 @@ TEST(HeightSpanSolver, AFittedSideCutReachesTheRun) {
   EXPECT_GE(cut.measure("flows.wedge_kept_m3").value, cut.measure("flows.side_cut_m3").value);
   EXPECT_LT(cut.measure("ledger.max_relative_imbalance").value, 1e-12);
   values[compiled->parameter_index("side_cut_m")] = -0.001;
+  EXPECT_THROW(compiled->run(values, {}), InputError);
+}
+
+TEST(HeightSpanSolver, AFittedShearLayerDeepensTheTrenchAndKeepsTheLedger) {
+  // the bucket's underside meets the ground 3 mm lower: the drag leaves a deeper trench, and nothing is lost
+  const auto compiled = HeightSpanSolver().compile(small_scoop());
+  std::vector<double> values = compiled->default_values();
+  const auto deepest_m = [](const repose::Run& r) {
+    return (r.field("height_initial").heights() - r.field("height_final").heights()).maxCoeff();
+  };
+  const repose::Run plain = compiled->run(values, {});
+  values[compiled->parameter_index("shear_layer_m")] = 0.003;
+  const repose::Run sheared = compiled->run(values, {});
+  EXPECT_GT(deepest_m(sheared), deepest_m(plain) + 0.001);
+  EXPECT_LT(sheared.measure("ledger.max_relative_imbalance").value, 1e-12);
+  values[compiled->parameter_index("shear_layer_m")] = 0.06;
   EXPECT_THROW(compiled->run(values, {}), InputError);
 }
 
