@@ -135,7 +135,9 @@ std::string GroundModelSection::summary() const {
   for (const auto& [name, m] : materials) {
     text += fmt::format("; {}: alpha {}, repose angle {:.6g} deg, sigma {}, {} erosion iterations", name, m.alpha,
                         m.repose_angle_rad / kRadPerDeg, m.sigma, m.erosion_iterations);
-    if (m.erosion_iterations_cell_m > 0.0) text += fmt::format(" at {} m cells (scaled with the cells)", m.erosion_iterations_cell_m);
+    if (m.erosion_iterations_cell_m > 0.0) {
+      text += fmt::format(" at {} m cells (scaled with the cells' area)", m.erosion_iterations_cell_m);
+    }
     if (m.drag_compaction_ratio != 1.0) text += fmt::format(", drag compaction ratio {}", m.drag_compaction_ratio);
   }
   return text;

@@ -64,43 +64,29 @@ std::vector<bool> determined_columns(const Eigen::MatrixXd& scaled, const std::v
   }
 }
 
-// The covariance (J^T J)^-1 of the kept blocks by ceres::Covariance, the
-// others held constant while it is computed, before scaling by the residual
-// variance; p x p, zero outside the kept rows and columns. False when Ceres
-// finds the Jacobian rank-deficient.
-bool unit_covariance(ceres::Problem& problem, const std::vector<double*>& blocks, const std::vector<std::size_t>& kept,
-                     double min_reciprocal_condition, Eigen::MatrixXd* cov) {
-  const auto p = static_cast<Eigen::Index>(blocks.size());
-  std::vector<bool> is_kept(blocks.size(), false);
-  for (const std::size_t a : kept) is_kept[a] = true;
-  for (std::size_t c = 0; c < blocks.size(); ++c) {
-    if (!is_kept[c]) problem.SetParameterBlockConstant(blocks[c]);
-  }
-  ceres::Covariance::Options options;
-  options.algorithm_type = ceres::DENSE_SVD;
-  options.min_reciprocal_condition_number = min_reciprocal_condition * min_reciprocal_condition;
-  options.null_space_rank = 0;
-  options.apply_loss_function = true;
-  options.num_threads = 1;
-  ceres::Covariance covariance(options);
-  std::vector<std::pair<const double*, const double*>> pairs;
-  for (const std::size_t a : kept) {
-    for (const std::size_t b : kept) {
-      if (a <= b) pairs.emplace_back(blocks[a], blocks[b]);
+// The covariance (J^T J)^-1 of the kept columns before scaling by the
+// residual variance; p x p, zero outside the kept rows and columns. From the
+// range-scaled Jacobian's SVD (J S = U D V^T, S the ranges: (J^T J)^-1 =
+// S V D^-2 V^T S), whose kept columns determined_columns found well
+// conditioned. Not ceres::Covariance: it tests the conditioning of the
+// unscaled J^T J, which parameters in very different units fail (a layer in
+// metres beside an angle in degrees: its column is 10^3-10^4 times the
+// other's) although every range-scaled direction is determined.
+Eigen::MatrixXd unit_covariance(const Eigen::MatrixXd& scaled, const std::vector<double>& ranges,
+                                const std::vector<std::size_t>& kept) {
+  const auto at = [](std::size_t k) { return static_cast<Eigen::Index>(k); };
+  Eigen::MatrixXd sub(scaled.rows(), at(kept.size()));
+  for (std::size_t k = 0; k < kept.size(); ++k) sub.col(at(k)) = scaled.col(at(kept[k]));
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(sub, Eigen::ComputeThinV);
+  const Eigen::VectorXd inverse_squares = svd.singularValues().array().square().inverse();
+  const Eigen::MatrixXd scaled_cov = svd.matrixV() * inverse_squares.asDiagonal() * svd.matrixV().transpose();
+  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(scaled.cols(), scaled.cols());
+  for (std::size_t a = 0; a < kept.size(); ++a) {
+    for (std::size_t b = 0; b < kept.size(); ++b) {
+      cov(at(kept[a]), at(kept[b])) = scaled_cov(at(a), at(b)) * ranges[kept[a]] * ranges[kept[b]];
     }
   }
-  const bool ok = covariance.Compute(pairs, &problem);
-  for (double* block : blocks) problem.SetParameterBlockVariable(block);
-  if (!ok) return false;
-  *cov = Eigen::MatrixXd::Zero(p, p);
-  for (const std::size_t a : kept) {
-    for (const std::size_t b : kept) {
-      double value = 0.0;
-      covariance.GetCovarianceBlock(blocks[std::min(a, b)], blocks[std::max(a, b)], &value);
-      (*cov)(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = value;
-    }
-  }
-  return true;
+  return cov;
 }
 
 // Standard errors and correlations of the kept parameters from their covariance.
@@ -143,14 +129,8 @@ CalibrationUncertainty estimate_uncertainty(ceres::Problem& problem, const std::
     u.determined.assign(p, false);
     return u;
   }
-  Eigen::MatrixXd cov;
-  if (!unit_covariance(problem, blocks, kept, min_reciprocal_condition, &cov)) {
-    u.note += std::string(u.note.empty() ? "" : "; ") + "ceres::Covariance::Compute failed (rank-deficient Jacobian)";
-    u.determined.assign(p, false);
-    return u;
-  }
   u.residual_variance = 2.0 * cost / static_cast<double>(n - kept.size());
-  set_errors_and_correlation(cov * u.residual_variance, kept, &u);
+  set_errors_and_correlation(unit_covariance(scaled, ranges, kept) * u.residual_variance, kept, &u);
   return u;
 }
 

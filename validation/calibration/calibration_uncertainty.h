@@ -1,6 +1,6 @@
 #pragma once
 // The uncertainty of a fitted parameter vector, from the Jacobian J of the
-// residuals at the optimum and ceres::Covariance.
+// residuals at the optimum.
 //
 // First, which parameters the data determines: the columns of J are scaled by
 // each parameter's bound range (so that the test does not depend on units),
@@ -10,9 +10,10 @@
 // zero column, a parameter that moves no observable within its finite-
 // difference step, goes first; two parameters of which only a combination
 // matters go both, one after the other, only if the rest stays deficient).
-// Then ceres::Covariance (dense SVD) on the determined parameters, the others
-// held constant; it returns (J^T J)^-1, which is scaled here by the residual
-// variance s^2 = 2 cost / (n - p) (n residuals, p determined parameters).
+// Then (J^T J)^-1 of the determined parameters, from the SVD of their
+// range-scaled columns (so that parameters in very different units do not
+// make it ill-conditioned), scaled by the residual variance
+// s^2 = 2 cost / (n - p) (n residuals, p determined parameters).
 
 #include <string>
 #include <vector>
@@ -36,8 +37,8 @@ struct CalibrationUncertainty {
 
 // blocks: the free parameters, one block of size 1 each, in order; ranges:
 // their bound ranges (upper - lower); labels: their names for the note. cost: the final cost (0.5 sum rho(r^2)).
-// Evaluates the problem's Jacobian at the blocks' current values; leaves
-// every block variable again on return.
+// Evaluates the problem's Jacobian at the blocks' current values (the loss
+// function applied); changes no block.
 CalibrationUncertainty estimate_uncertainty(ceres::Problem& problem, const std::vector<double*>& blocks,
                                             const std::vector<double>& ranges, const std::vector<std::string>& labels, double cost,
                                             double min_reciprocal_condition);

@@ -1,7 +1,8 @@
 // The uncertainty of a linear least-squares fit is known in closed form:
 // for residuals r = a + b x - y, Cov(a, b) = s^2 (X^T X)^-1 with
-// s^2 = SSR / (n - p). estimate_uncertainty must reproduce it, and mark a
-// parameter that moves no residual undetermined.
+// s^2 = SSR / (n - p). estimate_uncertainty must reproduce it, also with
+// parameters in very different units, and mark a parameter that moves no
+// residual undetermined.
 #include "validation/calibration/calibration_uncertainty.h"
 
 #include <gtest/gtest.h>
@@ -73,6 +74,30 @@ TEST(CalibrationUncertainty, ALinearFitHasItsClosedFormStandardErrors) {
   EXPECT_NEAR(u.residual_variance, s2, 1e-12);
   EXPECT_NEAR(u.standard_error[0], std::sqrt(cov(0, 0)), 1e-9);
   EXPECT_NEAR(u.standard_error[1], std::sqrt(cov(1, 1)), 1e-9);
+  EXPECT_NEAR(u.correlation(0, 1), cov(0, 1) / std::sqrt(cov(0, 0) * cov(1, 1)), 1e-9);
+}
+
+TEST(CalibrationUncertainty, ParametersInVeryDifferentUnitsKeepTheirClosedFormStandardErrors) {
+  // the slope per 10^-4 of x: its column of J is 10^-4 the intercept's, so that the unscaled J^T J's reciprocal
+  // condition (about 10^-9) is below the 10^-6 the scaled test's 10^-3 allows, while over their ranges (10 and
+  // 10^5) both are well determined
+  Fit fit;
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> noise(0.0, 0.1);
+  for (int i = 0; i < 40; ++i) {
+    fit.x.push_back(2.5e-5 * i);
+    fit.y.push_back(1.5 + 8e3 * fit.x.back() + noise(rng));
+  }
+  solve(fit);
+  fit.problem.SetParameterBlockConstant(&fit.c);
+  const CalibrationUncertainty u = estimate_uncertainty(fit.problem, {&fit.a, &fit.b}, {10.0, 1e5}, {"a", "b"},
+                                                        fit.cost, 1e-3);
+  Eigen::MatrixXd X(fit.x.size(), 2);
+  for (std::size_t i = 0; i < fit.x.size(); ++i) X.row(static_cast<Eigen::Index>(i)) << 1.0, fit.x[i];
+  const Eigen::Matrix2d cov = u.residual_variance * (X.transpose() * X).inverse();
+  ASSERT_TRUE(u.determined[0] && u.determined[1]) << u.note;
+  EXPECT_NEAR(u.standard_error[0] / std::sqrt(cov(0, 0)), 1.0, 1e-9);
+  EXPECT_NEAR(u.standard_error[1] / std::sqrt(cov(1, 1)), 1.0, 1e-9);
   EXPECT_NEAR(u.correlation(0, 1), cov(0, 1) / std::sqrt(cov(0, 0) * cov(1, 1)), 1e-9);
 }
 
